@@ -1,0 +1,1 @@
+//! Planar flap mechanisms: synthesis, kinematics, kinetostatics. (Being filled: issue 4.)

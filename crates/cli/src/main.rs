@@ -1,1 +1,119 @@
-fn main() {}
+//! `flapwright`: designs the flap support and drive mechanisms of a wing from a scene file.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use anyhow::Context;
+use clap::{Parser, Subcommand};
+use flapwright::output::StagedDir;
+use flapwright::pipeline::{self, Inputs};
+use flapwright::scene::{Scene, SceneError, DEFAULT_SCENE_TOML};
+
+/// Exit code for bad input (scene file, flags).
+const EXIT_BAD_INPUT: u8 = 2;
+/// Exit code for a run that failed for another reason (I/O, a mechanism that cannot move).
+const EXIT_FAILED: u8 = 1;
+
+#[derive(Parser, Debug)]
+#[command(name = "flapwright", version, about = "Designs trailing-edge flap support and drive mechanisms for a whole wing")]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+    /// Print nothing but errors.
+    #[arg(long, global = true)]
+    quiet: bool,
+    /// Print a machine-readable summary (JSON) on stdout.
+    #[arg(long, global = true)]
+    json: bool,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Design a scene: geometry, planes, mechanisms; writes report.json and the files.
+    Design {
+        /// Scene file (TOML). Without it, the embedded default scene (small aircraft of the thesis).
+        scene: Option<PathBuf>,
+        /// Output folder (replaced atomically on success).
+        #[arg(long, default_value = "flapwright-out")]
+        out: PathBuf,
+    },
+}
+
+/// A failure with the exit code it maps to.
+struct Failure {
+    code: u8,
+    error: anyhow::Error,
+}
+
+impl<E: Into<anyhow::Error>> From<E> for Failure {
+    fn from(error: E) -> Self {
+        let error = error.into();
+        let code = if error.downcast_ref::<SceneError>().is_some() {
+            EXIT_BAD_INPUT
+        } else {
+            EXIT_FAILED
+        };
+        Self { code, error }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(&cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(failure) => {
+            eprintln!("error: {:#}", failure.error);
+            ExitCode::from(failure.code)
+        }
+    }
+}
+
+fn run(cli: &Cli) -> Result<(), Failure> {
+    let (scene_path, out) = match &cli.command {
+        None => (None, PathBuf::from("flapwright-out")),
+        Some(Command::Design { scene, out }) => (scene.clone(), out.clone()),
+    };
+    let (text, scene_dir) = read_scene_text(scene_path.as_deref())?;
+    let scene = Scene::from_toml(&text, scene_dir.as_deref()).map_err(|e| Failure {
+        code: EXIT_BAD_INPUT,
+        error: anyhow::Error::new(e).context(format!(
+            "invalid scene {}",
+            scene_path.as_deref().map_or("(embedded default)".into(), |p| p.display().to_string())
+        )),
+    })?;
+    let staged = StagedDir::create(&out).with_context(|| format!("preparing output folder {}", out.display()))?;
+    let inputs = Inputs {
+        scene: &scene,
+        scene_text: &text,
+        scene_dir: scene_dir.as_deref(),
+    };
+    let outcome = pipeline::design(&inputs, &staged)?;
+    let written = staged.commit().with_context(|| format!("moving results into {}", out.display()))?;
+    if cli.json {
+        println!("{}", serde_json::to_string(&outcome.summary)?);
+    } else if !cli.quiet {
+        println!(
+            "designed \"{}\": {} part(s), {} station(s), {} warning(s) -> {}",
+            scene.name,
+            outcome.summary.parts,
+            outcome.summary.stations,
+            outcome.summary.warnings,
+            written.display()
+        );
+    }
+    Ok(())
+}
+
+fn read_scene_text(path: Option<&Path>) -> Result<(String, Option<PathBuf>), Failure> {
+    match path {
+        None => Ok((DEFAULT_SCENE_TOML.to_string(), None)),
+        Some(path) => {
+            let text = std::fs::read_to_string(path).map_err(|e| Failure {
+                code: EXIT_BAD_INPUT,
+                error: anyhow::Error::new(e).context(format!("reading scene file {}", path.display())),
+            })?;
+            let dir = path.parent().map(Path::to_path_buf);
+            Ok((text, dir))
+        }
+    }
+}

@@ -1,0 +1,15 @@
+//! The `flapwright` command line: reads a scene, runs the stages its outputs need, writes
+//! the report and files.
+//!
+//! # Overview
+//! - [`scene`]: the TOML scene format, parsed with serde and validated with paths.
+//! - [`pipeline`]: runs the stages (geometry, planes, mechanisms) and times them.
+//! - [`report`]: the `report.json` schema (documented in the README).
+//! - [`output`]: writes into a temporary folder and moves it into place only on success.
+//!
+//! Libraries below return typed errors; this crate alone decides wording and exit codes.
+
+pub mod output;
+pub mod pipeline;
+pub mod report;
+pub mod scene;

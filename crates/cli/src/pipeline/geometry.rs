@@ -1,0 +1,164 @@
+//! Geometry stages: scene -> `flapwright_geom` model -> meshes -> STL files.
+
+use std::path::Path;
+
+use anyhow::{Context, Result};
+use flapwright_geom::airfoil::{Airfoil, TrailingEdge};
+use flapwright_geom::flap::{FlapSectionSpec, FlapSpec, HingeSpec};
+use flapwright_geom::parts::{MeshResolution, Part, WingModel};
+use flapwright_geom::structure::{SparSpec, TorqueTubeSpec};
+use flapwright_geom::wing::{PanelSpec, SweepReference, WingSectionSpec, WingSpec};
+use nalgebra::Point3;
+
+use crate::output::StagedDir;
+use crate::report::PartReport;
+use crate::scene::{AirfoilRef, AirfoilSource, ResolutionScene, Scene, SweepReferenceScene, WingScene};
+
+/// Reads an airfoil the scene names and resamples it to the scene's resolution.
+pub fn load_airfoil(text: &str, scene_dir: Option<&Path>, points_per_side: usize) -> Result<Airfoil> {
+    let airfoil = match AirfoilRef::parse(text).map_err(anyhow::Error::msg)? {
+        AirfoilRef::Naca(digits) => Airfoil::naca(&digits, points_per_side, TrailingEdge::Closed)
+            .with_context(|| format!("building NACA {digits}"))?,
+        AirfoilRef::File(name) => {
+            let source = AirfoilRef::locate(&name, scene_dir).with_context(|| format!("airfoil file {name} not found"))?;
+            let parsed = match source {
+                AirfoilSource::Disk(path) => {
+                    let file = std::fs::File::open(&path).with_context(|| format!("opening {}", path.display()))?;
+                    Airfoil::from_dat(file)
+                }
+                AirfoilSource::Bundled(text) => Airfoil::from_dat(text.as_bytes()),
+            };
+            parsed
+                .with_context(|| format!("reading airfoil file {name}"))?
+                .resampled(points_per_side)
+                .with_context(|| format!("resampling airfoil {name}"))?
+        }
+    };
+    Ok(airfoil)
+}
+
+fn point(p: [f64; 3]) -> Point3<f64> {
+    Point3::new(p[0], p[1], p[2])
+}
+
+/// Builds the 3D wing model (wing, flaps, spars, torque tube) from a validated scene.
+pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) -> Result<WingModel> {
+    let pps = scene.resolution.airfoil_points_per_side;
+    let sections = wing
+        .sections
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            Ok(WingSectionSpec {
+                y_m: s.y_m,
+                chord_m: s.chord_m,
+                twist_deg: s.twist_deg,
+                airfoil: load_airfoil(&s.airfoil, scene_dir, pps).with_context(|| format!("wing.sections[{i}].airfoil"))?,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let wing_spec = WingSpec {
+        root_leading_edge_ac: point(wing.root_leading_edge_m),
+        sections,
+        panels: wing
+            .panels
+            .iter()
+            .map(|p| PanelSpec {
+                sweep_deg: p.sweep_deg,
+                dihedral_deg: p.dihedral_deg,
+            })
+            .collect(),
+        sweep_reference: match wing.sweep_reference {
+            SweepReferenceScene::LeadingEdge => SweepReference::LeadingEdge,
+            SweepReferenceScene::QuarterChord => SweepReference::QuarterChord,
+        },
+        twist_axis_chord_fraction: wing.twist_axis_chord_fraction,
+    };
+    let flaps = scene
+        .flap
+        .iter()
+        .enumerate()
+        .map(|(i, f)| {
+            let hinge = match (f.hinge.inboard_point_m, f.hinge.outboard_point_m, f.hinge.chord_fraction) {
+                (Some(a), Some(b), _) => HingeSpec::Points {
+                    inboard_ac: point(a),
+                    outboard_ac: point(b),
+                },
+                (_, _, Some(fraction)) => HingeSpec::ChordFraction {
+                    chord_fraction: fraction,
+                    depth_below_chord_fraction: f.hinge.depth_below_chord_fraction.unwrap_or(0.0),
+                },
+                _ => anyhow::bail!("flap[{i}].hinge: incomplete (validation should have caught this)"),
+            };
+            let section = match &f.airfoil {
+                None => FlapSectionSpec::CutOut,
+                Some(text) => FlapSectionSpec::OwnSection {
+                    airfoil: load_airfoil(text, scene_dir, pps).with_context(|| format!("flap[{i}].airfoil"))?,
+                },
+            };
+            Ok(FlapSpec {
+                name: f.name.clone(),
+                y_inboard_m: f.y_inboard_m,
+                y_outboard_m: f.y_outboard_m,
+                chord_fraction_inboard: f.chord_fraction_inboard,
+                chord_fraction_outboard: f.chord_fraction_outboard,
+                hinge,
+                section,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let spars = scene
+        .structure
+        .spars
+        .iter()
+        .map(|s| SparSpec {
+            name: s.name.clone(),
+            chord_fraction: s.chord_fraction,
+            thickness_m: s.thickness_m,
+            y_start_m: s.y_start_m,
+            y_end_m: s.y_end_m,
+        })
+        .collect();
+    let torque_tube = scene.structure.torque_tube.as_ref().map(|t| TorqueTubeSpec {
+        path_ac: t.path_m.iter().copied().map(point).collect(),
+        radius_m: t.radius_m,
+    });
+    WingModel::try_new(wing_spec, flaps, spars, torque_tube).context("building the wing model")
+}
+
+/// Meshes every part once.
+pub fn mesh_parts(model: &WingModel, resolution: &ResolutionScene) -> Result<Vec<Part>> {
+    let _ = resolution;
+    model.compute_parts(&MeshResolution::default()).context("meshing the parts")
+}
+
+/// Writes one binary STL per part (when asked) and returns the parts' report entries.
+pub fn write_parts(parts: &[Part], write_stl: bool, out: &StagedDir) -> Result<Vec<PartReport>> {
+    parts
+        .iter()
+        .map(|part| {
+            let stl_file = if write_stl {
+                let name = format!("{}.stl", part.name);
+                let file = std::fs::File::create(out.file(&name)).with_context(|| format!("creating {name}"))?;
+                let mut writer = std::io::BufWriter::new(file);
+                flapwright_geom::io::stl::write_binary(&part.mesh, &part.name, &mut writer)
+                    .with_context(|| format!("writing {name}"))?;
+                Some(name)
+            } else {
+                None
+            };
+            let check = part.mesh.compute_topology_check();
+            let bounds = part.mesh.compute_aabb();
+            Ok(PartReport {
+                name: part.name.clone(),
+                kind: part.kind.to_string(),
+                vertices: part.mesh.vertices.len(),
+                triangles: part.mesh.triangles.len(),
+                volume_m3: part.mesh.compute_signed_volume(),
+                bounds_m: bounds.map_or([[0.0; 3]; 2], |b| [b.min.coords.into(), b.max.coords.into()]),
+                watertight: check.is_watertight(),
+                stl_file,
+            })
+        })
+        .collect()
+}

@@ -1,0 +1,71 @@
+//! `report.json`: the stable, documented interface other tools read (schema in the README).
+//!
+//! Everything but [`Report::timings`] is a pure function of the scene, so the same scene
+//! gives byte-identical reports apart from that one section.
+
+use serde::Serialize;
+
+/// Version of the report schema; bumped on any incompatible change.
+pub const SCHEMA_VERSION: u32 = 1;
+
+/// The whole report.
+#[derive(Debug, Clone, Serialize)]
+pub struct Report {
+    /// Schema version ([`SCHEMA_VERSION`]).
+    pub schema_version: u32,
+    /// Flapwright version that wrote the report.
+    pub flapwright_version: String,
+    /// Which scene was designed.
+    pub scene: SceneInfo,
+    /// Names of the stages that ran, in order.
+    pub stages: Vec<String>,
+    /// Meshed parts (empty when no geometry stage ran).
+    pub parts: Vec<PartReport>,
+    /// Per support station.
+    pub stations: Vec<serde_json::Value>,
+    /// Warnings (near-toggle, self-locking lost, ...), each naming where.
+    pub warnings: Vec<String>,
+    /// Wall time per stage, s. The only part of the report that changes between runs.
+    pub timings: Vec<StageTiming>,
+}
+
+/// Scene identity.
+#[derive(Debug, Clone, Serialize)]
+pub struct SceneInfo {
+    /// Scene name.
+    pub name: String,
+    /// Scene description.
+    pub description: String,
+    /// SHA-256 of the scene file's bytes, hex.
+    pub sha256: String,
+}
+
+/// A meshed part and its mesh statistics.
+#[derive(Debug, Clone, Serialize)]
+pub struct PartReport {
+    /// Part name (also the STL file stem).
+    pub name: String,
+    /// `wing-skin`, `flap`, `spar` or `torque-tube`.
+    pub kind: String,
+    /// Vertex count.
+    pub vertices: usize,
+    /// Triangle count.
+    pub triangles: usize,
+    /// Enclosed volume, m^3.
+    pub volume_m3: f64,
+    /// Axis-aligned bounds in the aircraft frame, m: `[min, max]`.
+    pub bounds_m: [[f64; 3]; 2],
+    /// Every edge shared by exactly two consistently oriented triangles.
+    pub watertight: bool,
+    /// STL file written, relative to the output folder.
+    pub stl_file: Option<String>,
+}
+
+/// Wall time of one stage.
+#[derive(Debug, Clone, Serialize)]
+pub struct StageTiming {
+    /// Stage name.
+    pub stage: String,
+    /// Wall time, s.
+    pub wall_time_s: f64,
+}

@@ -1,0 +1,95 @@
+//! How a scene names an airfoil: a NACA designation or a coordinate file.
+
+use std::path::{Path, PathBuf};
+
+/// Airfoil files shipped with Flapwright (`data/airfoils/`, UIUC database; see its README),
+/// found by file name when the scene's folder has no file of that name.
+pub const BUNDLED_AIRFOILS: &[(&str, &str)] = &[
+    ("n63210.dat", include_str!("../../../../data/airfoils/n63210.dat")),
+    ("n63212.dat", include_str!("../../../../data/airfoils/n63212.dat")),
+    ("n63215.dat", include_str!("../../../../data/airfoils/n63215.dat")),
+    ("n64212.dat", include_str!("../../../../data/airfoils/n64212.dat")),
+    ("naca651212.dat", include_str!("../../../../data/airfoils/naca651212.dat")),
+    ("naca64a010.dat", include_str!("../../../../data/airfoils/naca64a010.dat")),
+];
+
+/// A parsed airfoil reference.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum AirfoilRef {
+    /// `NACA 2412`: 4 or 5 digits.
+    Naca(String),
+    /// A `.dat` file name or path.
+    File(String),
+}
+
+/// Where a file airfoil's text comes from.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum AirfoilSource {
+    /// A file on disk.
+    Disk(PathBuf),
+    /// A file bundled in the binary.
+    Bundled(&'static str),
+}
+
+impl AirfoilRef {
+    /// Parses `"NACA 2412"`, `"naca23012"` or `"something.dat"`; the message says what is
+    /// accepted.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        let trimmed = text.trim();
+        let lower = trimmed.to_ascii_lowercase();
+        if let Some(rest) = lower.strip_prefix("naca") {
+            let digits = rest.trim_start_matches([' ', '-', '_']);
+            let is_digits = !digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit());
+            if is_digits && (digits.len() == 4 || digits.len() == 5) {
+                return Ok(Self::Naca(digits.to_string()));
+            }
+            return Err(format!(
+                "`{trimmed}` is not a NACA 4- or 5-digit designation (e.g. \"NACA 2412\", \"NACA 23012\")"
+            ));
+        }
+        if lower.ends_with(".dat") {
+            return Ok(Self::File(trimmed.to_string()));
+        }
+        Err(format!(
+            "`{trimmed}` is neither a NACA designation (\"NACA 2412\") nor a .dat file name"
+        ))
+    }
+
+    /// Finds a file airfoil: relative to `scene_dir` first, then among the bundled files.
+    pub fn locate(name: &str, scene_dir: Option<&Path>) -> Option<AirfoilSource> {
+        if let Some(dir) = scene_dir {
+            let path = dir.join(name);
+            if path.is_file() {
+                return Some(AirfoilSource::Disk(path));
+            }
+        }
+        let file_name = Path::new(name).file_name()?.to_str()?;
+        BUNDLED_AIRFOILS
+            .iter()
+            .find(|(bundled, _)| *bundled == file_name)
+            .map(|(_, text)| AirfoilSource::Bundled(text))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_naca_and_files() {
+        assert_eq!(AirfoilRef::parse("NACA 2412"), Ok(AirfoilRef::Naca("2412".into())));
+        assert_eq!(AirfoilRef::parse("naca23012"), Ok(AirfoilRef::Naca("23012".into())));
+        assert_eq!(AirfoilRef::parse("n63212.dat"), Ok(AirfoilRef::File("n63212.dat".into())));
+        assert!(AirfoilRef::parse("NACA 241").is_err());
+        assert!(AirfoilRef::parse("clark-y").is_err());
+    }
+
+    #[test]
+    fn bundled_files_are_found() {
+        assert!(matches!(
+            AirfoilRef::locate("n63212.dat", None),
+            Some(AirfoilSource::Bundled(_))
+        ));
+        assert!(AirfoilRef::locate("missing.dat", None).is_none());
+    }
+}

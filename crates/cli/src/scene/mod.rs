@@ -1,0 +1,348 @@
+//! The scene file: what the user writes (TOML), read with serde and validated before any
+//! work starts.
+//!
+//! Every quantity carries its unit in its key (`chord_m`, `sweep_deg`). Unknown keys are
+//! errors, so a typo cannot pass silently. [`Scene::from_toml`] parses and validates and
+//! reports *all* problems at once, each with its path in the file
+//! (`wing.sections[2].chord_m = -1: must be > 0`).
+
+mod airfoil_ref;
+mod validate;
+
+pub use airfoil_ref::{AirfoilRef, AirfoilSource};
+pub use validate::{Problem, SceneError};
+
+use serde::Deserialize;
+
+/// The embedded default scene: the small aircraft of the thesis (`000_...`, Chapter 5).
+pub const DEFAULT_SCENE_TOML: &str = include_str!("../../../../data/scenes/small-aircraft.toml");
+
+/// A whole scene as written in the TOML file.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scene {
+    /// Scene name, used in the report and in output file names.
+    pub name: String,
+    /// Free text shown in the report.
+    #[serde(default)]
+    pub description: String,
+    /// The wing; absent for a single 2D station scene (the thesis spreadsheet case).
+    pub wing: Option<WingScene>,
+    /// Flaps of the wing.
+    #[serde(default)]
+    pub flap: Vec<FlapScene>,
+    /// Spars and torque tube.
+    #[serde(default)]
+    pub structure: StructureScene,
+    /// Mechanism support stations.
+    #[serde(default)]
+    pub station: Vec<StationScene>,
+    /// Load cases.
+    #[serde(default)]
+    pub loads: LoadsScene,
+    /// Which outputs the user wants; decides which stages run.
+    #[serde(default)]
+    pub outputs: OutputsScene,
+    /// Mesh and sampling resolution.
+    #[serde(default)]
+    pub resolution: ResolutionScene,
+}
+
+/// Which reference line the panel sweep angles are measured on.
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum SweepReferenceScene {
+    /// Leading-edge sweep.
+    #[default]
+    LeadingEdge,
+    /// Quarter-chord sweep.
+    QuarterChord,
+}
+
+/// `[wing]`: sections root to tip and the panels between them.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WingScene {
+    /// Leading edge of the root section, aircraft frame (x aft, y outboard, z up), m.
+    #[serde(default)]
+    pub root_leading_edge_m: [f64; 3],
+    /// Line on which the panel sweep angles are measured.
+    #[serde(default)]
+    pub sweep_reference: SweepReferenceScene,
+    /// Chord fraction about which sections are twisted (0 = leading edge).
+    #[serde(default = "quarter")]
+    pub twist_axis_chord_fraction: f64,
+    /// Sections, root to tip (at least two).
+    pub sections: Vec<WingSectionScene>,
+    /// One panel between each pair of consecutive sections.
+    pub panels: Vec<PanelScene>,
+}
+
+fn quarter() -> f64 {
+    0.25
+}
+
+/// `[[wing.sections]]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WingSectionScene {
+    /// Spanwise position (aircraft y), m.
+    pub y_m: f64,
+    /// Chord, m.
+    pub chord_m: f64,
+    /// Twist, positive nose up, deg.
+    #[serde(default)]
+    pub twist_deg: f64,
+    /// `"NACA 2412"`, `"NACA 23012"` or a `.dat` file (Selig or Lednicer).
+    pub airfoil: String,
+}
+
+/// `[[wing.panels]]`: the part of the wing between two consecutive sections.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PanelScene {
+    /// Sweep angle on the wing's sweep reference line, deg.
+    #[serde(default)]
+    pub sweep_deg: f64,
+    /// Dihedral angle, deg (negative: anhedral).
+    #[serde(default)]
+    pub dihedral_deg: f64,
+}
+
+/// `[[flap]]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FlapScene {
+    /// Flap name; stations refer to it.
+    pub name: String,
+    /// Inboard end, aircraft y, m.
+    pub y_inboard_m: f64,
+    /// Outboard end, aircraft y, m.
+    pub y_outboard_m: f64,
+    /// Flap chord / local wing chord at the inboard end.
+    pub chord_fraction_inboard: f64,
+    /// Flap chord / local wing chord at the outboard end.
+    pub chord_fraction_outboard: f64,
+    /// Own flap section nested in the cove (`"n63212.dat"`); absent: the flap is cut out of
+    /// the wing section.
+    pub airfoil: Option<String>,
+    /// The flap rotation axis.
+    pub hinge: HingeScene,
+    /// Flap settings, deg of rotation about the hinge axis (trailing edge down positive).
+    #[serde(default)]
+    pub settings: SettingsScene,
+}
+
+/// `[flap.hinge]`: either two points or a chord fraction and depth.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HingeScene {
+    /// Inboard axis point, aircraft frame, m.
+    pub inboard_point_m: Option<[f64; 3]>,
+    /// Outboard axis point, aircraft frame, m.
+    pub outboard_point_m: Option<[f64; 3]>,
+    /// Hinge at this fraction of the local wing chord ...
+    pub chord_fraction: Option<f64>,
+    /// ... and this far below the chord line, as a fraction of the local wing chord.
+    pub depth_below_chord_fraction: Option<f64>,
+}
+
+/// `[flap.settings]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SettingsScene {
+    /// Take-off deflection, deg.
+    pub takeoff_deg: f64,
+    /// Landing deflection (fully deployed), deg.
+    pub landing_deg: f64,
+}
+
+impl Default for SettingsScene {
+    fn default() -> Self {
+        Self {
+            takeoff_deg: 15.0,
+            landing_deg: 35.0,
+        }
+    }
+}
+
+/// `[structure]`.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct StructureScene {
+    /// Spars as plates at a chord fraction.
+    #[serde(default)]
+    pub spars: Vec<SparScene>,
+    /// The flap drive torque tube.
+    pub torque_tube: Option<TorqueTubeScene>,
+}
+
+/// `[[structure.spars]]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SparScene {
+    /// Part name.
+    pub name: String,
+    /// Chord fraction of the spar's mid-plane.
+    pub chord_fraction: f64,
+    /// Web thickness, m.
+    pub thickness_m: f64,
+    /// Inboard end, aircraft y, m.
+    pub y_start_m: f64,
+    /// Outboard end, aircraft y, m.
+    pub y_end_m: f64,
+}
+
+/// `[structure.torque_tube]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TorqueTubeScene {
+    /// Polyline of the tube axis, aircraft frame, m.
+    pub path_m: Vec<[f64; 3]>,
+    /// Outer radius, m.
+    pub radius_m: f64,
+}
+
+/// `[[station]]`: one support mechanism.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StationScene {
+    /// Station name.
+    pub name: String,
+    /// Flap it supports (absent in a 2D-only scene).
+    pub flap: Option<String>,
+    /// Distance along the hinge axis from the flap's inboard side plane (thesis d1, or d1 + d2), m.
+    pub axis_offset_m: Option<f64>,
+    /// Mechanism kind and its dimensions.
+    pub mechanism: MechanismScene,
+}
+
+/// `[station.mechanism]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, tag = "kind", rename_all = "kebab-case")]
+pub enum MechanismScene {
+    /// Circular-arc track with screw jack (thesis `000_...`, Chapters 3-5).
+    CircularArcTrack(CircularArcTrackScene),
+}
+
+/// Dimensions of a circular-arc-track mechanism in the station frame (thesis Table 2 names
+/// in the doc comments).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CircularArcTrackScene {
+    /// a1 = |A0 B0|, m.
+    pub base_distance_m: f64,
+    /// α0, angle of A0B0 from the station x axis, deg.
+    pub base_angle_deg: f64,
+    /// a2 = |A0 A|, m.
+    pub crank_length_m: f64,
+    /// a3, screw length; absent: synthesised (step 9), m.
+    pub screw_length_m: Option<f64>,
+    /// b1, outer slot radius, m.
+    pub outer_slot_radius_m: f64,
+    /// c1, inner slot radius, m.
+    pub inner_slot_radius_m: f64,
+    /// β1, angle of the outer slot's stowed end, deg.
+    pub slot_start_angle_deg: f64,
+    /// β2, angle between the two slots' stowed ends, deg.
+    pub slot_offset_angle_deg: f64,
+    /// β3, flap rotation range, deg.
+    pub rotation_range_deg: f64,
+    /// Flap centre of mass D (stowed), station frame, m.
+    pub flap_centre_of_mass_m: [f64; 2],
+    /// Flap mass carried by this station, kg.
+    pub flap_mass_kg: f64,
+    /// Screw lead l, m.
+    pub screw_lead_m: f64,
+    /// Screw mean radius r, m.
+    pub screw_mean_radius_m: f64,
+    /// Thread friction coefficient f.
+    pub screw_friction: f64,
+    /// Nut speed along the screw, m/s.
+    #[serde(default = "default_nut_speed")]
+    pub nut_speed_mps: f64,
+}
+
+fn default_nut_speed() -> f64 {
+    0.035
+}
+
+/// `[loads]`.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct LoadsScene {
+    /// Safety factor on motor torque (CS-25: 1.5).
+    pub safety_factor: Option<f64>,
+    /// Named load cases.
+    #[serde(default)]
+    pub cases: Vec<LoadCaseScene>,
+}
+
+/// `[[loads.cases]]`: external (aerodynamic) moment about the hinge per station, closing
+/// the flap; constant or linear from stowed to fully deployed.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LoadCaseScene {
+    /// Case name (`cruise`, `landing`).
+    pub name: String,
+    /// Constant moment per station, N m.
+    pub moment_nm: Option<f64>,
+    /// Moment at stowed, N m (with `moment_deployed_nm`: linear interpolation).
+    pub moment_stowed_nm: Option<f64>,
+    /// Moment at fully deployed, N m.
+    pub moment_deployed_nm: Option<f64>,
+}
+
+/// `[outputs]`: which results to produce; a stage that no requested output needs is skipped.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutputsScene {
+    /// Binary STL of every part.
+    #[serde(default = "yes")]
+    pub stl: bool,
+    /// Mechanism kinematics and forces.
+    #[serde(default = "yes")]
+    pub kinematics: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl Default for OutputsScene {
+    fn default() -> Self {
+        Self {
+            stl: true,
+            kinematics: true,
+        }
+    }
+}
+
+/// `[resolution]`: discretisation knobs (defaults chosen from the error-vs-time tables in
+/// the README).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ResolutionScene {
+    /// Airfoil points per side (upper/lower).
+    #[serde(default = "default_points_per_side")]
+    pub airfoil_points_per_side: usize,
+    /// Deployment samples per station sweep.
+    #[serde(default = "default_samples")]
+    pub deployment_samples: usize,
+}
+
+fn default_points_per_side() -> usize {
+    60
+}
+fn default_samples() -> usize {
+    51
+}
+
+impl Default for ResolutionScene {
+    fn default() -> Self {
+        Self {
+            airfoil_points_per_side: default_points_per_side(),
+            deployment_samples: default_samples(),
+        }
+    }
+}

@@ -1,0 +1,130 @@
+//! The crate's one error type.
+
+use serde::Serialize;
+
+/// Result with this crate's [`Error`].
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+/// Why a mechanism cannot be synthesised, assembled, posed or loaded.
+///
+/// Every variant names the condition and carries the values that triggered it
+/// (SI units: metres, radians, newtons).
+#[derive(Debug, Clone, PartialEq, Serialize, thiserror::Error)]
+pub enum Error {
+    /// A dimension is not finite or not strictly positive.
+    #[error("dimension `{name}` = {value} must be finite and > 0")]
+    InvalidDimension {
+        /// Field name of the dimension.
+        name: &'static str,
+        /// The rejected value.
+        value: f64,
+    },
+    /// An angle, ratio or other parameter lies outside its admissible range.
+    #[error("parameter `{name}` = {value} is outside [{min}, {max}]")]
+    ParameterOutOfRange {
+        /// Field name of the parameter.
+        name: &'static str,
+        /// The rejected value.
+        value: f64,
+        /// Lowest admissible value.
+        min: f64,
+        /// Highest admissible value.
+        max: f64,
+    },
+    /// Thesis section 5.3 red cell 2: the inner slot radius c1 must be smaller than the outer b1.
+    #[error("inner slot radius {inner_radius_m} m is not smaller than outer slot radius {outer_radius_m} m")]
+    SlotRadiiOrder {
+        /// c1 (m).
+        inner_radius_m: f64,
+        /// b1 (m).
+        outer_radius_m: f64,
+    },
+    /// Thesis step 8: no screw line through B0 can hold both end positions of A, because
+    /// a1 <= a2 cos(β3/2) (the base pivot B0 lies inside the chord A_i A_f's foot circle).
+    #[error("collinearity impossible: base distance {base_distance_m} m <= crank {crank_length_m} m * cos(half rotation) = {chord_distance_m} m")]
+    CollinearityImpossible {
+        /// a1 (m).
+        base_distance_m: f64,
+        /// a2 (m).
+        crank_length_m: f64,
+        /// h = a2 cos(β3/2) (m), distance from A0 to the screw line.
+        chord_distance_m: f64,
+    },
+    /// Thesis section 5.3 red cell 3: the screw is shorter than the largest slider travel s34,f.
+    #[error("screw length {screw_length_m} m is shorter than the required {required_m} m")]
+    ScrewTooShort {
+        /// a3 (m).
+        screw_length_m: f64,
+        /// s34,f = s34,i + Δs (m).
+        required_m: f64,
+    },
+    /// Thesis section 5.3 red cell 1: the input would drive the pins out of their slots
+    /// (s34 < s34,i or Δθ12 > β3).
+    #[error("input {input_m} m is outside the slot range [{min_input_m}, {max_input_m}] m")]
+    OutOfSlot {
+        /// Requested input s34 (m).
+        input_m: f64,
+        /// s34,i (m).
+        min_input_m: f64,
+        /// s34,f (m).
+        max_input_m: f64,
+    },
+    /// The loop cannot close: the triangle A0 B0 A does not exist for this input.
+    #[error("cannot assemble at input {input_m} m: reachable range is [{min_input_m}, {max_input_m}] m")]
+    CannotAssemble {
+        /// Requested input (m).
+        input_m: f64,
+        /// Smallest input that assembles, |a1 - a2| (m).
+        min_input_m: f64,
+        /// Largest input that assembles, a1 + a2 (m).
+        max_input_m: f64,
+    },
+    /// The mechanism is at (or within the tolerance of) a toggle (dead-centre) position:
+    /// the transmission angle vanishes and the velocity Jacobian is singular.
+    #[error("toggle at input {input_m} m: transmission angle {transmission_angle_rad} rad is below {tolerance_rad} rad")]
+    Toggle {
+        /// Input value at which the toggle was met (m).
+        input_m: f64,
+        /// Transmission angle μ there (rad).
+        transmission_angle_rad: f64,
+        /// The toggle tolerance in force (rad).
+        tolerance_rad: f64,
+    },
+    /// An arc cosine argument fell outside [-1, 1] by more than rounding can explain.
+    #[error("acos of `{quantity}`: cosine {cosine} exceeds 1 by more than {tolerance}")]
+    AcosOutOfRange {
+        /// What the angle is.
+        quantity: &'static str,
+        /// The offending cosine.
+        cosine: f64,
+        /// The rounding tolerance that was exceeded.
+        tolerance: f64,
+    },
+    /// The two slot pins lie on one line through the hinge, so their radial reactions
+    /// cannot balance a tangential load (the Cramer determinant sin(θF - θG) vanishes).
+    #[error("slot reactions indeterminate: sin(θF - θG) = {determinant}")]
+    SlotReactionsIndeterminate {
+        /// sin(θF - θG).
+        determinant: f64,
+    },
+    /// The screw cannot raise any load: 2πr - f l <= 0 in thesis eq. 3.6.9.
+    #[error("screw cannot raise: 2πr - f·l = {denominator_m} m <= 0")]
+    ScrewJammed {
+        /// 2πr - f l (m).
+        denominator_m: f64,
+    },
+    /// A sweep needs at least two samples.
+    #[error("a sweep needs at least 2 samples, got {samples}")]
+    TooFewSamples {
+        /// Requested sample count.
+        samples: usize,
+    },
+    /// A computed quantity came out non-finite (never returned silently).
+    #[error("`{quantity}` is not finite at input {input_m}")]
+    NonFinite {
+        /// Which quantity.
+        quantity: &'static str,
+        /// Input value at which it happened.
+        input_m: f64,
+    },
+}

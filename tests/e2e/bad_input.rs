@@ -1,0 +1,130 @@
+//! Malformed scenes: each gives exit code 2 and a message naming the field; none panics
+//! and none leaves an output folder behind.
+
+use crate::{default_scene_text, run_flapwright};
+
+/// Replaces exactly the first occurrence of `from` (which must exist) in the default scene.
+fn default_with(from: &str, to: &str) -> String {
+    let text = default_scene_text();
+    assert!(text.contains(from), "default scene has `{from}`");
+    text.replacen(from, to, 1)
+}
+
+fn assert_rejected(scene: &str, expected_in_message: &[&str]) {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("scene.toml"), scene).unwrap();
+    let output = run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "exit code 2 for bad input; stderr:\n{stderr}");
+    assert!(!stderr.contains("panicked"), "no panic:\n{stderr}");
+    for expected in expected_in_message {
+        assert!(stderr.contains(expected), "message names `{expected}`:\n{stderr}");
+    }
+    assert!(!dir.path().join("out").exists(), "no output folder for a failed run");
+    let leftovers: Vec<_> = std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(leftovers.len(), 1, "only the scene file remains: {leftovers:?}");
+}
+
+#[test]
+fn negative_chord() {
+    assert_rejected(&default_with("chord_m = 2.1", "chord_m = -1.0"), &["wing.sections[0].chord_m", "must be > 0"]);
+}
+
+#[test]
+fn zero_span() {
+    assert_rejected(&default_with("y_m = 5.5", "y_m = 0.6"), &["zero span", "wing.sections[1].y_m"]);
+}
+
+#[test]
+fn sections_out_of_spanwise_order() {
+    assert_rejected(&default_with("y_m = 5.5", "y_m = 0.3"), &["wing.sections[1].y_m", "increasing spanwise order"]);
+}
+
+#[test]
+fn unknown_airfoil_file() {
+    assert_rejected(
+        &default_with("airfoil = \"n63215.dat\"", "airfoil = \"no-such-file.dat\""),
+        &["wing.sections[0].airfoil", "no-such-file.dat", "not found"],
+    );
+}
+
+#[test]
+fn unknown_airfoil_name() {
+    assert_rejected(
+        &default_with("airfoil = \"n63215.dat\"", "airfoil = \"NACA 99\""),
+        &["wing.sections[0].airfoil", "NACA"],
+    );
+}
+
+#[test]
+fn flap_outside_the_wing() {
+    assert_rejected(&default_with("y_outboard_m = 3.0", "y_outboard_m = 7.0"), &["flap[0].y_outboard_m", "[0.6, 5.5]"]);
+}
+
+#[test]
+fn unknown_key() {
+    assert_rejected(&default_with("chord_m = 2.1", "chrod_m = 2.1"), &["chrod_m", "unknown field"]);
+}
+
+#[test]
+fn nan_value() {
+    assert_rejected(&default_with("chord_m = 2.1", "chord_m = nan"), &["wing.sections[0].chord_m", "NaN"]);
+}
+
+#[test]
+fn infinite_value() {
+    assert_rejected(&default_with("sweep_deg = 3.0", "sweep_deg = inf"), &["wing.panels[0].sweep_deg", "inf"]);
+}
+
+#[test]
+fn wrong_type() {
+    assert_rejected(&default_with("chord_m = 2.1", "chord_m = \"big\""), &["invalid type", "chord_m"]);
+}
+
+#[test]
+fn hinge_axis_of_zero_length() {
+    assert_rejected(
+        &default_with("outboard_point_m = [1.4530, 3.0, -0.1200]", "outboard_point_m = [1.6609, 0.8, -0.3025]"),
+        &["flap[0].hinge", "length"],
+    );
+}
+
+#[test]
+fn spar_behind_the_flap_leading_edge() {
+    assert_rejected(
+        &default_with("chord_fraction = 0.64", "chord_fraction = 0.85"),
+        &["structure.spars[1].chord_fraction", "flap"],
+    );
+}
+
+#[test]
+fn station_on_a_missing_flap() {
+    assert_rejected(&default_with("flap = \"flap\"", "flap = \"aileron\""), &["station[0].flap", "aileron"]);
+}
+
+#[test]
+fn inner_slot_not_smaller_than_outer() {
+    assert_rejected(
+        &default_with("inner_slot_radius_m = 0.300", "inner_slot_radius_m = 0.400"),
+        &["station[0].mechanism.inner_slot_radius_m", "outer_slot_radius_m"],
+    );
+}
+
+#[test]
+fn toml_syntax_error() {
+    assert_rejected(&default_with("[wing]", "[wing"), &["TOML parse error"]);
+}
+
+#[test]
+fn several_problems_reported_at_once() {
+    let scene = default_with("chord_m = 2.1", "chord_m = -1.0").replacen("sweep_deg = 3.0", "sweep_deg = 95.0", 1);
+    assert_rejected(&scene, &["2 problem(s)", "wing.sections[0].chord_m", "wing.panels[0].sweep_deg"]);
+}
+
+#[test]
+fn missing_scene_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let output = run_flapwright(dir.path(), &["design", "absent.toml"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("absent.toml"));
+}

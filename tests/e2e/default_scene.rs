@@ -1,0 +1,70 @@
+//! `flapwright` with no arguments designs the embedded default scene into
+//! `./flapwright-out`; everything it writes is re-read here with independent readers.
+
+use std::collections::BTreeSet;
+
+use crate::stl_reader::{check_closed_oriented, read_binary_stl};
+use crate::run_flapwright;
+
+fn report_without_timings(text: &str) -> serde_json::Value {
+    let mut report: serde_json::Value = serde_json::from_str(text).expect("report.json is JSON");
+    report.as_object_mut().unwrap().remove("timings");
+    report
+}
+
+#[test]
+fn no_arguments_designs_the_default_scene() {
+    let dir = tempfile::tempdir().unwrap();
+    let output = run_flapwright(dir.path(), &[]);
+    assert!(output.status.success(), "stderr:\n{}", String::from_utf8_lossy(&output.stderr));
+    let out = dir.path().join("flapwright-out");
+    let report_text = std::fs::read_to_string(out.join("report.json")).unwrap();
+    let report: serde_json::Value = serde_json::from_str(&report_text).unwrap();
+    assert_eq!(report["scene"]["name"], "small-aircraft");
+    assert_eq!(report["scene"]["sha256"].as_str().unwrap().len(), 64);
+
+    // Every part of the scene has an STL: wing skin, flap, both spars, torque tube.
+    let parts = report["parts"].as_array().unwrap();
+    let kinds: BTreeSet<&str> = parts.iter().map(|p| p["kind"].as_str().unwrap()).collect();
+    for kind in ["wing-skin", "flap", "spar", "torque-tube"] {
+        assert!(kinds.contains(kind), "a {kind} part in {kinds:?}");
+    }
+    let stl_files: BTreeSet<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .filter(|n| n.ends_with(".stl"))
+        .collect();
+    let reported: BTreeSet<String> = parts.iter().map(|p| p["stl_file"].as_str().unwrap().to_string()).collect();
+    assert_eq!(stl_files, reported, "the STL files are exactly the reported parts");
+
+    for part in parts {
+        let file = part["stl_file"].as_str().unwrap();
+        let triangles = read_binary_stl(&std::fs::read(out.join(file)).unwrap());
+        assert_eq!(triangles.len() as u64, part["triangles"].as_u64().unwrap(), "{file}");
+        let volume = check_closed_oriented(&triangles).unwrap_or_else(|e| panic!("{file} is not watertight: {e}"));
+        assert!(volume > 0.0, "{file} has positive volume, got {volume}");
+        let reported_volume = part["volume_m3"].as_f64().unwrap();
+        // f32 storage in STL: relative agreement to ~1e-5 is all that survives.
+        assert!(
+            (volume - reported_volume).abs() <= 1e-4 * reported_volume,
+            "{file}: STL volume {volume} vs report {reported_volume}"
+        );
+        assert_eq!(part["watertight"], true, "{file}");
+    }
+
+    // A second run gives the same report apart from the timings section.
+    let again = run_flapwright(dir.path(), &[]);
+    assert!(again.status.success());
+    let second = std::fs::read_to_string(out.join("report.json")).unwrap();
+    assert_eq!(report_without_timings(&report_text), report_without_timings(&second));
+}
+
+#[test]
+fn refuses_to_replace_a_folder_it_did_not_write() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir(dir.path().join("precious")).unwrap();
+    std::fs::write(dir.path().join("precious/notes.txt"), "keep me").unwrap();
+    let output = run_flapwright(dir.path(), &["design", "--out", "precious"]);
+    assert_eq!(output.status.code(), Some(1));
+    assert_eq!(std::fs::read_to_string(dir.path().join("precious/notes.txt")).unwrap(), "keep me");
+}

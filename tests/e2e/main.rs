@@ -1,0 +1,28 @@
+//! End-to-end tests: run the real `flapwright` binary and re-read what it wrote with
+//! independent readers.
+
+mod bad_input;
+mod default_scene;
+mod stl_reader;
+
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+/// The repository root (`data/` lives there).
+pub fn repo_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// The default scene's text, as shipped in `data/scenes/`.
+pub fn default_scene_text() -> String {
+    std::fs::read_to_string(repo_root().join("data/scenes/small-aircraft.toml")).expect("default scene")
+}
+
+/// Runs `flapwright` with `args` in `dir`.
+pub fn run_flapwright(dir: &Path, args: &[&str]) -> Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_flapwright"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("flapwright runs")
+}

@@ -15,29 +15,55 @@ fn assert_rejected(scene: &str, expected_in_message: &[&str]) {
     std::fs::write(dir.path().join("scene.toml"), scene).unwrap();
     let output = run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);
     let stderr = String::from_utf8_lossy(&output.stderr);
-    assert_eq!(output.status.code(), Some(2), "exit code 2 for bad input; stderr:\n{stderr}");
+    assert_eq!(
+        output.status.code(),
+        Some(2),
+        "exit code 2 for bad input; stderr:\n{stderr}"
+    );
     assert!(!stderr.contains("panicked"), "no panic:\n{stderr}");
     for expected in expected_in_message {
-        assert!(stderr.contains(expected), "message names `{expected}`:\n{stderr}");
+        assert!(
+            stderr.contains(expected),
+            "message names `{expected}`:\n{stderr}"
+        );
     }
-    assert!(!dir.path().join("out").exists(), "no output folder for a failed run");
-    let leftovers: Vec<_> = std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
-    assert_eq!(leftovers.len(), 1, "only the scene file remains: {leftovers:?}");
+    assert!(
+        !dir.path().join("out").exists(),
+        "no output folder for a failed run"
+    );
+    let leftovers: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(
+        leftovers.len(),
+        1,
+        "only the scene file remains: {leftovers:?}"
+    );
 }
 
 #[test]
 fn negative_chord() {
-    assert_rejected(&default_with("chord_m = 2.1", "chord_m = -1.0"), &["wing.sections[0].chord_m", "must be > 0"]);
+    assert_rejected(
+        &default_with("chord_m = 2.1", "chord_m = -1.0"),
+        &["wing.sections[0].chord_m", "must be > 0"],
+    );
 }
 
 #[test]
 fn zero_span() {
-    assert_rejected(&default_with("y_m = 5.5", "y_m = 0.6"), &["zero span", "wing.sections[1].y_m"]);
+    assert_rejected(
+        &default_with("y_m = 5.5", "y_m = 0.6"),
+        &["zero span", "wing.sections[1].y_m"],
+    );
 }
 
 #[test]
 fn sections_out_of_spanwise_order() {
-    assert_rejected(&default_with("y_m = 5.5", "y_m = 0.3"), &["wing.sections[1].y_m", "increasing spanwise order"]);
+    assert_rejected(
+        &default_with("y_m = 5.5", "y_m = 0.3"),
+        &["wing.sections[1].y_m", "increasing spanwise order"],
+    );
 }
 
 #[test]
@@ -58,33 +84,51 @@ fn unknown_airfoil_name() {
 
 #[test]
 fn flap_outside_the_wing() {
-    assert_rejected(&default_with("y_outboard_m = 3.0", "y_outboard_m = 7.0"), &["flap[0].y_outboard_m", "[0.6, 5.5]"]);
+    assert_rejected(
+        &default_with("y_outboard_m = 3.0", "y_outboard_m = 7.0"),
+        &["flap[0].y_outboard_m", "[0.6, 5.5]"],
+    );
 }
 
 #[test]
 fn unknown_key() {
-    assert_rejected(&default_with("chord_m = 2.1", "chrod_m = 2.1"), &["chrod_m", "unknown field"]);
+    assert_rejected(
+        &default_with("chord_m = 2.1", "chrod_m = 2.1"),
+        &["chrod_m", "unknown field"],
+    );
 }
 
 #[test]
 fn nan_value() {
-    assert_rejected(&default_with("chord_m = 2.1", "chord_m = nan"), &["wing.sections[0].chord_m", "NaN"]);
+    assert_rejected(
+        &default_with("chord_m = 2.1", "chord_m = nan"),
+        &["wing.sections[0].chord_m", "NaN"],
+    );
 }
 
 #[test]
 fn infinite_value() {
-    assert_rejected(&default_with("sweep_deg = 3.0", "sweep_deg = inf"), &["wing.panels[0].sweep_deg", "inf"]);
+    assert_rejected(
+        &default_with("sweep_deg = 3.0", "sweep_deg = inf"),
+        &["wing.panels[0].sweep_deg", "inf"],
+    );
 }
 
 #[test]
 fn wrong_type() {
-    assert_rejected(&default_with("chord_m = 2.1", "chord_m = \"big\""), &["invalid type", "chord_m"]);
+    assert_rejected(
+        &default_with("chord_m = 2.1", "chord_m = \"big\""),
+        &["invalid type", "chord_m"],
+    );
 }
 
 #[test]
 fn hinge_axis_of_zero_length() {
     assert_rejected(
-        &default_with("outboard_point_m = [1.4530, 3.0, -0.1200]", "outboard_point_m = [1.6609, 0.8, -0.3025]"),
+        &default_with(
+            "outboard_point_m = [1.4530, 3.0, -0.1200]",
+            "outboard_point_m = [1.6609, 0.8, -0.3025]",
+        ),
         &["flap[0].hinge", "length"],
     );
 }
@@ -99,14 +143,20 @@ fn spar_behind_the_flap_leading_edge() {
 
 #[test]
 fn station_on_a_missing_flap() {
-    assert_rejected(&default_with("flap = \"flap\"", "flap = \"aileron\""), &["station[0].flap", "aileron"]);
+    assert_rejected(
+        &default_with("flap = \"flap\"", "flap = \"aileron\""),
+        &["station[0].flap", "aileron"],
+    );
 }
 
 #[test]
 fn inner_slot_not_smaller_than_outer() {
     assert_rejected(
         &default_with("inner_slot_radius_m = 0.300", "inner_slot_radius_m = 0.400"),
-        &["station[0].mechanism.inner_slot_radius_m", "outer_slot_radius_m"],
+        &[
+            "station[0].mechanism.inner_slot_radius_m",
+            "outer_slot_radius_m",
+        ],
     );
 }
 
@@ -117,8 +167,19 @@ fn toml_syntax_error() {
 
 #[test]
 fn several_problems_reported_at_once() {
-    let scene = default_with("chord_m = 2.1", "chord_m = -1.0").replacen("sweep_deg = 3.0", "sweep_deg = 95.0", 1);
-    assert_rejected(&scene, &["2 problem(s)", "wing.sections[0].chord_m", "wing.panels[0].sweep_deg"]);
+    let scene = default_with("chord_m = 2.1", "chord_m = -1.0").replacen(
+        "sweep_deg = 3.0",
+        "sweep_deg = 95.0",
+        1,
+    );
+    assert_rejected(
+        &scene,
+        &[
+            "2 problem(s)",
+            "wing.sections[0].chord_m",
+            "wing.panels[0].sweep_deg",
+        ],
+    );
 }
 
 #[test]

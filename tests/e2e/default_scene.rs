@@ -3,8 +3,8 @@
 
 use std::collections::BTreeSet;
 
-use crate::stl_reader::{check_closed_oriented, read_binary_stl};
 use crate::run_flapwright;
+use crate::stl_reader::{check_closed_oriented, read_binary_stl};
 
 fn report_without_timings(text: &str) -> serde_json::Value {
     let mut report: serde_json::Value = serde_json::from_str(text).expect("report.json is JSON");
@@ -16,7 +16,11 @@ fn report_without_timings(text: &str) -> serde_json::Value {
 fn no_arguments_designs_the_default_scene() {
     let dir = tempfile::tempdir().unwrap();
     let output = run_flapwright(dir.path(), &[]);
-    assert!(output.status.success(), "stderr:\n{}", String::from_utf8_lossy(&output.stderr));
+    assert!(
+        output.status.success(),
+        "stderr:\n{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
     let out = dir.path().join("flapwright-out");
     let report_text = std::fs::read_to_string(out.join("report.json")).unwrap();
     let report: serde_json::Value = serde_json::from_str(&report_text).unwrap();
@@ -34,14 +38,25 @@ fn no_arguments_designs_the_default_scene() {
         .map(|e| e.unwrap().file_name().into_string().unwrap())
         .filter(|n| n.ends_with(".stl"))
         .collect();
-    let reported: BTreeSet<String> = parts.iter().map(|p| p["stl_file"].as_str().unwrap().to_string()).collect();
-    assert_eq!(stl_files, reported, "the STL files are exactly the reported parts");
+    let reported: BTreeSet<String> = parts
+        .iter()
+        .map(|p| p["stl_file"].as_str().unwrap().to_string())
+        .collect();
+    assert_eq!(
+        stl_files, reported,
+        "the STL files are exactly the reported parts"
+    );
 
     for part in parts {
         let file = part["stl_file"].as_str().unwrap();
         let triangles = read_binary_stl(&std::fs::read(out.join(file)).unwrap());
-        assert_eq!(triangles.len() as u64, part["triangles"].as_u64().unwrap(), "{file}");
-        let volume = check_closed_oriented(&triangles).unwrap_or_else(|e| panic!("{file} is not watertight: {e}"));
+        assert_eq!(
+            triangles.len() as u64,
+            part["triangles"].as_u64().unwrap(),
+            "{file}"
+        );
+        let volume = check_closed_oriented(&triangles)
+            .unwrap_or_else(|e| panic!("{file} is not watertight: {e}"));
         assert!(volume > 0.0, "{file} has positive volume, got {volume}");
         let reported_volume = part["volume_m3"].as_f64().unwrap();
         // f32 storage in STL: relative agreement to ~1e-5 is all that survives.
@@ -56,7 +71,10 @@ fn no_arguments_designs_the_default_scene() {
     let again = run_flapwright(dir.path(), &[]);
     assert!(again.status.success());
     let second = std::fs::read_to_string(out.join("report.json")).unwrap();
-    assert_eq!(report_without_timings(&report_text), report_without_timings(&second));
+    assert_eq!(
+        report_without_timings(&report_text),
+        report_without_timings(&second)
+    );
 }
 
 #[test]
@@ -66,5 +84,8 @@ fn refuses_to_replace_a_folder_it_did_not_write() {
     std::fs::write(dir.path().join("precious/notes.txt"), "keep me").unwrap();
     let output = run_flapwright(dir.path(), &["design", "--out", "precious"]);
     assert_eq!(output.status.code(), Some(1));
-    assert_eq!(std::fs::read_to_string(dir.path().join("precious/notes.txt")).unwrap(), "keep me");
+    assert_eq!(
+        std::fs::read_to_string(dir.path().join("precious/notes.txt")).unwrap(),
+        "keep me"
+    );
 }

@@ -15,7 +15,8 @@ pub fn repo_root() -> PathBuf {
 
 /// The default scene's text, as shipped in `data/scenes/`.
 pub fn default_scene_text() -> String {
-    std::fs::read_to_string(repo_root().join("data/scenes/small-aircraft.toml")).expect("default scene")
+    std::fs::read_to_string(repo_root().join("data/scenes/small-aircraft.toml"))
+        .expect("default scene")
 }
 
 /// Runs `flapwright` with `args` in `dir`.

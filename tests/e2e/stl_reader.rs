@@ -5,9 +5,16 @@ use std::collections::HashMap;
 
 /// Triangles of a binary STL file as `[[x, y, z]; 3]` (f32, as stored).
 pub fn read_binary_stl(bytes: &[u8]) -> Vec<[[f32; 3]; 3]> {
-    assert!(bytes.len() >= 84, "binary STL needs an 80-byte header and a count");
+    assert!(
+        bytes.len() >= 84,
+        "binary STL needs an 80-byte header and a count"
+    );
     let count = u32::from_le_bytes(bytes[80..84].try_into().unwrap()) as usize;
-    assert_eq!(bytes.len(), 84 + 50 * count, "file size matches the triangle count");
+    assert_eq!(
+        bytes.len(),
+        84 + 50 * count,
+        "file size matches the triangle count"
+    );
     (0..count)
         .map(|i| {
             let record = &bytes[84 + 50 * i..84 + 50 * (i + 1)];

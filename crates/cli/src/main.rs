@@ -15,7 +15,11 @@ const EXIT_BAD_INPUT: u8 = 2;
 const EXIT_FAILED: u8 = 1;
 
 #[derive(Parser, Debug)]
-#[command(name = "flapwright", version, about = "Designs trailing-edge flap support and drive mechanisms for a whole wing")]
+#[command(
+    name = "flapwright",
+    version,
+    about = "Designs trailing-edge flap support and drive mechanisms for a whole wing"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -78,17 +82,22 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         code: EXIT_BAD_INPUT,
         error: anyhow::Error::new(e).context(format!(
             "invalid scene {}",
-            scene_path.as_deref().map_or("(embedded default)".into(), |p| p.display().to_string())
+            scene_path
+                .as_deref()
+                .map_or("(embedded default)".into(), |p| p.display().to_string())
         )),
     })?;
-    let staged = StagedDir::create(&out).with_context(|| format!("preparing output folder {}", out.display()))?;
+    let staged = StagedDir::create(&out)
+        .with_context(|| format!("preparing output folder {}", out.display()))?;
     let inputs = Inputs {
         scene: &scene,
         scene_text: &text,
         scene_dir: scene_dir.as_deref(),
     };
     let outcome = pipeline::design(&inputs, &staged)?;
-    let written = staged.commit().with_context(|| format!("moving results into {}", out.display()))?;
+    let written = staged
+        .commit()
+        .with_context(|| format!("moving results into {}", out.display()))?;
     if cli.json {
         println!("{}", serde_json::to_string(&outcome.summary)?);
     } else if !cli.quiet {
@@ -110,7 +119,8 @@ fn read_scene_text(path: Option<&Path>) -> Result<(String, Option<PathBuf>), Fai
         Some(path) => {
             let text = std::fs::read_to_string(path).map_err(|e| Failure {
                 code: EXIT_BAD_INPUT,
-                error: anyhow::Error::new(e).context(format!("reading scene file {}", path.display())),
+                error: anyhow::Error::new(e)
+                    .context(format!("reading scene file {}", path.display())),
             })?;
             let dir = path.parent().map(Path::to_path_buf);
             Ok((text, dir))

@@ -76,9 +76,15 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
     let warnings: Vec<String> = Vec::new();
 
     if let Some(wing) = &scene.wing {
-        let model = stages.run("geometry", || geometry::build_model(scene, wing, inputs.scene_dir))?;
-        let meshed = stages.run("meshing", || geometry::mesh_parts(&model, &scene.resolution))?;
-        parts = stages.run("stl", || geometry::write_parts(&meshed, scene.outputs.stl, out))?;
+        let model = stages.run("geometry", || {
+            geometry::build_model(scene, wing, inputs.scene_dir)
+        })?;
+        let meshed = stages.run("meshing", || {
+            geometry::mesh_parts(&model, &scene.resolution)
+        })?;
+        parts = stages.run("stl", || {
+            geometry::write_parts(&meshed, scene.outputs.stl, out)
+        })?;
     }
 
     let report = Report {
@@ -107,5 +113,8 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
 }
 
 fn hex_sha256(bytes: &[u8]) -> String {
-    Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
+    Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
 }

@@ -1,5 +1,64 @@
 //! Airfoils, wing lofting, part meshes, STL writing and the parry3d collision adapter.
 //!
-//! (Being filled: see issue 2.)
+//! # Overview
+//!
+//! [`Airfoil`] sections (analytic [`Naca`] 4/5-digit, or Selig/Lednicer `.dat` files) are
+//! placed along the span by a [`WingSpec`] (sections, panels with sweep and dihedral,
+//! twist) into a [`Wing`]. A [`WingModel`] adds [`FlapSpec`]s (cut-out or own section,
+//! hinge axis), [`SparSpec`]s and a [`TorqueTubeSpec`], and
+//! [`WingModel::compute_parts`] meshes every [`Part`] as a closed, outward-oriented
+//! [`TriMesh`]. Meshes are written with [`io::stl::write_binary`] and turned into
+//! [`CollisionShape`]s for clearance queries ([`compute_distance`], [`compute_intersects`]).
+//!
+//! # Units and frames
+//!
+//! SI throughout (m, rad; `_deg` fields in degrees). Airfoils use unit-chord section
+//! coordinates (x aft from the leading edge, y up). 3D points are in the aircraft frame
+//! (`_ac`): x aft, y starboard (outboard on the modelled right wing), z up. Sections are
+//! streamwise (planes y = const); see [`wing`] for sweep, dihedral and twist rules.
+//!
+//! # Design notes
+//!
+//! - Every loft joins rings with equal point counts (airfoils are resampled with cosine
+//!   spacing in arc length, see [`Airfoil::resampled`]); caps are ear-clipped; the result is
+//!   oriented by its signed volume and checked watertight before it is returned.
+//! - A wing with flaps is several closed shells in one mesh (plain spans and flap spans
+//!   with a straight cove wall), touching along planes y = const: robust and exact.
+//! - parry3d-f64 (glam-based) lives only in [`collision`]; conversions go through glamx.
+//!
+//! # Limitations
+//!
+//! - The cove is a straight wall at the flap's foremost point less
+//!   [`flap::COVE_GAP_CHORD_FRACTION`]; there is no shroud (the upper skin does not extend
+//!   over the flap). The flap is narrower than its cut-out by [`flap::SIDE_GAP_CHORD_FRACTION`]
+//!   of the chord at each side.
+//! - Spars are plates normal to the chord line; the torque tube has mitred joints.
+//! - Between stations, surfaces are ruled (straight lines between corresponding points).
+//!
+//! # Pitfalls
+//!
+//! - NACA `thickness(x)` is the half-thickness y_t, applied normal to the mean line.
+//! - Database airfoils are normalised differently from the analytic NACA definition (see
+//!   `data/airfoils/README.md`): never use one as the exact reference for the other.
+//! - parry's mesh queries see surfaces only: a part inside a mesh is not "intersecting".
+//! - STL is f32 and unitless: these files are in metres.
+
+pub mod airfoil;
+pub mod collision;
+pub mod error;
+pub mod flap;
+pub mod io;
+mod loft;
 pub mod mesh;
-pub use mesh::TriMesh;
+pub mod parts;
+pub mod structure;
+pub mod wing;
+
+pub use airfoil::{Airfoil, Naca, NacaCamber, Surface, TrailingEdge};
+pub use collision::{compute_distance, compute_intersects, CollisionShape, Proximity};
+pub use error::{Error, Result};
+pub use flap::{Flap, FlapSectionSpec, FlapSpec, HingeSpec};
+pub use mesh::{Aabb, MeshCheck, TriMesh};
+pub use parts::{MeshResolution, Part, PartKind, WingModel};
+pub use structure::{SparSpec, TorqueTubeSpec};
+pub use wing::{PanelSpec, SectionAt, SweepReference, Wing, WingSectionSpec, WingSpec};

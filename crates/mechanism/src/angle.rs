@@ -28,7 +28,7 @@ pub fn guarded_acos(cosine: f64, quantity: &'static str) -> Result<f64> {
     Ok(cosine.clamp(-1.0, 1.0).acos())
 }
 
-/// Twice... four times the area of a triangle with sides `a`, `b`, `c`, by Kahan's
+/// Four times the area of a triangle with sides `a`, `b`, `c`, by Kahan's
 /// cancellation-free arrangement of Heron's formula ("Miscalculating area and angles of
 /// a needle-like triangle", 2014). Units: length² when the sides are lengths.
 ///

@@ -1,1 +1,81 @@
-//! Planar flap mechanisms: synthesis, kinematics, kinetostatics. (Being filled: issue 4.)
+//! Planar flap mechanisms: the circular-arc track with screw jack of Arslan (2022), its
+//! synthesis, kinematics, kinetostatics and deployment sweeps.
+//!
+//! # Overview
+//!
+//! - [`CircularArcTrackSpec`] holds the designer's choices (thesis Table 2, yellow cells);
+//!   [`CircularArcTrackSpec::thesis_case_study`] is the published case.
+//! - [`CircularArcTrack::synthesise`] runs design steps 7-10 (collinearity rule giving
+//!   s34,i and Δs; g2, p2, q2, σ, θG, θF) and turns the spreadsheet's red cells (section
+//!   5.3) into typed [`Error`]s and [`SynthesisWarning`]s.
+//! - [`CircularArcTrack::pose`] gives θ12, θ13, ω12, ω13, α12, α13 and points A, B, D, F,
+//!   G with velocities and accelerations, plus [`PoseDiagnostics`].
+//! - [`CircularArcTrack::forces`] gives F_input by equilibrium (eq. 3.4.16) and by virtual
+//!   work (eq. 3.5.1), the slot reactions G12G, G12F and the screw torques T_R, T_L.
+//! - [`CircularArcTrack::sweep`] samples the deployment under a [`LoadCase`].
+//! - [`InvertedSliderCrank`] is the driving linkage on its own (toggle detection, condition
+//!   number); [`landing_gear`] synthesises it by the landing-gear method of Yastrebov &
+//!   Polyushkova (1982, doc 004).
+//!
+//! # Units and frames
+//!
+//! SI throughout (m, rad, s, N, N m, kg); the thesis works in mm and N mm, so its
+//! tables are converted at the test edge only. Frame: the station frame of the thesis,
+//! origin A0 = flap hinge, x towards the nose, y up, angles counter-clockwise positive.
+//! Flap deflection θ12 - θ12,i is trailing-edge-down positive (the flap lies aft, x < 0).
+//! M12 is positive when it tends to close the flap.
+//!
+//! # Design notes
+//!
+//! - Readings that reproduce the thesis numbers (Table 3 within 0.5 %, Appendix C rows):
+//!   mm-based tables converted to SI; the aerodynamic moment is halved because two screw
+//!   jacks share the flap, but the full flap weight (12 kg) acts on each mechanism;
+//!   the landing moment is interpolated linearly over the nut stroke (s34 - s34,i)/Δs,
+//!   not over the deflection; Table 3's cruise column is the flap-closed sample.
+//! - Slider-crank angles come from `atan2` of Kahan's triangle area (no `acos` near the
+//!   toggles); every remaining `acos` goes through [`guarded_acos`], which clamps only
+//!   rounding ([`ACOS_ROUNDING_TOLERANCE`]).
+//! - Source defects found while checking (also in `data/validation/thesis-defects.md`):
+//!   eq. 3.3.3 has the sign of its ṡ term reversed ((ω12 - ω13) must be (ω13 - ω12)),
+//!   and the spreadsheet's α12 column (and the a_A, a_D columns built on it) follows the
+//!   misprint; eq. 3.3.2's last form writes tan where cot is meant; "tanλ = 1/2πr" is
+//!   l/(2πr); θD = atan2(x_D; y_D) uses Excel's argument order.
+//!
+//! # Limitations
+//!
+//! - Only the circular-arc track with screw jack is modelled in full; a general planar
+//!   mechanism model (bodies, joints, Assur groups, Newton fallback) is not built yet.
+//! - Quasi-static: flap inertia is neglected (the thesis shows accelerations < 0.1 % g).
+//! - Joint friction is neglected except in the screw thread.
+//! - The assembly branch is the thesis's (θ12 in [0, π], A counter-clockwise of B0).
+//!
+//! # Pitfalls
+//!
+//! - Thesis Table 3 landing "min/max" pairs are column-wise extremes, not one pose.
+//! - G12G and G12F are signed radial reactions along θG, θF; negative values mean the
+//!   reaction points towards the hinge.
+//! - `sweep` never returns NaN: it stops at the first failing input and reports it in
+//!   [`Sweep::stopped`].
+
+mod angle;
+mod error;
+mod kinetostatics;
+pub mod landing_gear;
+mod screw_jack;
+mod slider_crank;
+mod sweep;
+mod track_pose;
+mod track_spec;
+mod track_synthesis;
+
+pub use angle::{
+    four_times_triangle_area, guarded_acos, ACOS_ROUNDING_TOLERANCE, DEFAULT_TOGGLE_TOLERANCE_RAD,
+};
+pub use error::{Error, Result};
+pub use kinetostatics::{ExternalMoment, Forces, LoadCase};
+pub use screw_jack::{ScrewJack, ScrewTorques};
+pub use slider_crank::{InvertedSliderCrank, SliderCrankState};
+pub use sweep::{JointReactions, Sweep, SweepSample, SweepStop};
+pub use track_pose::{PointKinematics, Pose, PoseDiagnostics};
+pub use track_spec::CircularArcTrackSpec;
+pub use track_synthesis::{CircularArcTrack, SynthesisWarning, TrackSynthesis};

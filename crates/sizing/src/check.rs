@@ -7,7 +7,11 @@ pub(crate) fn positive(field: impl Into<String>, value: f64) -> Result<f64> {
     if value.is_finite() && value > 0.0 {
         Ok(value)
     } else {
-        Err(Error::OutOfRange { field: field.into(), value, allowed: "(0, inf)" })
+        Err(Error::OutOfRange {
+            field: field.into(),
+            value,
+            allowed: "(0, inf)",
+        })
     }
 }
 
@@ -16,7 +20,11 @@ pub(crate) fn non_negative(field: impl Into<String>, value: f64) -> Result<f64> 
     if value.is_finite() && value >= 0.0 {
         Ok(value)
     } else {
-        Err(Error::OutOfRange { field: field.into(), value, allowed: "[0, inf)" })
+        Err(Error::OutOfRange {
+            field: field.into(),
+            value,
+            allowed: "[0, inf)",
+        })
     }
 }
 
@@ -25,7 +33,11 @@ pub(crate) fn finite(field: impl Into<String>, value: f64) -> Result<f64> {
     if value.is_finite() {
         Ok(value)
     } else {
-        Err(Error::OutOfRange { field: field.into(), value, allowed: "finite" })
+        Err(Error::OutOfRange {
+            field: field.into(),
+            value,
+            allowed: "finite",
+        })
     }
 }
 
@@ -34,6 +46,9 @@ pub(crate) fn efficiency(field: impl Into<String>, value: f64) -> Result<f64> {
     if value.is_finite() && value > 0.0 && value <= 1.0 {
         Ok(value)
     } else {
-        Err(Error::EfficiencyOutOfRange { field: field.into(), value })
+        Err(Error::EfficiencyOutOfRange {
+            field: field.into(),
+            value,
+        })
     }
 }

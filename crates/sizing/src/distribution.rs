@@ -61,25 +61,45 @@ pub fn distribute_to_stations(
 ) -> Result<Vec<StationLoad>> {
     let n = station_positions_m.len();
     if n < 2 {
-        return Err(Error::TooFewStations { required: 2, found: n });
+        return Err(Error::TooFewStations {
+            required: 2,
+            found: n,
+        });
     }
     for (index, &y) in station_positions_m.iter().enumerate() {
         finite(format!("station_positions_m[{index}]"), y)?;
         if index > 0 && y <= station_positions_m[index - 1] {
-            return Err(Error::NotIncreasing { what: "station positions", index, value: y });
+            return Err(Error::NotIncreasing {
+                what: "station positions",
+                index,
+                value: y,
+            });
         }
     }
     let mut stations: Vec<StationLoad> = station_positions_m
         .iter()
-        .map(|&y| StationLoad { span_position_m: y, normal_force_n: 0.0, moment_about_hinge_nm: 0.0 })
+        .map(|&y| StationLoad {
+            span_position_m: y,
+            normal_force_n: 0.0,
+            moment_about_hinge_nm: 0.0,
+        })
         .collect();
     for (i, e) in elements.iter().enumerate() {
         let y = finite(format!("elements[{i}].span_position_m"), e.span_position_m)?;
         finite(format!("elements[{i}].normal_force_n"), e.normal_force_n)?;
-        finite(format!("elements[{i}].chordwise_position_m"), e.chordwise_position_m)?;
-        finite(format!("elements[{i}].pitching_moment_nm"), e.pitching_moment_nm)?;
+        finite(
+            format!("elements[{i}].chordwise_position_m"),
+            e.chordwise_position_m,
+        )?;
+        finite(
+            format!("elements[{i}].pitching_moment_nm"),
+            e.pitching_moment_nm,
+        )?;
         // Segment [k, k+1] holding y; overhangs use the end segments.
-        let k = station_positions_m.partition_point(|&s| s <= y).clamp(1, n - 1) - 1;
+        let k = station_positions_m
+            .partition_point(|&s| s <= y)
+            .clamp(1, n - 1)
+            - 1;
         let (y0, y1) = (station_positions_m[k], station_positions_m[k + 1]);
         let inner_share = (y1 - y) / (y1 - y0);
         let outer_share = 1.0 - inner_share;
@@ -118,7 +138,10 @@ pub fn attachment_loads(
     finite("forward_position_m", forward_position_m)?;
     let spacing_m = positive("attachment_spacing_m", aft_position_m - forward_position_m)?;
     let forward_n = (normal_force_n * (aft_position_m - load_position_m) + moment_nm) / spacing_m;
-    Ok(AttachmentLoads { forward_n, aft_n: normal_force_n - forward_n })
+    Ok(AttachmentLoads {
+        forward_n,
+        aft_n: normal_force_n - forward_n,
+    })
 }
 
 /// Attachment loads of a station whose aft attachment lies `attachment_spacing_m` (l)

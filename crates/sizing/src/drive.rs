@@ -76,7 +76,9 @@ pub fn deployment_work_j(motor_angles_rad: &[f64], motor_torques_nm: &[f64]) -> 
         });
     }
     if motor_angles_rad.is_empty() {
-        return Err(Error::Empty { what: "motor torque history" });
+        return Err(Error::Empty {
+            what: "motor torque history",
+        });
     }
     let mut work = 0.0;
     for i in 0..motor_angles_rad.len() {

@@ -29,7 +29,9 @@ impl NormalForceTable {
             });
         }
         if deflections_rad.len() < 2 {
-            return Err(Error::TableTooShort { rows: deflections_rad.len() });
+            return Err(Error::TableTooShort {
+                rows: deflections_rad.len(),
+            });
         }
         for (row, (&d, &c)) in deflections_rad.iter().zip(&coefficients).enumerate() {
             finite(format!("normal_force_table[{row}].deflection_rad"), d)?;
@@ -38,7 +40,10 @@ impl NormalForceTable {
                 return Err(Error::TableNotIncreasing { row });
             }
         }
-        Ok(Self { deflections_rad, coefficients })
+        Ok(Self {
+            deflections_rad,
+            coefficients,
+        })
     }
 
     /// C_N at the given deflection (rad), by linear interpolation.
@@ -49,9 +54,15 @@ impl NormalForceTable {
         let d = &self.deflections_rad;
         let (min_rad, max_rad) = (d[0], d[d.len() - 1]);
         if !(deflection_rad >= min_rad && deflection_rad <= max_rad) {
-            return Err(Error::DeflectionOutsideTable { deflection_rad, min_rad, max_rad });
+            return Err(Error::DeflectionOutsideTable {
+                deflection_rad,
+                min_rad,
+                max_rad,
+            });
         }
-        let upper = d.partition_point(|&x| x < deflection_rad).clamp(1, d.len() - 1);
+        let upper = d
+            .partition_point(|&x| x < deflection_rad)
+            .clamp(1, d.len() - 1);
         let (x0, x1) = (d[upper - 1], d[upper]);
         let (y0, y1) = (self.coefficients[upper - 1], self.coefficients[upper]);
         Ok(y0 + (y1 - y0) * (deflection_rad - x0) / (x1 - x0))
@@ -70,7 +81,10 @@ pub struct LoadCase {
 impl Default for LoadCase {
     /// n = 1, safety factor 1.5 (CS-25.303).
     fn default() -> Self {
-        Self { load_factor: 1.0, safety_factor: CS25_SAFETY_FACTOR }
+        Self {
+            load_factor: 1.0,
+            safety_factor: CS25_SAFETY_FACTOR,
+        }
     }
 }
 
@@ -81,7 +95,10 @@ impl LoadCase {
     /// The `003_...` section 4.1 sizing case: flaps fully deployed at the placard speed
     /// V_F with load factor 2.0 (CS-25.345), safety factor 1.5.
     pub fn cs25_flaps_extended() -> Self {
-        Self { load_factor: 2.0, safety_factor: CS25_SAFETY_FACTOR }
+        Self {
+            load_factor: 2.0,
+            safety_factor: CS25_SAFETY_FACTOR,
+        }
     }
 
     /// Checked constructor.
@@ -89,7 +106,10 @@ impl LoadCase {
     /// # Errors
     /// [`Error::OutOfRange`] for a load factor not in (0, inf) or a safety factor below 1.
     pub fn try_new(load_factor: f64, safety_factor: f64) -> Result<Self> {
-        let case = Self { load_factor, safety_factor };
+        let case = Self {
+            load_factor,
+            safety_factor,
+        };
         case.validate()?;
         Ok(case)
     }
@@ -185,11 +205,21 @@ pub fn element_loads(
         .enumerate()
         .map(|(i, e)| {
             finite(format!("elements[{i}].span_start_m"), e.span_start_m)?;
-            let span_m = positive(format!("elements[{i}].span_m"), e.span_end_m - e.span_start_m)?;
+            let span_m = positive(
+                format!("elements[{i}].span_m"),
+                e.span_end_m - e.span_start_m,
+            )?;
             positive(format!("elements[{i}].chord_m"), e.chord_m)?;
-            finite(format!("elements[{i}].quarter_chord_aft_of_hinge_m"), e.quarter_chord_aft_of_hinge_m)?;
-            finite(format!("elements[{i}].moment_coefficient"), e.moment_coefficient)?;
-            let normal = element_normal_force_n(coefficient, e.chord_m, span_m, dynamic_pressure_pa);
+            finite(
+                format!("elements[{i}].quarter_chord_aft_of_hinge_m"),
+                e.quarter_chord_aft_of_hinge_m,
+            )?;
+            finite(
+                format!("elements[{i}].moment_coefficient"),
+                e.moment_coefficient,
+            )?;
+            let normal =
+                element_normal_force_n(coefficient, e.chord_m, span_m, dynamic_pressure_pa);
             let moment = e.moment_coefficient * dynamic_pressure_pa * e.chord_m.powi(2) * span_m;
             Ok(ElementLoad {
                 span_position_m: 0.5 * (e.span_start_m + e.span_end_m),
@@ -208,7 +238,8 @@ mod tests {
     #[test]
     fn interpolation_hits_rows_and_midpoints() {
         let t = NormalForceTable::try_new(vec![0.0, 0.2, 0.6], vec![0.1, 0.5, 0.9]).unwrap();
-        assert_eq!(t.coefficient_at(0.2).unwrap(), 0.5);
+        assert!((t.coefficient_at(0.2).unwrap() - 0.5).abs() < 1e-15);
+        assert_eq!(t.coefficient_at(0.0).unwrap(), 0.1);
         assert!((t.coefficient_at(0.4).unwrap() - 0.7).abs() < 1e-15);
         assert!((t.coefficient_at(0.6).unwrap() - 0.9).abs() < 1e-15);
         assert!(t.coefficient_at(0.7).is_err());

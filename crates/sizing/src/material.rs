@@ -54,7 +54,11 @@ impl Material {
     pub fn validate(&self) -> Result<()> {
         let fields = [
             ("density_kg_m3", self.density_kg_m3, "(0, inf) kg/m^3"),
-            ("allowable_tensile_pa", self.allowable_tensile_pa, "(0, inf) Pa"),
+            (
+                "allowable_tensile_pa",
+                self.allowable_tensile_pa,
+                "(0, inf) Pa",
+            ),
             ("allowable_shear_pa", self.allowable_shear_pa, "(0, inf) Pa"),
             ("youngs_modulus_pa", self.youngs_modulus_pa, "(0, inf) Pa"),
         ];
@@ -127,6 +131,12 @@ mod tests {
     #[test]
     fn nan_modulus_is_rejected() {
         let e = Material::try_new("x", 1.0, 1.0, 1.0, f64::NAN).unwrap_err();
-        assert!(matches!(e, Error::InvalidMaterial { field: "youngs_modulus_pa", .. }));
+        assert!(matches!(
+            e,
+            Error::InvalidMaterial {
+                field: "youngs_modulus_pa",
+                ..
+            }
+        ));
     }
 }

@@ -100,33 +100,63 @@ pub struct RodSizing {
 
 /// Outer radius carrying axial force P at stress sigma: A = P / sigma,
 /// r = sqrt(P / (pi (1 - k^2) sigma)), m (N, Pa).
-pub fn strength_radius_m(force_n: f64, allowable_pa: f64, shape: SectionShape) -> f64 {
-    (force_n / (PI * shape.area_factor() * allowable_pa)).sqrt()
+///
+/// # Errors
+/// [`Error::OutOfRange`] for a negative force, a non-positive stress or a bad shape.
+pub fn strength_radius_m(force_n: f64, allowable_pa: f64, shape: SectionShape) -> Result<f64> {
+    non_negative("force_n", force_n)?;
+    positive("allowable_pa", allowable_pa)?;
+    shape.validate()?;
+    Ok((force_n / (PI * shape.area_factor() * allowable_pa)).sqrt())
 }
 
 /// Euler critical load P_cr = pi^2 E I / (K L)^2, N (Pa, m^4, m).
+///
+/// # Errors
+/// [`Error::OutOfRange`] for E, K or L not positive, or I negative.
 pub fn euler_critical_load_n(
     youngs_modulus_pa: f64,
     second_moment_m4: f64,
     end_fixity_factor: f64,
     length_m: f64,
-) -> f64 {
-    PI * PI * youngs_modulus_pa * second_moment_m4 / (end_fixity_factor * length_m).powi(2)
+) -> Result<f64> {
+    positive("youngs_modulus_pa", youngs_modulus_pa)?;
+    non_negative("second_moment_m4", second_moment_m4)?;
+    positive("end_fixity_factor", end_fixity_factor)?;
+    positive("length_m", length_m)?;
+    Ok(PI * PI * youngs_modulus_pa * second_moment_m4 / (end_fixity_factor * length_m).powi(2))
 }
 
 /// Outer radius at which P_cr equals P: I = P (K L)^2 / (pi^2 E) with
 /// I = pi r^4 (1 - k^4) / 4, so r = (4 P (K L)^2 / (pi^3 E (1 - k^4)))^(1/4), m.
+///
+/// # Errors
+/// [`Error::OutOfRange`] for a negative force, L, K or E not positive, or a bad shape.
+///
+/// # Examples
+/// ```
+/// use flapwright_sizing::{buckling_radius_m, SectionShape};
+/// // 10 kN over 1 m, pinned-pinned, E = 200 GPa: r = 8.96 mm.
+/// let r = buckling_radius_m(1e4, 1.0, 1.0, 200e9, SectionShape::Solid)?;
+/// assert!((r - 8.961_796_839e-3).abs() < 1e-12);
+/// # Ok::<(), flapwright_sizing::Error>(())
+/// ```
 pub fn buckling_radius_m(
     force_n: f64,
     length_m: f64,
     end_fixity_factor: f64,
     youngs_modulus_pa: f64,
     shape: SectionShape,
-) -> f64 {
+) -> Result<f64> {
+    non_negative("force_n", force_n)?;
+    positive("length_m", length_m)?;
+    positive("end_fixity_factor", end_fixity_factor)?;
+    positive("youngs_modulus_pa", youngs_modulus_pa)?;
+    shape.validate()?;
     let effective_length_m = end_fixity_factor * length_m;
-    (4.0 * force_n * effective_length_m.powi(2)
+    Ok((4.0 * force_n * effective_length_m.powi(2)
         / (PI.powi(3) * youngs_modulus_pa * shape.inertia_factor()))
-    .powf(0.25)
+    .powf(0.25))
 }
 
 /// Largest tension and compression (magnitudes, N) of an axial-force history (N,
@@ -136,7 +166,9 @@ pub fn buckling_radius_m(
 /// [`Error::Empty`] for no samples, [`Error::OutOfRange`] for a non-finite sample.
 pub fn axial_envelope_n(axial_forces_n: &[f64]) -> Result<(f64, f64)> {
     if axial_forces_n.is_empty() {
-        return Err(Error::Empty { what: "axial force history" });
+        return Err(Error::Empty {
+            what: "axial force history",
+        });
     }
     let mut envelope = (0.0_f64, 0.0_f64);
     for (i, &f) in axial_forces_n.iter().enumerate() {
@@ -166,9 +198,9 @@ pub fn size_rod(rod: &RodInput, material: &Material) -> Result<RodSizing> {
     }
     let e = material.youngs_modulus_pa;
     let sigma = material.allowable_tensile_pa;
-    let tension_radius_m = strength_radius_m(tension_n, sigma, rod.shape);
-    let compression_radius_m = strength_radius_m(compression_n, sigma, rod.shape);
-    let buckling_radius_m = buckling_radius_m(compression_n, length_m, fixity, e, rod.shape);
+    let tension_radius_m = strength_radius_m(tension_n, sigma, rod.shape)?;
+    let compression_radius_m = strength_radius_m(compression_n, sigma, rod.shape)?;
+    let buckling_radius_m = buckling_radius_m(compression_n, length_m, fixity, e, rod.shape)?;
     let mut governing = GoverningCase::Unloaded;
     let mut radius_m = 0.0;
     for (case, r) in [
@@ -227,7 +259,7 @@ pub fn size_rod(rod: &RodInput, material: &Material) -> Result<RodSizing> {
         tension_radius_m,
         compression_radius_m,
         buckling_radius_m,
-        critical_load_n: euler_critical_load_n(e, second_moment, fixity, length_m),
+        critical_load_n: euler_critical_load_n(e, second_moment, fixity, length_m)?,
         mass_kg: rod.shape.area_m2(radius_m) * length_m * material.density_kg_m3,
         warnings,
     })

@@ -134,7 +134,11 @@ pub fn motor_torque_nm(
 /// # Errors
 /// As [`motor_torque_nm`].
 pub fn size_screw_jack(input: &ScrewJackInput, safety_factor: f64) -> Result<ScrewJackSizing> {
-    let motor = motor_torque_nm(input.max_raise_torque_nm, input.max_lower_torque_nm, safety_factor)?;
+    let motor = motor_torque_nm(
+        input.max_raise_torque_nm,
+        input.max_lower_torque_nm,
+        safety_factor,
+    )?;
     let self_locking = input.max_lower_torque_nm > 0.0;
     let mut warnings = Vec::new();
     if !self_locking {
@@ -163,12 +167,36 @@ mod tests {
     /// Eq 3.6.9/3.6.10 against the tan-form eqs 3.6.4/3.6.8 they were rewritten from.
     #[test]
     fn lead_form_matches_tan_form() {
-        let t = ScrewThread { mean_radius_m: 0.016, lead_m: 0.008, friction_coefficient: 0.1 };
+        let t = ScrewThread {
+            mean_radius_m: 0.016,
+            lead_m: 0.008,
+            friction_coefficient: 0.1,
+        };
         let (r, f, tan) = (0.016, 0.1, t.lead_angle_rad().tan());
         let raise = r * (f + tan) / (1.0 - f * tan) * 1000.0;
         let lower = r * (f - tan) / (1.0 + f * tan) * 1000.0;
         assert!((t.raise_torque_nm(1000.0).unwrap() - raise).abs() < 1e-12);
         assert!((t.lower_torque_nm(1000.0).unwrap() - lower).abs() < 1e-12);
         assert!(t.is_self_locking());
+    }
+
+    /// Virtual work: without friction one turn of torque T_R lifts L by one lead,
+    /// 2 pi T_R = L l, and lowering returns it, T_L = -T_R.
+    #[test]
+    fn frictionless_thread_conserves_work() {
+        let t = ScrewThread {
+            mean_radius_m: 0.016,
+            lead_m: 0.008,
+            friction_coefficient: 0.0,
+        };
+        let raise = t.raise_torque_nm(1000.0).unwrap();
+        assert!((2.0 * PI * raise - 1000.0 * 0.008).abs() < 1e-12);
+        assert!((t.lower_torque_nm(1000.0).unwrap() + raise).abs() < 1e-12);
+        // With friction the efficiency L l / (2 pi T_R) drops below 1.
+        let t = ScrewThread {
+            friction_coefficient: 0.1,
+            ..t
+        };
+        assert!(1000.0 * 0.008 / (2.0 * PI * t.raise_torque_nm(1000.0).unwrap()) < 1.0);
     }
 }

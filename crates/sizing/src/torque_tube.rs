@@ -57,7 +57,10 @@ pub fn ideal_motor_torque_nm(drive_torques_nm: &[f64]) -> f64 {
 /// # Errors
 /// [`crate::Error::EfficiencyOutOfRange`] for eta outside (0, 1];
 /// [`crate::Error::OutOfRange`] for a negative or non-finite torque.
-pub fn cumulative_torques_nm(drive_torques_nm: &[f64], gearbox_efficiency: f64) -> Result<Vec<f64>> {
+pub fn cumulative_torques_nm(
+    drive_torques_nm: &[f64],
+    gearbox_efficiency: f64,
+) -> Result<Vec<f64>> {
     let eta = efficiency("gearbox_efficiency", gearbox_efficiency)?;
     let mut running = 0.0;
     drive_torques_nm
@@ -73,8 +76,27 @@ pub fn cumulative_torques_nm(drive_torques_nm: &[f64], gearbox_efficiency: f64) 
 /// Outer radius at which torque T gives the allowable shear stress tau at the surface:
 /// tau = T r / J, J = pi r^4 (1 - k^4) / 2, so r = (2 T / (pi tau (1 - k^4)))^(1/3), m
 /// (`003_...` eq 6 for k = 0). T in N m, tau in Pa.
-pub fn torsion_radius_m(torque_nm: f64, allowable_shear_pa: f64, shape: SectionShape) -> f64 {
-    (2.0 * torque_nm / (PI * allowable_shear_pa * shape.inertia_factor())).cbrt()
+///
+/// # Errors
+/// [`crate::Error::OutOfRange`] for a negative torque, a non-positive stress or a bad shape.
+///
+/// # Examples
+/// ```
+/// use flapwright_sizing::{torsion_radius_m, SectionShape};
+/// // 100 N m at 200 MPa: r = (2 x 100 / (pi x 2e8))^(1/3) = 6.83 mm.
+/// let r = torsion_radius_m(100.0, 200e6, SectionShape::Solid)?;
+/// assert!((r - 6.827_840_633e-3).abs() < 1e-12);
+/// # Ok::<(), flapwright_sizing::Error>(())
+/// ```
+pub fn torsion_radius_m(
+    torque_nm: f64,
+    allowable_shear_pa: f64,
+    shape: SectionShape,
+) -> Result<f64> {
+    non_negative("torque_nm", torque_nm)?;
+    positive("allowable_shear_pa", allowable_shear_pa)?;
+    shape.validate()?;
+    Ok((2.0 * torque_nm / (PI * allowable_shear_pa * shape.inertia_factor())).cbrt())
 }
 
 /// Sizes the sequence of tubes (far end first) by `003_...` eq 7, solid or hollow.
@@ -98,7 +120,7 @@ pub fn size_torque_tubes(
         .enumerate()
         .map(|(i, (tube, torque_carried_nm))| {
             let length_m = positive(format!("tubes[{i}].length_m"), tube.length_m)?;
-            let radius_m = torsion_radius_m(torque_carried_nm, material.allowable_shear_pa, shape);
+            let radius_m = torsion_radius_m(torque_carried_nm, material.allowable_shear_pa, shape)?;
             let mut warnings = Vec::new();
             if let Some(limit) = tube.max_outer_radius_m {
                 positive(format!("tubes[{i}].max_outer_radius_m"), limit)?;

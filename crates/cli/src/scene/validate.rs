@@ -16,7 +16,12 @@ pub struct Problem {
 
 impl fmt::Display for Problem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.path, self.message)
+        // `path = value: rule` reads like the file; other messages follow a colon.
+        if self.message.starts_with('=') {
+            write!(f, "{} {}", self.path, self.message)
+        } else {
+            write!(f, "{}: {}", self.path, self.message)
+        }
     }
 }
 
@@ -120,10 +125,20 @@ impl Checker<'_> {
             };
         if !ok {
             let (lo, hi) = if open { ("(", ")") } else { ("[", "]") };
-            let bound = |b: f64| if b.is_infinite() { "inf".to_string() } else { format!("{b}") };
+            let bound = |b: f64| {
+                if b.is_infinite() {
+                    "inf".to_string()
+                } else {
+                    format!("{b}")
+                }
+            };
             self.fail(
                 path,
-                format!("= {value}: must be in {lo}{}, {}{hi}", bound(min), bound(max)),
+                format!(
+                    "= {value}: must be in {lo}{}, {}{hi}",
+                    bound(min),
+                    bound(max)
+                ),
             );
         }
         ok
@@ -140,7 +155,10 @@ impl Checker<'_> {
     fn finite_point(&mut self, path: &str, point: &[f64]) -> bool {
         let ok = point.iter().all(|v| v.is_finite());
         if !ok {
-            self.fail(path, format!("= {point:?}: every coordinate must be finite"));
+            self.fail(
+                path,
+                format!("= {point:?}: every coordinate must be finite"),
+            );
         }
         ok
     }
@@ -199,13 +217,22 @@ impl Checker<'_> {
         if wing.sections.len() < 2 {
             self.fail(
                 "wing.sections",
-                format!("has {} section(s): a wing needs at least 2", wing.sections.len()),
+                format!(
+                    "has {} section(s): a wing needs at least 2",
+                    wing.sections.len()
+                ),
             );
         }
         let mut previous_y: Option<f64> = None;
         for (i, section) in wing.sections.iter().enumerate() {
             let path = format!("wing.sections[{i}]");
-            if self.in_range(&format!("{path}.y_m"), section.y_m, f64::NEG_INFINITY, f64::INFINITY, true) {
+            if self.in_range(
+                &format!("{path}.y_m"),
+                section.y_m,
+                f64::NEG_INFINITY,
+                f64::INFINITY,
+                true,
+            ) {
                 if let Some(prev) = previous_y {
                     if section.y_m <= prev {
                         self.fail(
@@ -220,12 +247,21 @@ impl Checker<'_> {
                 previous_y = Some(section.y_m);
             }
             self.positive(&format!("{path}.chord_m"), section.chord_m);
-            self.in_range(&format!("{path}.twist_deg"), section.twist_deg, -45.0, 45.0, false);
+            self.in_range(
+                &format!("{path}.twist_deg"),
+                section.twist_deg,
+                -45.0,
+                45.0,
+                false,
+            );
             self.airfoil(&format!("{path}.airfoil"), &section.airfoil);
         }
         if let (Some(first), Some(last)) = (wing.sections.first(), wing.sections.last()) {
             if wing.sections.len() >= 2 && first.y_m.is_finite() && last.y_m == first.y_m {
-                self.fail("wing.sections", "zero span: first and last sections have the same y_m");
+                self.fail(
+                    "wing.sections",
+                    "zero span: first and last sections have the same y_m",
+                );
             }
         }
         let expected_panels = wing.sections.len().saturating_sub(1);
@@ -239,7 +275,13 @@ impl Checker<'_> {
             );
         }
         for (i, panel) in wing.panels.iter().enumerate() {
-            self.in_range(&format!("wing.panels[{i}].sweep_deg"), panel.sweep_deg, -80.0, 80.0, true);
+            self.in_range(
+                &format!("wing.panels[{i}].sweep_deg"),
+                panel.sweep_deg,
+                -80.0,
+                80.0,
+                true,
+            );
             self.in_range(
                 &format!("wing.panels[{i}].dihedral_deg"),
                 panel.dihedral_deg,
@@ -252,9 +294,20 @@ impl Checker<'_> {
 
     fn flap(&mut self, path: &str, flap: &FlapScene, wing: &WingScene) {
         let (root, tip) = span_of(wing);
-        let inboard_ok = self.in_range(&format!("{path}.y_inboard_m"), flap.y_inboard_m, root, tip, false);
-        let outboard_ok =
-            self.in_range(&format!("{path}.y_outboard_m"), flap.y_outboard_m, root, tip, false);
+        let inboard_ok = self.in_range(
+            &format!("{path}.y_inboard_m"),
+            flap.y_inboard_m,
+            root,
+            tip,
+            false,
+        );
+        let outboard_ok = self.in_range(
+            &format!("{path}.y_outboard_m"),
+            flap.y_outboard_m,
+            root,
+            tip,
+            false,
+        );
         if inboard_ok && outboard_ok && flap.y_outboard_m <= flap.y_inboard_m {
             self.fail(
                 format!("{path}.y_outboard_m"),
@@ -316,8 +369,20 @@ impl Checker<'_> {
             ),
         }
         let settings = &flap.settings;
-        let takeoff_ok = self.in_range(&format!("{path}.settings.takeoff_deg"), settings.takeoff_deg, 0.0, 90.0, false);
-        let landing_ok = self.in_range(&format!("{path}.settings.landing_deg"), settings.landing_deg, 0.0, 90.0, true);
+        let takeoff_ok = self.in_range(
+            &format!("{path}.settings.takeoff_deg"),
+            settings.takeoff_deg,
+            0.0,
+            90.0,
+            false,
+        );
+        let landing_ok = self.in_range(
+            &format!("{path}.settings.landing_deg"),
+            settings.landing_deg,
+            0.0,
+            90.0,
+            true,
+        );
         if takeoff_ok && landing_ok && settings.takeoff_deg > settings.landing_deg {
             self.fail(
                 format!("{path}.settings.takeoff_deg"),
@@ -333,19 +398,38 @@ impl Checker<'_> {
         let (root, tip) = span_of(wing);
         for (i, spar) in scene.structure.spars.iter().enumerate() {
             let path = format!("structure.spars[{i}]");
-            let fraction_ok = self.in_range(&format!("{path}.chord_fraction"), spar.chord_fraction, 0.0, 1.0, true);
+            let fraction_ok = self.in_range(
+                &format!("{path}.chord_fraction"),
+                spar.chord_fraction,
+                0.0,
+                1.0,
+                true,
+            );
             self.positive(&format!("{path}.thickness_m"), spar.thickness_m);
-            let start_ok = self.in_range(&format!("{path}.y_start_m"), spar.y_start_m, root, tip, false);
+            let start_ok = self.in_range(
+                &format!("{path}.y_start_m"),
+                spar.y_start_m,
+                root,
+                tip,
+                false,
+            );
             let end_ok = self.in_range(&format!("{path}.y_end_m"), spar.y_end_m, root, tip, false);
             if start_ok && end_ok && spar.y_end_m <= spar.y_start_m {
-                self.fail(format!("{path}.y_end_m"), format!("= {}: must be greater than y_start_m", spar.y_end_m));
+                self.fail(
+                    format!("{path}.y_end_m"),
+                    format!("= {}: must be greater than y_start_m", spar.y_end_m),
+                );
             }
             if !(fraction_ok && start_ok && end_ok) {
                 continue;
             }
             for flap in &scene.flap {
-                let overlaps = spar.y_start_m < flap.y_outboard_m && spar.y_end_m > flap.y_inboard_m;
-                let flap_front = 1.0 - flap.chord_fraction_inboard.max(flap.chord_fraction_outboard);
+                let overlaps =
+                    spar.y_start_m < flap.y_outboard_m && spar.y_end_m > flap.y_inboard_m;
+                let flap_front = 1.0
+                    - flap
+                        .chord_fraction_inboard
+                        .max(flap.chord_fraction_outboard);
                 if overlaps && spar.chord_fraction >= flap_front {
                     self.fail(
                         format!("{path}.chord_fraction"),
@@ -357,12 +441,18 @@ impl Checker<'_> {
                 }
             }
         }
-        self.unique_names("structure.spars", scene.structure.spars.iter().map(|s| s.name.as_str()));
+        self.unique_names(
+            "structure.spars",
+            scene.structure.spars.iter().map(|s| s.name.as_str()),
+        );
         if let Some(tube) = &scene.structure.torque_tube {
             let path = "structure.torque_tube";
             self.positive(&format!("{path}.radius_m"), tube.radius_m);
             if tube.path_m.len() < 2 {
-                self.fail(format!("{path}.path_m"), format!("has {} point(s): needs at least 2", tube.path_m.len()));
+                self.fail(
+                    format!("{path}.path_m"),
+                    format!("has {} point(s): needs at least 2", tube.path_m.len()),
+                );
             }
             for (i, point) in tube.path_m.iter().enumerate() {
                 self.finite_point(&format!("{path}.path_m[{i}]"), point);
@@ -392,23 +482,43 @@ impl Checker<'_> {
                         format!("{path}.flap"),
                         format!(
                             "= \"{name}\": no flap of that name (flaps: {})",
-                            scene.flap.iter().map(|f| f.name.as_str()).collect::<Vec<_>>().join(", ")
+                            scene
+                                .flap
+                                .iter()
+                                .map(|f| f.name.as_str())
+                                .collect::<Vec<_>>()
+                                .join(", ")
                         ),
                     ),
                     Some(flap) => {
                         let span = flap.y_outboard_m - flap.y_inboard_m;
                         match station.axis_offset_m {
-                            None => self.fail(format!("{path}.axis_offset_m"), "is required for a station on a flap"),
+                            None => self.fail(
+                                format!("{path}.axis_offset_m"),
+                                "is required for a station on a flap",
+                            ),
                             Some(offset) => {
                                 if span.is_finite() && span > 0.0 {
-                                    self.in_range(&format!("{path}.axis_offset_m"), offset, 0.0, 2.0 * span, false);
+                                    self.in_range(
+                                        &format!("{path}.axis_offset_m"),
+                                        offset,
+                                        0.0,
+                                        2.0 * span,
+                                        false,
+                                    );
                                 }
                             }
                         }
                     }
                 },
-                (None, Some(_)) => self.fail(format!("{path}.flap"), "is required when the scene has a wing"),
-                (Some(_), None) => self.fail(format!("{path}.flap"), "a 2D-only scene (no [wing]) has no flaps to name"),
+                (None, Some(_)) => self.fail(
+                    format!("{path}.flap"),
+                    "is required when the scene has a wing",
+                ),
+                (Some(_), None) => self.fail(
+                    format!("{path}.flap"),
+                    "a 2D-only scene (no [wing]) has no flaps to name",
+                ),
                 (None, None) => {}
             }
             let MechanismScene::CircularArcTrack(m) = &station.mechanism;
@@ -428,12 +538,45 @@ impl Checker<'_> {
             if let Some(a3) = m.screw_length_m {
                 self.positive(&format!("{mpath}.screw_length_m"), a3);
             }
-            self.in_range(&format!("{mpath}.base_angle_deg"), m.base_angle_deg, -360.0, 360.0, false);
-            self.in_range(&format!("{mpath}.slot_start_angle_deg"), m.slot_start_angle_deg, -360.0, 360.0, false);
-            self.in_range(&format!("{mpath}.slot_offset_angle_deg"), m.slot_offset_angle_deg, -360.0, 360.0, false);
-            self.in_range(&format!("{mpath}.rotation_range_deg"), m.rotation_range_deg, 0.0, 180.0, true);
-            self.in_range(&format!("{mpath}.screw_friction"), m.screw_friction, 0.0, 1.0, false);
-            self.finite_point(&format!("{mpath}.flap_centre_of_mass_m"), &m.flap_centre_of_mass_m);
+            self.in_range(
+                &format!("{mpath}.base_angle_deg"),
+                m.base_angle_deg,
+                -360.0,
+                360.0,
+                false,
+            );
+            self.in_range(
+                &format!("{mpath}.slot_start_angle_deg"),
+                m.slot_start_angle_deg,
+                -360.0,
+                360.0,
+                false,
+            );
+            self.in_range(
+                &format!("{mpath}.slot_offset_angle_deg"),
+                m.slot_offset_angle_deg,
+                -360.0,
+                360.0,
+                false,
+            );
+            self.in_range(
+                &format!("{mpath}.rotation_range_deg"),
+                m.rotation_range_deg,
+                0.0,
+                180.0,
+                true,
+            );
+            self.in_range(
+                &format!("{mpath}.screw_friction"),
+                m.screw_friction,
+                0.0,
+                1.0,
+                false,
+            );
+            self.finite_point(
+                &format!("{mpath}.flap_centre_of_mass_m"),
+                &m.flap_centre_of_mass_m,
+            );
             if m.inner_slot_radius_m.is_finite() && m.inner_slot_radius_m >= m.outer_slot_radius_m {
                 // Thesis section 5.3, red-cell condition 2.
                 self.fail(
@@ -451,10 +594,17 @@ impl Checker<'_> {
         if let Some(factor) = scene.loads.safety_factor {
             self.in_range("loads.safety_factor", factor, 1.0, 10.0, false);
         }
-        self.unique_names("loads.cases", scene.loads.cases.iter().map(|c| c.name.as_str()));
+        self.unique_names(
+            "loads.cases",
+            scene.loads.cases.iter().map(|c| c.name.as_str()),
+        );
         for (i, case) in scene.loads.cases.iter().enumerate() {
             let path = format!("loads.cases[{i}]");
-            match (case.moment_nm, case.moment_stowed_nm, case.moment_deployed_nm) {
+            match (
+                case.moment_nm,
+                case.moment_stowed_nm,
+                case.moment_deployed_nm,
+            ) {
                 (Some(m), None, None) => {
                     self.in_range(&format!("{path}.moment_nm"), m, -1e9, 1e9, false);
                 }

@@ -1,0 +1,191 @@
+//! Trailing-edge flaps: spanwise extent, chord fraction, hinge axis and stowed section.
+//!
+//! Section coordinates here are the wing section's unit-chord (u aft, v up) coordinates
+//! (see [`crate::wing`]). A flap at spanwise position y occupies u >= 1 - c_f(y), with the
+//! flap chord fraction c_f varying linearly from the inboard to the outboard end. The main
+//! wing keeps a closed cove: a straight wall at `u = (flap's foremost u) - COVE_GAP_CHORD_FRACTION`.
+
+use nalgebra::{Point2, Point3, Rotation2, Unit, Vector2, Vector3};
+
+use crate::airfoil::{Airfoil, Surface};
+use crate::error::{require_finite, require_range, Error, Result};
+use crate::wing::Wing;
+
+/// Chordwise gap (fraction of the local wing chord) between the cove wall and the stowed flap.
+pub const COVE_GAP_CHORD_FRACTION: f64 = 0.01;
+/// Spanwise gap (fraction of the local wing chord) between each flap side and the wing.
+pub const SIDE_GAP_CHORD_FRACTION: f64 = 0.005;
+/// Smallest and largest accepted flap chord fraction.
+pub const FLAP_CHORD_FRACTION_RANGE: (f64, f64) = (0.02, 0.8);
+/// Shortest accepted hinge axis as a fraction of the flap span.
+pub const MIN_HINGE_LENGTH_FRACTION: f64 = 1e-3;
+
+/// How the flap rotation (hinge) axis is given.
+#[derive(Debug, Clone, PartialEq)]
+pub enum HingeSpec {
+    /// Two points on the axis, aircraft frame (m), as in the thesis; the outboard one must
+    /// lie further outboard (larger y).
+    Points {
+        /// Inboard point (m).
+        inboard_ac: Point3<f64>,
+        /// Outboard point (m).
+        outboard_ac: Point3<f64>,
+    },
+    /// Through the section point at `chord_fraction` (from the wing leading edge) and
+    /// `depth_below_chord_fraction` below the chord line (both fractions of the local
+    /// chord) at each flap end.
+    ChordFraction {
+        /// Chordwise hinge position u_h (fraction of local chord).
+        chord_fraction: f64,
+        /// Hinge depth below the chord line (fraction of local chord, positive down).
+        depth_below_chord_fraction: f64,
+    },
+}
+
+/// Shape of the flap section.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FlapSectionSpec {
+    /// The wing section aft of u = 1 - c_f (flat front face); the main wing keeps a closed cove.
+    CutOut,
+    /// Its own section (e.g. NACA 63(1)-212 in the thesis, `000_...` Chapter 4), chord =
+    /// c_f times the local wing chord, trailing edges coinciding, chord line pointing at the
+    /// wing mean line at u = 1 - c_f, nested in the cove.
+    OwnSection {
+        /// Flap section, unit chord.
+        airfoil: Airfoil,
+    },
+}
+
+/// Everything that defines one flap.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FlapSpec {
+    /// Name (unique among the flaps).
+    pub name: String,
+    /// Inboard end of the cut-out, y (m).
+    pub y_inboard_m: f64,
+    /// Outboard end of the cut-out, y (m).
+    pub y_outboard_m: f64,
+    /// Flap chord fraction c_f at the inboard end.
+    pub chord_fraction_inboard: f64,
+    /// Flap chord fraction c_f at the outboard end.
+    pub chord_fraction_outboard: f64,
+    /// Rotation axis.
+    pub hinge: HingeSpec,
+    /// Section shape.
+    pub section: FlapSectionSpec,
+}
+
+/// A validated flap on a wing.
+#[derive(Debug, Clone)]
+pub struct Flap {
+    spec: FlapSpec,
+    hinge_point_ac: Point3<f64>,
+    hinge_direction_ac: Unit<Vector3<f64>>,
+}
+
+impl Flap {
+    /// Validates the flap against the wing and places its hinge axis.
+    pub fn try_new(spec: FlapSpec, wing: &Wing) -> Result<Flap> {
+        require_finite("flap y_inboard_m", spec.y_inboard_m)?;
+        require_finite("flap y_outboard_m", spec.y_outboard_m)?;
+        if spec.y_outboard_m <= spec.y_inboard_m {
+            return Err(Error::FlapSpanConflict {
+                flap: spec.name.clone(),
+                other: spec.name.clone(),
+                y_inboard_m: spec.y_inboard_m,
+                y_outboard_m: spec.y_outboard_m,
+            });
+        }
+        wing.locate(spec.y_inboard_m, &format!("flap {:?} inboard end", spec.name))?;
+        wing.locate(spec.y_outboard_m, &format!("flap {:?} outboard end", spec.name))?;
+        let (lo, hi) = FLAP_CHORD_FRACTION_RANGE;
+        require_range("flap chord_fraction_inboard", spec.chord_fraction_inboard, lo, hi)?;
+        require_range("flap chord_fraction_outboard", spec.chord_fraction_outboard, lo, hi)?;
+        let (inboard_ac, outboard_ac) = match &spec.hinge {
+            HingeSpec::Points { inboard_ac, outboard_ac } => {
+                for v in inboard_ac.iter().chain(outboard_ac.iter()) {
+                    require_finite("flap hinge point coordinate (m)", *v)?;
+                }
+                (*inboard_ac, *outboard_ac)
+            }
+            HingeSpec::ChordFraction { chord_fraction, depth_below_chord_fraction } => {
+                require_range("flap hinge chord_fraction", *chord_fraction, -1.0, 2.0)?;
+                require_range("flap hinge depth_below_chord_fraction", *depth_below_chord_fraction, -1.0, 1.0)?;
+                let at = |y: f64| -> Result<Point3<f64>> {
+                    let section = wing.section_at(y)?;
+                    Ok(wing.section_point_ac(&section, Point2::new(*chord_fraction, -depth_below_chord_fraction)))
+                };
+                (at(spec.y_inboard_m)?, at(spec.y_outboard_m)?)
+            }
+        };
+        let axis = outboard_ac - inboard_ac;
+        let span = spec.y_outboard_m - spec.y_inboard_m;
+        if !(axis.norm() > MIN_HINGE_LENGTH_FRACTION * span && axis.y > 0.0) {
+            return Err(Error::DegenerateHingeAxis { flap: spec.name.clone(), length_m: axis.norm(), spanwise_m: axis.y });
+        }
+        Ok(Flap { hinge_point_ac: inboard_ac, hinge_direction_ac: Unit::new_normalize(axis), spec })
+    }
+
+    /// The validated spec.
+    pub fn spec(&self) -> &FlapSpec {
+        &self.spec
+    }
+
+    /// The rotation axis: a point on it (the inboard axis point) and its unit direction,
+    /// pointing outboard, aircraft frame.
+    pub fn hinge_axis_ac(&self) -> (Point3<f64>, Unit<Vector3<f64>>) {
+        (self.hinge_point_ac, self.hinge_direction_ac)
+    }
+
+    /// Flap chord fraction c_f at `y_m` (linear between the ends; clamped outside).
+    pub fn chord_fraction_at(&self, y_m: f64) -> f64 {
+        let s = &self.spec;
+        let t = ((y_m - s.y_inboard_m) / (s.y_outboard_m - s.y_inboard_m)).clamp(0.0, 1.0);
+        s.chord_fraction_inboard + (s.chord_fraction_outboard - s.chord_fraction_inboard) * t
+    }
+
+    /// Spanwise extent of the flap body itself (m): the cut-out less the side gaps.
+    pub fn body_span_m(&self, wing: &Wing) -> Result<(f64, f64)> {
+        let (_, chord_in, _) = wing.planform_at(self.spec.y_inboard_m)?;
+        let (_, chord_out, _) = wing.planform_at(self.spec.y_outboard_m)?;
+        Ok((self.spec.y_inboard_m + SIDE_GAP_CHORD_FRACTION * chord_in, self.spec.y_outboard_m - SIDE_GAP_CHORD_FRACTION * chord_out))
+    }
+
+    /// Stowed flap section outline at `y_m` as a closed polygon in wing-section unit-chord
+    /// coordinates (u aft, v up), from the trailing edge along the upper side to the front
+    /// and back along the lower side. `wing_airfoil` is the local wing section (already
+    /// resampled to `points_per_side`).
+    pub fn stowed_outline(&self, y_m: f64, wing_airfoil: &Airfoil, points_per_side: usize) -> Result<Vec<Point2<f64>>> {
+        let chord_fraction = self.chord_fraction_at(y_m);
+        let front_u = 1.0 - chord_fraction;
+        match &self.spec.section {
+            FlapSectionSpec::CutOut => {
+                let upper = wing_airfoil.surface_line(Surface::Upper);
+                let lower = wing_airfoil.surface_line(Surface::Lower);
+                let front_upper = upper.arc_at_x(front_u).ok_or_else(|| self.outline_error(wing_airfoil))?;
+                let front_lower = lower.arc_at_x(front_u).ok_or_else(|| self.outline_error(wing_airfoil))?;
+                let mut outline: Vec<Point2<f64>> = upper.sample_cosine(front_upper, upper.length(), points_per_side).into_iter().rev().collect();
+                outline.extend(lower.sample_cosine(front_lower, lower.length(), points_per_side));
+                Ok(outline)
+            }
+            FlapSectionSpec::OwnSection { airfoil } => {
+                let flap = airfoil.resampled(points_per_side)?;
+                let trailing_edge = Point2::new(1.0, wing_airfoil.mean_line_y(1.0)?);
+                let front = Point2::new(front_u, wing_airfoil.mean_line_y(front_u)?);
+                let direction: Vector2<f64> = (trailing_edge - front).normalize();
+                let rotation = Rotation2::new(direction.y.atan2(direction.x));
+                // Flap chord runs x_f = 0..1; x_f = 1 sits on the wing trailing edge.
+                Ok(flap.points.iter().map(|p| trailing_edge + rotation * (Vector2::new(p.x - 1.0, p.y) * chord_fraction)).collect())
+            }
+        }
+    }
+
+    fn outline_error(&self, airfoil: &Airfoil) -> Error {
+        Error::BadAirfoil { name: airfoil.name.clone(), reason: "flap cut-out station lies outside the wing section" }
+    }
+}
+
+/// Chord fraction of the cove wall for a stowed flap outline: its foremost u less the gap.
+pub(crate) fn cove_chord_fraction(outline: &[Point2<f64>]) -> f64 {
+    outline.iter().fold(f64::INFINITY, |m, p| m.min(p.x)) - COVE_GAP_CHORD_FRACTION
+}

@@ -1,0 +1,3 @@
+//! File formats written by the geometry crate.
+
+pub mod stl;

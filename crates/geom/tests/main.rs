@@ -1,0 +1,9 @@
+//! Integration tests of flapwright-geom (one binary, a module per topic).
+
+mod collision;
+mod dat;
+mod fixture;
+mod naca;
+mod parts;
+mod volume;
+mod wing;

@@ -1,0 +1,1 @@
+//! Landing-gear method (placeholder, filled below).

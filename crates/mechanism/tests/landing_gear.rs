@@ -1,0 +1,1 @@
+//! Landing-gear method (doc 004) tests: filled with the module.

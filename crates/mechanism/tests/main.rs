@@ -1,0 +1,9 @@
+//! Integration tests of flapwright-mechanism, one module per topic.
+
+mod common;
+mod finite_differences;
+mod landing_gear;
+mod properties;
+mod thesis_appendix_c;
+mod thesis_tables;
+mod toggle;

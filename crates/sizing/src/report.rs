@@ -1,0 +1,88 @@
+//! The `sizing` section of the report (serialised to JSON by the CLI).
+
+use serde::Serialize;
+
+use crate::drive::DriveDemand;
+use crate::rod::RodSizing;
+use crate::screw_jack::ScrewJackSizing;
+use crate::torque_tube::TorqueTubeSizing;
+use crate::warning::SizingWarning;
+use crate::weights::{MassBreakdown, MassItem};
+
+/// Whole-wing totals.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SizingTotals {
+    /// Mass of rods and torque tubes, kg (screw jacks, gearboxes, bearings not modelled).
+    pub mass_kg: f64,
+    /// Peak drive power, W.
+    pub peak_power_w: f64,
+    /// Work per deployment, J.
+    pub work_per_deployment_j: f64,
+}
+
+/// Sizing results: per rod the governing case, radius and mass; per screw jack the peak
+/// raise/lower torque and the motor torque; per torque tube the torque carried, radius
+/// and mass; masses per station; totals; every warning of every part.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SizingReport {
+    /// Sized rods.
+    pub rods: Vec<RodSizing>,
+    /// Sized screw jacks.
+    pub screw_jacks: Vec<ScrewJackSizing>,
+    /// Sized torque tubes, far end first.
+    pub torque_tubes: Vec<TorqueTubeSizing>,
+    /// Drive motor demand, if a drive line was sized.
+    pub drive: Option<DriveDemand>,
+    /// Masses per station and in total.
+    pub masses: MassBreakdown,
+    /// Totals of mass, power and work.
+    pub totals: SizingTotals,
+    /// All warnings, in part order (rods, screw jacks, tubes).
+    pub warnings: Vec<SizingWarning>,
+}
+
+impl SizingReport {
+    /// Assembles the report and its totals from the sized parts.
+    pub fn assemble(
+        rods: Vec<RodSizing>,
+        screw_jacks: Vec<ScrewJackSizing>,
+        torque_tubes: Vec<TorqueTubeSizing>,
+        drive: Option<DriveDemand>,
+    ) -> Self {
+        let mut items: Vec<MassItem> = rods
+            .iter()
+            .map(|r| MassItem {
+                station: r.station.clone(),
+                part: r.name.clone(),
+                mass_kg: r.mass_kg,
+            })
+            .collect();
+        items.extend(torque_tubes.iter().map(|t| MassItem {
+            station: t.station.clone(),
+            part: "torque tube".to_owned(),
+            mass_kg: t.mass_kg,
+        }));
+        let masses = MassBreakdown::from_items(&items);
+        let warnings = rods
+            .iter()
+            .flat_map(|r| r.warnings.iter())
+            .chain(screw_jacks.iter().flat_map(|s| s.warnings.iter()))
+            .chain(torque_tubes.iter().flat_map(|t| t.warnings.iter()))
+            .cloned()
+            .collect();
+        let totals = SizingTotals {
+            mass_kg: masses.total_kg,
+            peak_power_w: drive.map_or(0.0, |d| d.peak_power_w),
+            work_per_deployment_j: drive.map_or(0.0, |d| d.work_per_deployment_j),
+        };
+        Self {
+            rods,
+            screw_jacks,
+            torque_tubes,
+            drive,
+            masses,
+            totals,
+            warnings,
+        }
+    }
+}

@@ -1,0 +1,55 @@
+//! Report assembly and JSON shape.
+
+use approx::assert_relative_eq;
+use flapwright_sizing::{
+    drive_demand, size_rod, size_screw_jack, size_torque_tubes, Material, RodInput, ScrewJackInput,
+    SectionShape, SizingReport, TorqueTubeInput,
+};
+
+#[test]
+fn report_totals_and_json() {
+    let steel = Material::steel_4340();
+    let mut fat = RodInput::new("inboard", "fat link", 0.05, 5e6, 0.0);
+    fat.max_outer_radius_m = Some(0.01);
+    let rods = vec![
+        size_rod(&RodInput::new("inboard", "link", 0.5, 1e4, 5e3), &steel).unwrap(),
+        size_rod(&RodInput::new("outboard", "link", 0.5, 1e4, 5e3), &steel).unwrap(),
+        size_rod(&fat, &steel).unwrap(),
+    ];
+    let jacks = vec![size_screw_jack(
+        &ScrewJackInput {
+            station: "inboard".into(),
+            name: "jack".into(),
+            max_raise_torque_nm: 4.7,
+            max_lower_torque_nm: 0.53,
+        },
+        1.5,
+    )
+    .unwrap()];
+    let tubes: Vec<TorqueTubeInput> = ["outboard", "inboard"]
+        .iter()
+        .map(|s| TorqueTubeInput {
+            station: (*s).into(),
+            drive_torque_nm: 50.0,
+            length_m: 3.0,
+            max_outer_radius_m: None,
+        })
+        .collect();
+    let tubes = size_torque_tubes(&tubes, 0.95, SectionShape::Solid, &steel).unwrap();
+    let drive = drive_demand(&[50.0, 50.0], 0.95, 20.0, 15.0).unwrap();
+    let expected_mass: f64 =
+        rods.iter().map(|r| r.mass_kg).sum::<f64>() + tubes.iter().map(|t| t.mass_kg).sum::<f64>();
+    let report = SizingReport::assemble(rods, jacks, tubes, Some(drive));
+    assert_relative_eq!(report.totals.mass_kg, expected_mass, max_relative = 1e-12);
+    assert_eq!(report.masses.per_station.len(), 2);
+    assert_eq!(report.warnings.len(), 2, "fat link: envelope + not slender");
+    let json = serde_json::to_value(&report).unwrap();
+    // r_t = sqrt(1e4 / (pi 710e6)) = 2.1 mm < r_b = (4 x 5e3 x 0.25 / (pi^3 x 205e9))^(1/4) = 5.3 mm.
+    assert_eq!(json["rods"][0]["governing"], "buckling");
+    assert!(json["rods"][0]["radius_m"].is_f64());
+    assert!(json["screw_jacks"][0]["motor_torque_nm"].is_f64());
+    assert!(json["torque_tubes"][1]["torque_carried_nm"].is_f64());
+    assert_eq!(json["warnings"][0]["kind"], "rod_exceeds_envelope");
+    assert!(json["totals"]["work_per_deployment_j"].is_f64());
+    assert!(json["rods"][0].get("warnings").is_none());
+}

@@ -8,10 +8,12 @@ use serde::Serialize;
 use sha2::{Digest, Sha256};
 
 use crate::output::StagedDir;
-use crate::report::{PartReport, Report, SceneInfo, StageTiming, SCHEMA_VERSION};
+use crate::report::{PartReport, Report, SceneInfo, StageTiming, StationReport, SCHEMA_VERSION};
 use crate::scene::Scene;
 
 mod geometry;
+pub mod mechanisms;
+mod stations;
 
 /// What a design run reads.
 #[derive(Debug, Clone, Copy)]
@@ -73,8 +75,10 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
         timings: Vec::new(),
     };
     let mut parts: Vec<PartReport> = Vec::new();
-    let warnings: Vec<String> = Vec::new();
+    let mut warnings: Vec<String> = Vec::new();
 
+    let mechanisms = stages.run("synthesis", || mechanisms::synthesise_all(scene))?;
+    let mut planes = vec![None; scene.station.len()];
     if let Some(wing) = &scene.wing {
         let model = stages.run("geometry", || {
             geometry::build_model(scene, wing, inputs.scene_dir)
@@ -85,7 +89,42 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
         parts = stages.run("stl", || {
             geometry::write_parts(&meshed, scene.outputs.stl, out)
         })?;
+        let placed = stages.run("planes", || {
+            stations::place_all(scene, &model, &meshed, &mechanisms)
+        })?;
+        planes = placed
+            .iter()
+            .map(|p| {
+                Some(flapwright_planes::StationReport::new(
+                    &p.station,
+                    &p.sections,
+                ))
+            })
+            .collect();
     }
+    let mut mechanism_reports = vec![None; scene.station.len()];
+    if scene.outputs.kinematics {
+        let cases = mechanisms::load_cases(scene);
+        let samples = scene.resolution.deployment_samples;
+        mechanism_reports = stages.run("kinematics", || {
+            mechanisms
+                .iter()
+                .map(|m| mechanisms::sweep_station(m, &cases, samples, &mut warnings).map(Some))
+                .collect::<Result<Vec<_>>>()
+        })?;
+    }
+    let station_reports: Vec<StationReport> = scene
+        .station
+        .iter()
+        .zip(planes)
+        .zip(mechanism_reports)
+        .map(|((station, plane), mechanism)| StationReport {
+            name: station.name.clone(),
+            flap: station.flap.clone(),
+            plane,
+            mechanism,
+        })
+        .collect();
 
     let report = Report {
         schema_version: SCHEMA_VERSION,
@@ -97,7 +136,7 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
         },
         stages: stages.names,
         parts,
-        stations: Vec::new(),
+        stations: station_reports,
         warnings,
         timings: stages.timings,
     };

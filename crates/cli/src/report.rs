@@ -22,7 +22,7 @@ pub struct Report {
     /// Meshed parts (empty when no geometry stage ran).
     pub parts: Vec<PartReport>,
     /// Per support station.
-    pub stations: Vec<serde_json::Value>,
+    pub stations: Vec<StationReport>,
     /// Warnings (near-toggle, self-locking lost, ...), each naming where.
     pub warnings: Vec<String>,
     /// Wall time per stage, s. The only part of the report that changes between runs.
@@ -59,6 +59,19 @@ pub struct PartReport {
     pub watertight: bool,
     /// STL file written, relative to the output folder.
     pub stl_file: Option<String>,
+}
+
+/// One support station: where it is and what its mechanism does.
+#[derive(Debug, Clone, Serialize)]
+pub struct StationReport {
+    /// Station name.
+    pub name: String,
+    /// Flap it supports (absent in a 2D-only scene).
+    pub flap: Option<String>,
+    /// Plane, frame, skew, residuals and section cuts (absent without a wing).
+    pub plane: Option<flapwright_planes::StationReport>,
+    /// Mechanism dimensions, synthesis and one sweep per load case.
+    pub mechanism: Option<crate::pipeline::mechanisms::MechanismReport>,
 }
 
 /// Wall time of one stage.

@@ -1,9 +1,10 @@
 //! Collision adapter: the only place parry3d-f64 appears. Shapes are built once (a mesh's
 //! BVH with it) and queried at any pose; no parry or glam type is part of the public API.
 //!
-//! Pitfalls (from parry's design): a triangle mesh is a *surface* for distance and
-//! intersection queries: a part wholly inside another mesh reports no intersection and a
-//! positive distance to its surface. Model solids as convex shapes (capsule, cuboid,
+//! Pitfalls (from parry's design, checked by the crate's tests with parry3d-f64 0.31.1):
+//! for a triangle mesh, [`compute_distance`] measures to the *surface*: a part wholly
+//! inside a mesh reports a positive distance to the nearest face, while
+//! [`compute_intersects`] (meshes are built oriented) reports it as intersecting. Model solids as convex shapes (capsule, cuboid,
 //! cylinder, convex hull) or test containment with [`CollisionShape::contains_point`],
 //! which uses the mesh orientation (pseudo-normals). Distance queries between two large
 //! nested meshes are slow: prune with bounding boxes first.
@@ -25,7 +26,9 @@ pub struct CollisionShape {
 
 impl std::fmt::Debug for CollisionShape {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("CollisionShape").field("type", &self.shape.shape_type()).finish()
+        f.debug_struct("CollisionShape")
+            .field("type", &self.shape.shape_type())
+            .finish()
     }
 }
 
@@ -62,31 +65,56 @@ impl CollisionShape {
     /// oriented for [`Self::contains_point`] to be meaningful.
     pub fn from_mesh(mesh: &TriMesh) -> Result<CollisionShape> {
         let vertices: Vec<DVec3> = mesh.vertices.iter().map(to_glam).collect();
-        let shape = SharedShape::trimesh_with_flags(vertices.clone(), mesh.triangles.clone(), TriMeshFlags::ORIENTED)
-            .or_else(|_| SharedShape::trimesh(vertices, mesh.triangles.clone()))
-            .map_err(|e| Error::Collision { reason: format!("triangle mesh rejected: {e:?}") })?;
+        let shape = SharedShape::trimesh_with_flags(
+            vertices.clone(),
+            mesh.triangles.clone(),
+            TriMeshFlags::ORIENTED,
+        )
+        .or_else(|_| SharedShape::trimesh(vertices, mesh.triangles.clone()))
+        .map_err(|e| Error::Collision {
+            reason: format!("triangle mesh rejected: {e:?}"),
+        })?;
         Ok(CollisionShape { shape })
     }
 
     /// A sphere of `radius_m` centred at the local origin.
     pub fn ball(radius_m: f64) -> Result<CollisionShape> {
-        Ok(CollisionShape { shape: SharedShape::ball(positive("ball radius_m", radius_m)?) })
+        Ok(CollisionShape {
+            shape: SharedShape::ball(positive("ball radius_m", radius_m)?),
+        })
     }
 
     /// A capsule: segment `a`-`b` (local frame, m) swept by a sphere of `radius_m`.
     pub fn capsule(a: Point3<f64>, b: Point3<f64>, radius_m: f64) -> Result<CollisionShape> {
-        Ok(CollisionShape { shape: SharedShape::capsule(to_glam(&a), to_glam(&b), positive("capsule radius_m", radius_m)?) })
+        Ok(CollisionShape {
+            shape: SharedShape::capsule(
+                to_glam(&a),
+                to_glam(&b),
+                positive("capsule radius_m", radius_m)?,
+            ),
+        })
     }
 
     /// A box centred at the local origin with the given half extents (m) along local x, y, z.
     pub fn cuboid(half_extents_m: Vector3<f64>) -> Result<CollisionShape> {
         let [x, y, z] = [half_extents_m.x, half_extents_m.y, half_extents_m.z];
-        Ok(CollisionShape { shape: SharedShape::cuboid(positive("cuboid half extent x (m)", x)?, positive("cuboid half extent y (m)", y)?, positive("cuboid half extent z (m)", z)?) })
+        Ok(CollisionShape {
+            shape: SharedShape::cuboid(
+                positive("cuboid half extent x (m)", x)?,
+                positive("cuboid half extent y (m)", y)?,
+                positive("cuboid half extent z (m)", z)?,
+            ),
+        })
     }
 
     /// A cylinder centred at the local origin, axis along local **y** (parry's convention).
     pub fn cylinder(half_height_m: f64, radius_m: f64) -> Result<CollisionShape> {
-        Ok(CollisionShape { shape: SharedShape::cylinder(positive("cylinder half height (m)", half_height_m)?, positive("cylinder radius_m", radius_m)?) })
+        Ok(CollisionShape {
+            shape: SharedShape::cylinder(
+                positive("cylinder half height (m)", half_height_m)?,
+                positive("cylinder radius_m", radius_m)?,
+            ),
+        })
     }
 
     /// The convex hull of `points` (local frame, m).
@@ -94,7 +122,9 @@ impl CollisionShape {
         let points: Vec<DVec3> = points.iter().map(to_glam).collect();
         SharedShape::convex_hull(&points)
             .map(|shape| CollisionShape { shape })
-            .ok_or_else(|| Error::Collision { reason: format!("convex hull of {} points is degenerate", points.len()) })
+            .ok_or_else(|| Error::Collision {
+                reason: format!("convex hull of {} points is degenerate", points.len()),
+            })
     }
 
     /// True when `point_ac` is inside (or on) the shape placed at `pose`.
@@ -105,28 +135,67 @@ impl CollisionShape {
 
 /// Distance (m) and closest points between shape `a` at `pose_a` and shape `b` at `pose_b`
 /// (poses map each shape's local frame to the aircraft frame).
-pub fn compute_distance(a: &CollisionShape, pose_a: &Isometry3<f64>, b: &CollisionShape, pose_b: &Isometry3<f64>) -> Result<Proximity> {
+pub fn compute_distance(
+    a: &CollisionShape,
+    pose_a: &Isometry3<f64>,
+    b: &CollisionShape,
+    pose_b: &Isometry3<f64>,
+) -> Result<Proximity> {
     let (pa, pb) = (to_pose(pose_a), to_pose(pose_b));
-    let unsupported = |what: &str| Error::Collision { reason: format!("{what} not supported between {:?} and {:?}", a.shape.shape_type(), b.shape.shape_type()) };
-    let distance = query::distance(&pa, &*a.shape, &pb, &*b.shape).map_err(|_| unsupported("distance"))?.distance;
+    let unsupported = |what: &str| Error::Collision {
+        reason: format!(
+            "{what} not supported between {:?} and {:?}",
+            a.shape.shape_type(),
+            b.shape.shape_type()
+        ),
+    };
+    let distance = query::distance(&pa, &*a.shape, &pb, &*b.shape)
+        .map_err(|_| unsupported("distance"))?
+        .distance;
     if !distance.is_finite() {
-        return Err(Error::NotFinite { what: "collision distance (m)", value: distance });
+        return Err(Error::NotFinite {
+            what: "collision distance (m)",
+            value: distance,
+        });
     }
     if distance > 0.0 {
         let margin = distance * (1.0 + 1e-9) + 1e-12;
-        if let ClosestPoints::WithinMargin(p, q) = query::closest_points(&pa, &*a.shape, &pb, &*b.shape, margin).map_err(|_| unsupported("closest points"))? {
-            return Ok(Proximity { distance_m: distance, point_a_ac: to_point(p), point_b_ac: to_point(q) });
+        if let ClosestPoints::WithinMargin(p, q) =
+            query::closest_points(&pa, &*a.shape, &pb, &*b.shape, margin)
+                .map_err(|_| unsupported("closest points"))?
+        {
+            return Ok(Proximity {
+                distance_m: distance,
+                point_a_ac: to_point(p),
+                point_b_ac: to_point(q),
+            });
         }
     }
-    let contact = query::contact(&pa, &*a.shape, &pb, &*b.shape, 0.0).map_err(|_| unsupported("contact"))?;
+    let contact =
+        query::contact(&pa, &*a.shape, &pb, &*b.shape, 0.0).map_err(|_| unsupported("contact"))?;
     let (p, q) = contact.map_or((pa.translation, pb.translation), |c| (c.point1, c.point2));
-    Ok(Proximity { distance_m: distance.max(0.0), point_a_ac: to_point(p), point_b_ac: to_point(q) })
+    Ok(Proximity {
+        distance_m: distance.max(0.0),
+        point_a_ac: to_point(p),
+        point_b_ac: to_point(q),
+    })
 }
 
-/// True when shape `a` at `pose_a` and shape `b` at `pose_b` touch or overlap (surfaces only
-/// for meshes: see the module pitfalls).
-pub fn compute_intersects(a: &CollisionShape, pose_a: &Isometry3<f64>, b: &CollisionShape, pose_b: &Isometry3<f64>) -> Result<bool> {
+/// True when shape `a` at `pose_a` and shape `b` at `pose_b` touch or overlap (a shape
+/// wholly inside an oriented mesh counts as overlapping: see the module pitfalls).
+pub fn compute_intersects(
+    a: &CollisionShape,
+    pose_a: &Isometry3<f64>,
+    b: &CollisionShape,
+    pose_b: &Isometry3<f64>,
+) -> Result<bool> {
     query::intersection_test(&to_pose(pose_a), &*a.shape, &to_pose(pose_b), &*b.shape)
         .map(|r| r.intersecting)
-        .map_err(|_| Error::Collision { reason: format!("intersection test not supported between {:?} and {:?}", a.shape.shape_type(), b.shape.shape_type()) })
+        .map_err(|_| Error::Collision {
+            reason: format!(
+                "intersection test not supported between {:?} and {:?}",
+                a.shape.shape_type(),
+                b.shape.shape_type()
+            ),
+        })
 }

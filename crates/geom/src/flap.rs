@@ -96,24 +96,57 @@ impl Flap {
                 y_outboard_m: spec.y_outboard_m,
             });
         }
-        wing.locate(spec.y_inboard_m, &format!("flap {:?} inboard end", spec.name))?;
-        wing.locate(spec.y_outboard_m, &format!("flap {:?} outboard end", spec.name))?;
+        wing.locate(
+            spec.y_inboard_m,
+            &format!("flap {:?} inboard end", spec.name),
+        )?;
+        wing.locate(
+            spec.y_outboard_m,
+            &format!("flap {:?} outboard end", spec.name),
+        )?;
+        if let FlapSectionSpec::OwnSection { airfoil } = &spec.section {
+            airfoil.validate()?;
+        }
         let (lo, hi) = FLAP_CHORD_FRACTION_RANGE;
-        require_range("flap chord_fraction_inboard", spec.chord_fraction_inboard, lo, hi)?;
-        require_range("flap chord_fraction_outboard", spec.chord_fraction_outboard, lo, hi)?;
+        require_range(
+            "flap chord_fraction_inboard",
+            spec.chord_fraction_inboard,
+            lo,
+            hi,
+        )?;
+        require_range(
+            "flap chord_fraction_outboard",
+            spec.chord_fraction_outboard,
+            lo,
+            hi,
+        )?;
         let (inboard_ac, outboard_ac) = match &spec.hinge {
-            HingeSpec::Points { inboard_ac, outboard_ac } => {
+            HingeSpec::Points {
+                inboard_ac,
+                outboard_ac,
+            } => {
                 for v in inboard_ac.iter().chain(outboard_ac.iter()) {
                     require_finite("flap hinge point coordinate (m)", *v)?;
                 }
                 (*inboard_ac, *outboard_ac)
             }
-            HingeSpec::ChordFraction { chord_fraction, depth_below_chord_fraction } => {
+            HingeSpec::ChordFraction {
+                chord_fraction,
+                depth_below_chord_fraction,
+            } => {
                 require_range("flap hinge chord_fraction", *chord_fraction, -1.0, 2.0)?;
-                require_range("flap hinge depth_below_chord_fraction", *depth_below_chord_fraction, -1.0, 1.0)?;
+                require_range(
+                    "flap hinge depth_below_chord_fraction",
+                    *depth_below_chord_fraction,
+                    -1.0,
+                    1.0,
+                )?;
                 let at = |y: f64| -> Result<Point3<f64>> {
                     let section = wing.section_at(y)?;
-                    Ok(wing.section_point_ac(&section, Point2::new(*chord_fraction, -depth_below_chord_fraction)))
+                    Ok(wing.section_point_ac(
+                        &section,
+                        Point2::new(*chord_fraction, -depth_below_chord_fraction),
+                    ))
                 };
                 (at(spec.y_inboard_m)?, at(spec.y_outboard_m)?)
             }
@@ -121,9 +154,17 @@ impl Flap {
         let axis = outboard_ac - inboard_ac;
         let span = spec.y_outboard_m - spec.y_inboard_m;
         if !(axis.norm() > MIN_HINGE_LENGTH_FRACTION * span && axis.y > 0.0) {
-            return Err(Error::DegenerateHingeAxis { flap: spec.name.clone(), length_m: axis.norm(), spanwise_m: axis.y });
+            return Err(Error::DegenerateHingeAxis {
+                flap: spec.name.clone(),
+                length_m: axis.norm(),
+                spanwise_m: axis.y,
+            });
         }
-        Ok(Flap { hinge_point_ac: inboard_ac, hinge_direction_ac: Unit::new_normalize(axis), spec })
+        Ok(Flap {
+            hinge_point_ac: inboard_ac,
+            hinge_direction_ac: Unit::new_normalize(axis),
+            spec,
+        })
     }
 
     /// The validated spec.
@@ -148,40 +189,65 @@ impl Flap {
     pub fn body_span_m(&self, wing: &Wing) -> Result<(f64, f64)> {
         let (_, chord_in, _) = wing.planform_at(self.spec.y_inboard_m)?;
         let (_, chord_out, _) = wing.planform_at(self.spec.y_outboard_m)?;
-        Ok((self.spec.y_inboard_m + SIDE_GAP_CHORD_FRACTION * chord_in, self.spec.y_outboard_m - SIDE_GAP_CHORD_FRACTION * chord_out))
+        Ok((
+            self.spec.y_inboard_m + SIDE_GAP_CHORD_FRACTION * chord_in,
+            self.spec.y_outboard_m - SIDE_GAP_CHORD_FRACTION * chord_out,
+        ))
     }
 
     /// Stowed flap section outline at `y_m` as a closed polygon in wing-section unit-chord
     /// coordinates (u aft, v up), from the trailing edge along the upper side to the front
     /// and back along the lower side. `wing_airfoil` is the local wing section (already
     /// resampled to `points_per_side`).
-    pub fn stowed_outline(&self, y_m: f64, wing_airfoil: &Airfoil, points_per_side: usize) -> Result<Vec<Point2<f64>>> {
+    pub fn stowed_outline(
+        &self,
+        y_m: f64,
+        wing_airfoil: &Airfoil,
+        points_per_side: usize,
+    ) -> Result<Vec<Point2<f64>>> {
         let chord_fraction = self.chord_fraction_at(y_m);
         let front_u = 1.0 - chord_fraction;
         match &self.spec.section {
             FlapSectionSpec::CutOut => {
                 let upper = wing_airfoil.surface_line(Surface::Upper);
                 let lower = wing_airfoil.surface_line(Surface::Lower);
-                let front_upper = upper.arc_at_x(front_u).ok_or_else(|| self.outline_error(wing_airfoil))?;
-                let front_lower = lower.arc_at_x(front_u).ok_or_else(|| self.outline_error(wing_airfoil))?;
-                let mut outline: Vec<Point2<f64>> = upper.sample_cosine(front_upper, upper.length(), points_per_side).into_iter().rev().collect();
+                let front_upper = upper
+                    .arc_at_x(front_u)
+                    .ok_or_else(|| self.outline_error(wing_airfoil))?;
+                let front_lower = lower
+                    .arc_at_x(front_u)
+                    .ok_or_else(|| self.outline_error(wing_airfoil))?;
+                let mut outline: Vec<Point2<f64>> = upper
+                    .sample_cosine(front_upper, upper.length(), points_per_side)
+                    .into_iter()
+                    .rev()
+                    .collect();
                 outline.extend(lower.sample_cosine(front_lower, lower.length(), points_per_side));
                 Ok(outline)
             }
             FlapSectionSpec::OwnSection { airfoil } => {
                 let flap = airfoil.resampled(points_per_side)?;
-                let trailing_edge = Point2::new(1.0, wing_airfoil.mean_line_y(1.0)?);
+                let trailing_edge = wing_airfoil.trailing_edge_midpoint();
                 let front = Point2::new(front_u, wing_airfoil.mean_line_y(front_u)?);
                 let direction: Vector2<f64> = (trailing_edge - front).normalize();
                 let rotation = Rotation2::new(direction.y.atan2(direction.x));
                 // Flap chord runs x_f = 0..1; x_f = 1 sits on the wing trailing edge.
-                Ok(flap.points.iter().map(|p| trailing_edge + rotation * (Vector2::new(p.x - 1.0, p.y) * chord_fraction)).collect())
+                Ok(flap
+                    .points
+                    .iter()
+                    .map(|p| {
+                        trailing_edge + rotation * (Vector2::new(p.x - 1.0, p.y) * chord_fraction)
+                    })
+                    .collect())
             }
         }
     }
 
     fn outline_error(&self, airfoil: &Airfoil) -> Error {
-        Error::BadAirfoil { name: airfoil.name.clone(), reason: "flap cut-out station lies outside the wing section" }
+        Error::BadAirfoil {
+            name: airfoil.name.clone(),
+            reason: "flap cut-out station lies outside the wing section",
+        }
     }
 }
 

@@ -7,7 +7,8 @@
 //! twist) into a [`Wing`]. A [`WingModel`] adds [`FlapSpec`]s (cut-out or own section,
 //! hinge axis), [`SparSpec`]s and a [`TorqueTubeSpec`], and
 //! [`WingModel::compute_parts`] meshes every [`Part`] as a closed, outward-oriented
-//! [`TriMesh`]. Meshes are written with [`io::stl::write_binary`] and turned into
+//! [`TriMesh`]; [`WingModel::compute_section_outlines`] gives the same polygons cut at any
+//! spanwise station. Meshes are written with [`io::stl::write_binary`] and turned into
 //! [`CollisionShape`]s for clearance queries ([`compute_distance`], [`compute_intersects`]).
 //!
 //! # Units and frames
@@ -50,6 +51,7 @@ pub mod flap;
 pub mod io;
 mod loft;
 pub mod mesh;
+mod mesher;
 pub mod parts;
 pub mod structure;
 pub mod wing;
@@ -59,6 +61,6 @@ pub use collision::{compute_distance, compute_intersects, CollisionShape, Proxim
 pub use error::{Error, Result};
 pub use flap::{Flap, FlapSectionSpec, FlapSpec, HingeSpec};
 pub use mesh::{Aabb, MeshCheck, TriMesh};
-pub use parts::{MeshResolution, Part, PartKind, WingModel};
+pub use parts::{MeshResolution, Part, PartKind, SectionOutline, WingModel};
 pub use structure::{SparSpec, TorqueTubeSpec};
 pub use wing::{PanelSpec, SectionAt, SweepReference, Wing, WingSectionSpec, WingSpec};

@@ -5,61 +5,88 @@ use nalgebra::{Point2, Point3, Vector3};
 use crate::error::{Error, Result};
 use crate::mesh::TriMesh;
 
-/// Triangulates a simple polygon by ear clipping; triangles have the polygon's orientation.
-/// O(n^2) for the airfoil-like polygons used here.
-pub(crate) fn triangulate_polygon(polygon: &[Point2<f64>], what: &'static str) -> Result<Vec<[usize; 3]>> {
+/// Triangulates a simple polygon by ear clipping, always clipping the best-shaped ear
+/// (largest `2 area / longest edge^2`), so that runs of nearly collinear points (flat parts
+/// of resampled airfoils) are fanned from the opposite side instead of being left as a
+/// sliver at the end. Triangles have the polygon's orientation. O(n^2).
+pub(crate) fn triangulate_polygon(
+    polygon: &[Point2<f64>],
+    what: &'static str,
+) -> Result<Vec<[usize; 3]>> {
     let n = polygon.len();
     let fail = || Error::Triangulation { what, count: n };
     if n < 3 {
         return Err(fail());
     }
-    let signed_area: f64 = (0..n).map(|i| polygon[i].coords.perp(&polygon[(i + 1) % n].coords)).sum::<f64>() * 0.5;
-    if !(signed_area.abs() > 0.0) {
+    let signed_area: f64 = (0..n)
+        .map(|i| polygon[i].coords.perp(&polygon[(i + 1) % n].coords))
+        .sum::<f64>()
+        * 0.5;
+    if signed_area.abs().partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         return Err(fail());
     }
     let sign = signed_area.signum();
-    let scale = polygon.iter().fold(0.0_f64, |m, p| m.max(p.coords.norm())).max(f64::MIN_POSITIVE);
-    let area_tol = 1e-14 * scale * scale;
-    let mut remaining: Vec<usize> = (0..n).collect();
-    let mut triangles = Vec::with_capacity(n - 2);
-    let mut cursor = 0;
-    let mut misses = 0;
-    while remaining.len() > 3 {
-        let m = remaining.len();
-        let (ia, ib, ic) = (remaining[(cursor + m - 1) % m], remaining[cursor % m], remaining[(cursor + 1) % m]);
-        let (a, b, c) = (polygon[ia], polygon[ib], polygon[ic]);
-        let cross = (b - a).perp(&(c - a)) * sign;
-        let is_ear = cross > area_tol
-            && remaining.iter().all(|&j| {
-                if j == ia || j == ib || j == ic {
-                    return true;
-                }
-                let p = polygon[j];
-                let d1 = (b - a).perp(&(p - a)) * sign;
-                let d2 = (c - b).perp(&(p - b)) * sign;
-                let d3 = (a - c).perp(&(p - c)) * sign;
-                !(d1 >= 0.0 && d2 >= 0.0 && d3 >= 0.0)
-            });
-        if is_ear {
-            triangles.push([ia, ib, ic]);
-            remaining.remove(cursor % m);
-            misses = 0;
-            if cursor >= remaining.len() {
-                cursor = 0;
-            }
-        } else {
-            cursor = (cursor + 1) % m;
-            misses += 1;
-            if misses > m {
-                return Err(fail());
-            }
+    // Doubly linked list of remaining vertices.
+    let mut next: Vec<usize> = (0..n).map(|i| (i + 1) % n).collect();
+    let mut prev: Vec<usize> = (0..n).map(|i| (i + n - 1) % n).collect();
+    let mut alive = vec![true; n];
+    let quality = |prev: &[usize], next: &[usize], alive: &[bool], b: usize| -> Option<f64> {
+        let (ia, ic) = (prev[b], next[b]);
+        let (a, bp, c) = (polygon[ia], polygon[b], polygon[ic]);
+        let cross = (bp - a).perp(&(c - a)) * sign;
+        let longest = (bp - a)
+            .norm_squared()
+            .max((c - bp).norm_squared())
+            .max((a - c).norm_squared());
+        if cross.partial_cmp(&(1e-13 * longest)) != Some(std::cmp::Ordering::Greater) {
+            return None;
         }
+        let blocked = (0..n).any(|j| {
+            if !alive[j] || j == ia || j == b || j == ic {
+                return false;
+            }
+            let p = polygon[j];
+            (bp - a).perp(&(p - a)) * sign >= 0.0
+                && (c - bp).perp(&(p - bp)) * sign >= 0.0
+                && (a - c).perp(&(p - c)) * sign >= 0.0
+        });
+        (!blocked).then_some(cross / longest)
+    };
+    let mut scores: Vec<Option<f64>> = (0..n).map(|b| quality(&prev, &next, &alive, b)).collect();
+    let mut triangles = Vec::with_capacity(n - 2);
+    for _ in 0..n - 3 {
+        let pick = |scores: &[Option<f64>]| {
+            (0..n)
+                .filter(|&b| alive[b])
+                .filter_map(|b| scores[b].map(|q| (b, q)))
+                .max_by(|x, y| x.1.total_cmp(&y.1))
+                .map(|(b, _)| b)
+        };
+        let best = match pick(&scores) {
+            Some(best) => best,
+            None => {
+                // An ear blocked by an already clipped vertex is only re-scored here.
+                for b in 0..n {
+                    scores[b] = if alive[b] {
+                        quality(&prev, &next, &alive, b)
+                    } else {
+                        None
+                    };
+                }
+                pick(&scores).ok_or_else(fail)?
+            }
+        };
+        let (a, c) = (prev[best], next[best]);
+        triangles.push([a, best, c]);
+        alive[best] = false;
+        next[a] = c;
+        prev[c] = a;
+        scores[a] = quality(&prev, &next, &alive, a);
+        scores[c] = quality(&prev, &next, &alive, c);
     }
-    let [a, b, c] = [remaining[0], remaining[1], remaining[2]];
-    if (polygon[b] - polygon[a]).perp(&(polygon[c] - polygon[a])) * sign <= area_tol {
-        return Err(fail());
-    }
-    triangles.push([a, b, c]);
+    let b = (0..n).find(|&b| alive[b]).ok_or_else(fail)?;
+    quality(&prev, &next, &alive, b).ok_or_else(fail)?;
+    triangles.push([prev[b], b, next[b]]);
     Ok(triangles)
 }
 
@@ -69,13 +96,23 @@ fn project_ring(ring: &[Point3<f64>]) -> Vec<Point2<f64>> {
     let mut normal = Vector3::zeros();
     for i in 0..n {
         let (a, b) = (ring[i], ring[(i + 1) % n]);
-        normal += Vector3::new((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+        normal += Vector3::new(
+            (a.y - b.y) * (a.z + b.z),
+            (a.z - b.z) * (a.x + b.x),
+            (a.x - b.x) * (a.y + b.y),
+        );
     }
     let normal = normal.try_normalize(0.0).unwrap_or_else(Vector3::y);
-    let helper = if normal.x.abs() < 0.9 { Vector3::x() } else { Vector3::z() };
+    let helper = if normal.x.abs() < 0.9 {
+        Vector3::x()
+    } else {
+        Vector3::z()
+    };
     let e1 = normal.cross(&helper).normalize();
     let e2 = normal.cross(&e1);
-    ring.iter().map(|p| Point2::new(p.coords.dot(&e1), p.coords.dot(&e2))).collect()
+    ring.iter()
+        .map(|p| Point2::new(p.coords.dot(&e1), p.coords.dot(&e2)))
+        .collect()
 }
 
 /// Builds a closed mesh through `rings` (each a closed polygon, all with the same number of
@@ -86,11 +123,19 @@ pub(crate) fn loft_closed(rings: &[Vec<Point3<f64>>], what: &'static str) -> Res
     if rings.len() < 2 || m < 3 || rings.iter().any(|r| r.len() != m) {
         return Err(Error::Triangulation { what, count: m });
     }
-    let mut mesh = TriMesh { vertices: rings.iter().flatten().copied().collect(), triangles: Vec::new() };
+    let mut mesh = TriMesh {
+        vertices: rings.iter().flatten().copied().collect(),
+        triangles: Vec::new(),
+    };
     let index = |ring: usize, i: usize| (ring * m + i % m) as u32;
     for k in 0..rings.len() - 1 {
         for i in 0..m {
-            let (a, b, c, d) = (index(k, i), index(k, i + 1), index(k + 1, i + 1), index(k + 1, i));
+            let (a, b, c, d) = (
+                index(k, i),
+                index(k, i + 1),
+                index(k + 1, i + 1),
+                index(k + 1, i),
+            );
             // Split the quad along its shorter diagonal.
             let ac = (mesh.vertices[c as usize] - mesh.vertices[a as usize]).norm_squared();
             let bd = (mesh.vertices[d as usize] - mesh.vertices[b as usize]).norm_squared();
@@ -115,7 +160,11 @@ pub(crate) fn loft_closed(rings: &[Vec<Point3<f64>>], what: &'static str) -> Res
         mesh.triangles.push(orient(&mesh, tri, -first_area));
     }
     for t in last {
-        let tri = [index(last_ring, t[0]), index(last_ring, t[1]), index(last_ring, t[2])];
+        let tri = [
+            index(last_ring, t[0]),
+            index(last_ring, t[1]),
+            index(last_ring, t[2]),
+        ];
         mesh.triangles.push(orient(&mesh, tri, last_area));
     }
     if mesh.compute_signed_volume() < 0.0 {
@@ -127,7 +176,10 @@ pub(crate) fn loft_closed(rings: &[Vec<Point3<f64>>], what: &'static str) -> Res
 /// Vector area (Newell) of a ring: its direction follows the ring order by the right-hand rule.
 fn signed_area_3d(ring: &[Point3<f64>]) -> Vector3<f64> {
     let n = ring.len();
-    (0..n).map(|i| ring[i].coords.cross(&ring[(i + 1) % n].coords)).sum::<Vector3<f64>>() * 0.5
+    (0..n)
+        .map(|i| ring[i].coords.cross(&ring[(i + 1) % n].coords))
+        .sum::<Vector3<f64>>()
+        * 0.5
 }
 
 /// Returns `tri` wound so that its normal points along `direction`.
@@ -146,7 +198,14 @@ mod tests {
 
     #[test]
     fn box_loft_is_watertight_with_exact_volume() {
-        let square = |y: f64| vec![Point3::new(0.0, y, 0.0), Point3::new(2.0, y, 0.0), Point3::new(2.0, y, 1.0), Point3::new(0.0, y, 1.0)];
+        let square = |y: f64| {
+            vec![
+                Point3::new(0.0, y, 0.0),
+                Point3::new(2.0, y, 0.0),
+                Point3::new(2.0, y, 1.0),
+                Point3::new(0.0, y, 1.0),
+            ]
+        };
         let mesh = loft_closed(&[square(0.0), square(1.5), square(3.0)], "box").unwrap();
         assert!(mesh.compute_topology_check().is_watertight());
         approx::assert_relative_eq!(mesh.compute_signed_volume(), 6.0, max_relative = 1e-12);
@@ -154,7 +213,15 @@ mod tests {
 
     #[test]
     fn concave_polygon_triangulates() {
-        let l_shape = [(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0), (1.0, 2.0), (0.0, 2.0)].map(|(x, y)| Point2::new(x, y));
+        let l_shape = [
+            (0.0, 0.0),
+            (2.0, 0.0),
+            (2.0, 1.0),
+            (1.0, 1.0),
+            (1.0, 2.0),
+            (0.0, 2.0),
+        ]
+        .map(|(x, y)| Point2::new(x, y));
         let triangles = triangulate_polygon(&l_shape, "L").unwrap();
         let area: f64 = triangles
             .iter()

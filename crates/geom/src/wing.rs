@@ -96,31 +96,74 @@ impl Wing {
     /// Validates the spec (order, counts, finite values, ranges) and places the sections.
     pub fn try_new(spec: WingSpec) -> Result<Wing> {
         if spec.sections.len() < 2 {
-            return Err(Error::TooFewPoints { what: "wing sections", count: spec.sections.len(), minimum: 2 });
+            return Err(Error::TooFewPoints {
+                what: "wing sections",
+                count: spec.sections.len(),
+                minimum: 2,
+            });
         }
         if spec.panels.len() + 1 != spec.sections.len() {
-            return Err(Error::PanelCount { panels: spec.panels.len(), sections: spec.sections.len() });
+            return Err(Error::PanelCount {
+                panels: spec.panels.len(),
+                sections: spec.sections.len(),
+            });
         }
         for (i, s) in spec.sections.iter().enumerate() {
             require_finite("wing section y_m", s.y_m)?;
-            require_range("wing section chord_m", s.chord_m, f64::MIN_POSITIVE, f64::MAX)?;
-            require_range("wing section twist_deg", s.twist_deg, -MAX_TWIST_DEG, MAX_TWIST_DEG)?;
+            require_range(
+                "wing section chord_m",
+                s.chord_m,
+                f64::MIN_POSITIVE,
+                f64::MAX,
+            )?;
+            require_range(
+                "wing section twist_deg",
+                s.twist_deg,
+                -MAX_TWIST_DEG,
+                MAX_TWIST_DEG,
+            )?;
             if i > 0 && s.y_m <= spec.sections[i - 1].y_m {
-                return Err(Error::SectionsOutOfOrder { index: i, y_m: s.y_m, previous_y_m: spec.sections[i - 1].y_m });
+                return Err(Error::SectionsOutOfOrder {
+                    index: i,
+                    y_m: s.y_m,
+                    previous_y_m: spec.sections[i - 1].y_m,
+                });
             }
         }
         for p in &spec.panels {
-            require_range("wing panel sweep_deg", p.sweep_deg, -MAX_PANEL_ANGLE_DEG, MAX_PANEL_ANGLE_DEG)?;
-            require_range("wing panel dihedral_deg", p.dihedral_deg, -MAX_PANEL_ANGLE_DEG, MAX_PANEL_ANGLE_DEG)?;
+            require_range(
+                "wing panel sweep_deg",
+                p.sweep_deg,
+                -MAX_PANEL_ANGLE_DEG,
+                MAX_PANEL_ANGLE_DEG,
+            )?;
+            require_range(
+                "wing panel dihedral_deg",
+                p.dihedral_deg,
+                -MAX_PANEL_ANGLE_DEG,
+                MAX_PANEL_ANGLE_DEG,
+            )?;
         }
-        require_range("wing twist_axis_chord_fraction", spec.twist_axis_chord_fraction, 0.0, 1.0)?;
+        require_range(
+            "wing twist_axis_chord_fraction",
+            spec.twist_axis_chord_fraction,
+            0.0,
+            1.0,
+        )?;
         let root = spec.root_leading_edge_ac;
-        for (what, v) in [("root leading edge x_m", root.x), ("root leading edge y_m", root.y), ("root leading edge z_m", root.z)] {
+        for (what, v) in [
+            ("root leading edge x_m", root.x),
+            ("root leading edge y_m", root.y),
+            ("root leading edge z_m", root.z),
+        ] {
             require_finite(what, v)?;
         }
         let first_y = spec.sections[0].y_m;
         if (root.y - first_y).abs() > 1e-9 * (1.0 + first_y.abs()) {
-            return Err(Error::RootLeadingEdgeMismatch { root_y_m: root.y, section_y_m: first_y });
+            return Err(Error::RootLeadingEdgeMismatch {
+                root_y_m: root.y,
+                section_y_m: first_y,
+            });
         }
         let mut leading_edges_ac = vec![Point3::new(root.x, first_y, root.z)];
         for (k, panel) in spec.panels.iter().enumerate() {
@@ -132,12 +175,19 @@ impl Wing {
                 SweepReference::QuarterChord => run + 0.25 * (a.chord_m - b.chord_m),
             };
             let previous = leading_edges_ac[k];
-            leading_edges_ac.push(Point3::new(previous.x + dx, b.y_m, previous.z + dy * panel.dihedral_deg.to_radians().tan()));
+            leading_edges_ac.push(Point3::new(
+                previous.x + dx,
+                b.y_m,
+                previous.z + dy * panel.dihedral_deg.to_radians().tan(),
+            ));
         }
         for s in &spec.sections {
-            s.airfoil.resampled(s.airfoil.points.len().div_ceil(2).max(3))?;
+            s.airfoil.validate()?;
         }
-        Ok(Wing { spec, leading_edges_ac })
+        Ok(Wing {
+            spec,
+            leading_edges_ac,
+        })
     }
 
     /// The validated spec.
@@ -147,7 +197,10 @@ impl Wing {
 
     /// Root and tip spanwise positions (m).
     pub fn span_range_m(&self) -> (f64, f64) {
-        (self.spec.sections[0].y_m, self.spec.sections[self.spec.sections.len() - 1].y_m)
+        (
+            self.spec.sections[0].y_m,
+            self.spec.sections[self.spec.sections.len() - 1].y_m,
+        )
     }
 
     /// Planform leading edges of the given sections, aircraft frame (m).
@@ -159,10 +212,18 @@ impl Wing {
     pub(crate) fn locate(&self, y_m: f64, what: &str) -> Result<(usize, f64)> {
         let (root, tip) = self.span_range_m();
         if !(y_m >= root - 1e-12 && y_m <= tip + 1e-12) {
-            return Err(Error::OutsideSpan { what: what.to_owned(), y_m, root_y_m: root, tip_y_m: tip });
+            return Err(Error::OutsideSpan {
+                what: what.to_owned(),
+                y_m,
+                root_y_m: root,
+                tip_y_m: tip,
+            });
         }
         let sections = &self.spec.sections;
-        let k = sections.partition_point(|s| s.y_m <= y_m).clamp(1, sections.len() - 1) - 1;
+        let k = sections
+            .partition_point(|s| s.y_m <= y_m)
+            .clamp(1, sections.len() - 1)
+            - 1;
         let t = ((y_m - sections[k].y_m) / (sections[k + 1].y_m - sections[k].y_m)).clamp(0.0, 1.0);
         Ok((k, t))
     }
@@ -171,7 +232,8 @@ impl Wing {
     pub fn planform_at(&self, y_m: f64) -> Result<(Point3<f64>, f64, f64)> {
         let (k, t) = self.locate(y_m, "wing section")?;
         let (a, b) = (&self.spec.sections[k], &self.spec.sections[k + 1]);
-        let le = self.leading_edges_ac[k] + (self.leading_edges_ac[k + 1] - self.leading_edges_ac[k]) * t;
+        let le = self.leading_edges_ac[k]
+            + (self.leading_edges_ac[k + 1] - self.leading_edges_ac[k]) * t;
         let le = Point3::new(le.x, y_m, le.z);
         let chord = a.chord_m + (b.chord_m - a.chord_m) * t;
         let twist = (a.twist_deg + (b.twist_deg - a.twist_deg) * t).to_radians();
@@ -183,14 +245,22 @@ impl Wing {
     pub fn section_at_with(&self, y_m: f64, points_per_side: Option<usize>) -> Result<SectionAt> {
         let (k, t) = self.locate(y_m, "wing section")?;
         let (leading_edge_ac, chord_m, twist_rad) = self.planform_at(y_m)?;
-        let (a, b) = (&self.spec.sections[k].airfoil, &self.spec.sections[k + 1].airfoil);
+        let (a, b) = (
+            &self.spec.sections[k].airfoil,
+            &self.spec.sections[k + 1].airfoil,
+        );
         let airfoil = match points_per_side {
             Some(n) => Airfoil::blended(&a.resampled(n)?, &b.resampled(n)?, t)?,
             None if t == 0.0 => a.clone(),
             None if t == 1.0 => b.clone(),
             None => Airfoil::blended(a, b, t)?,
         };
-        Ok(SectionAt { leading_edge_ac, chord_m, twist_rad, airfoil })
+        Ok(SectionAt {
+            leading_edge_ac,
+            chord_m,
+            twist_rad,
+            airfoil,
+        })
     }
 
     /// The section at `y_m` (airfoil blended between neighbouring sections).
@@ -219,6 +289,8 @@ impl Wing {
         let f = self.spec.twist_axis_chord_fraction;
         let c = section.chord_m;
         let rotation = Rotation3::from_axis_angle(&Vector3::y_axis(), section.twist_rad);
-        section.leading_edge_ac + Vector3::new(f * c, 0.0, 0.0) + rotation * Vector3::new((point.x - f) * c, 0.0, point.y * c)
+        section.leading_edge_ac
+            + Vector3::new(f * c, 0.0, 0.0)
+            + rotation * Vector3::new((point.x - f) * c, 0.0, point.y * c)
     }
 }

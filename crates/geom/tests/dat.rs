@@ -24,10 +24,20 @@ fn lednicer_round_trip_is_exact() {
 
 #[test]
 fn handwritten_lednicer_file_reads_in_selig_order() {
-    let text = "TEST LEDNICER\n3. 3.\n\n0.0 0.0\n0.5 0.06\n1.0 0.0\n\n0.0 0.0\n0.5 -0.04\n1.0 0.0\n";
+    let text =
+        "TEST LEDNICER\n3. 3.\n\n0.0 0.0\n0.5 0.06\n1.0 0.0\n\n0.0 0.0\n0.5 -0.04\n1.0 0.0\n";
     let airfoil = Airfoil::from_dat(text.as_bytes()).unwrap();
     let xy: Vec<(f64, f64)> = airfoil.points.iter().map(|p| (p.x, p.y)).collect();
-    assert_eq!(xy, vec![(1.0, 0.0), (0.5, 0.06), (0.0, 0.0), (0.5, -0.04), (1.0, 0.0)]);
+    assert_eq!(
+        xy,
+        vec![
+            (1.0, 0.0),
+            (0.5, 0.06),
+            (0.0, 0.0),
+            (0.5, -0.04),
+            (1.0, 0.0)
+        ]
+    );
     approx::assert_relative_eq!(airfoil.compute_area(), 0.5 * 0.1, max_relative = 1e-12);
 }
 
@@ -48,7 +58,15 @@ fn every_shipped_airfoil_file_reads() {
 
 #[test]
 fn malformed_files_are_errors_not_panics() {
-    for text in ["", "NAME\n", "NAME\n1 2 3\n", "NAME\n0 0\nx y\n", "L\n3. 3.\n0 0\n1 0\n", "NAME\n1 0\n0 0\n1 0\n", "N\nNaN 0\n0 0\n1 0\n0.5 -1\n1 0\n"] {
+    for text in [
+        "",
+        "NAME\n",
+        "NAME\n1 2 3\n",
+        "NAME\n0 0\nx y\n",
+        "L\n3. 3.\n0 0\n1 0\n",
+        "NAME\n1 0\n0 0\n1 0\n",
+        "N\nNaN 0\n0 0\n1 0\n0.5 -1\n1 0\n",
+    ] {
         assert!(Airfoil::from_dat(text.as_bytes()).is_err(), "{text:?}");
     }
 }

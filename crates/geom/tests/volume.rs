@@ -2,16 +2,35 @@
 //! section area at second order.
 
 use approx::assert_relative_eq;
-use flapwright_geom::{Airfoil, MeshResolution, PanelSpec, SweepReference, TrailingEdge, WingModel, WingSectionSpec, WingSpec};
+use flapwright_geom::{
+    Airfoil, MeshResolution, PanelSpec, SweepReference, TrailingEdge, WingModel, WingSectionSpec,
+    WingSpec,
+};
 use nalgebra::{Isometry3, Point3, Vector3};
 use proptest::prelude::*;
 
-fn straight_wing(airfoil: Airfoil, chord_m: f64, span_m: f64, twist_deg: f64, panel: PanelSpec) -> WingSpec {
+fn straight_wing(
+    airfoil: Airfoil,
+    chord_m: f64,
+    span_m: f64,
+    twist_deg: f64,
+    panel: PanelSpec,
+) -> WingSpec {
     WingSpec {
         root_leading_edge_ac: Point3::new(0.2, 0.0, 0.1),
         sections: vec![
-            WingSectionSpec { y_m: 0.0, chord_m, twist_deg, airfoil: airfoil.clone() },
-            WingSectionSpec { y_m: span_m, chord_m, twist_deg, airfoil },
+            WingSectionSpec {
+                y_m: 0.0,
+                chord_m,
+                twist_deg,
+                airfoil: airfoil.clone(),
+            },
+            WingSectionSpec {
+                y_m: span_m,
+                chord_m,
+                twist_deg,
+                airfoil,
+            },
         ],
         panels: vec![panel],
         sweep_reference: SweepReference::LeadingEdge,
@@ -21,7 +40,13 @@ fn straight_wing(airfoil: Airfoil, chord_m: f64, span_m: f64, twist_deg: f64, pa
 
 fn wing_volume(spec: WingSpec, points_per_side: usize) -> f64 {
     let model = WingModel::try_new(spec, vec![], vec![], None).unwrap();
-    let parts = model.compute_parts(MeshResolution { points_per_side, spanwise_stations_per_m: 2.0, tube_segments: 8 }).unwrap();
+    let parts = model
+        .compute_parts(MeshResolution {
+            points_per_side,
+            spanwise_stations_per_m: 2.0,
+            tube_segments: 8,
+        })
+        .unwrap();
     assert!(parts[0].mesh.compute_topology_check().is_watertight());
     parts[0].mesh.compute_signed_volume()
 }
@@ -36,10 +61,34 @@ fn straight_wing_volume_is_polygon_area_times_span() {
     for (designation, te) in [("0012", TrailingEdge::Closed), ("4415", TrailingEdge::Open)] {
         let airfoil = Airfoil::naca(designation, 40, te).unwrap();
         let expected = airfoil.compute_area() * 1.5 * 1.5 * 3.0;
-        let plain = wing_volume(straight_wing(airfoil.clone(), 1.5, 3.0, 0.0, PanelSpec { sweep_deg: 0.0, dihedral_deg: 0.0 }), 40);
+        let plain = wing_volume(
+            straight_wing(
+                airfoil.clone(),
+                1.5,
+                3.0,
+                0.0,
+                PanelSpec {
+                    sweep_deg: 0.0,
+                    dihedral_deg: 0.0,
+                },
+            ),
+            40,
+        );
         assert_relative_eq!(plain, expected, max_relative = 1e-12);
         // Sweep, dihedral and constant twist shear or rotate the sections: same volume (Cavalieri).
-        let sheared = wing_volume(straight_wing(airfoil, 1.5, 3.0, 6.0, PanelSpec { sweep_deg: 35.0, dihedral_deg: -8.0 }), 40);
+        let sheared = wing_volume(
+            straight_wing(
+                airfoil,
+                1.5,
+                3.0,
+                6.0,
+                PanelSpec {
+                    sweep_deg: 35.0,
+                    dihedral_deg: -8.0,
+                },
+            ),
+            40,
+        );
         assert_relative_eq!(sheared, expected, max_relative = 1e-12);
     }
 }
@@ -49,14 +98,35 @@ fn section_area_converges_at_second_order() {
     let exact = analytic_area(0.12);
     let errors: Vec<f64> = [20, 40, 80, 160]
         .iter()
-        .map(|&n| (Airfoil::naca("0012", n, TrailingEdge::Closed).unwrap().compute_area() - exact).abs())
+        .map(|&n| {
+            (Airfoil::naca("0012", n, TrailingEdge::Closed)
+                .unwrap()
+                .compute_area()
+                - exact)
+                .abs()
+        })
         .collect();
     for w in errors.windows(2) {
         let order = (w[0] / w[1]).log2();
-        assert!((1.8..2.3).contains(&order), "observed order {order}, errors {errors:?}");
+        assert!(
+            (1.8..2.3).contains(&order),
+            "observed order {order}, errors {errors:?}"
+        );
     }
     // And the wing volume follows the section area.
-    let volume = wing_volume(straight_wing(Airfoil::naca("0012", 80, TrailingEdge::Closed).unwrap(), 1.0, 2.0, 0.0, PanelSpec { sweep_deg: 0.0, dihedral_deg: 0.0 }), 80);
+    let volume = wing_volume(
+        straight_wing(
+            Airfoil::naca("0012", 80, TrailingEdge::Closed).unwrap(),
+            1.0,
+            2.0,
+            0.0,
+            PanelSpec {
+                sweep_deg: 0.0,
+                dihedral_deg: 0.0,
+            },
+        ),
+        80,
+    );
     assert_relative_eq!(volume, exact * 2.0, max_relative = 2e-3);
 }
 

@@ -70,7 +70,9 @@ pub enum Error {
         max_input_m: f64,
     },
     /// The loop cannot close: the triangle A0 B0 A does not exist for this input.
-    #[error("cannot assemble at input {input_m} m: reachable range is [{min_input_m}, {max_input_m}] m")]
+    #[error(
+        "cannot assemble at input {input_m} m: reachable range is [{min_input_m}, {max_input_m}] m"
+    )]
     CannotAssemble {
         /// Requested input (m).
         input_m: f64,
@@ -126,5 +128,40 @@ pub enum Error {
         quantity: &'static str,
         /// Input value at which it happened.
         input_m: f64,
+    },
+    /// The general model's constraint count does not match its coordinates (3 per moving
+    /// body): it is under- or over-constrained.
+    #[error("model has {coordinates} coordinates but {constraints} constraint equations")]
+    ConstraintCountMismatch {
+        /// 3 × number of moving bodies.
+        coordinates: usize,
+        /// Joint equations plus the driver.
+        constraints: usize,
+    },
+    /// A joint or the driver refers to a body that does not exist.
+    #[error("body index {body} out of range (model has {bodies} bodies including ground)")]
+    UnknownBody {
+        /// Offending index.
+        body: usize,
+        /// Number of bodies, ground included.
+        bodies: usize,
+    },
+    /// Newton's method did not reach the residual tolerance.
+    #[error("no assembly at input {input}: residual {residual} after {iterations} Newton steps")]
+    NotConverged {
+        /// Input value (m or rad).
+        input: f64,
+        /// Final residual norm.
+        residual: f64,
+        /// Steps taken.
+        iterations: usize,
+    },
+    /// The constraint Jacobian is singular (toggle or locked configuration).
+    #[error("singular constraint Jacobian at input {input} (condition number {condition_number})")]
+    SingularJacobian {
+        /// Input value (m or rad).
+        input: f64,
+        /// 2-norm condition number.
+        condition_number: f64,
     },
 }

@@ -29,7 +29,10 @@ impl ScrewJack {
     /// Checks lead and radius (finite, > 0), friction (finite, >= 0) and that the screw can
     /// raise at all (2πr - f l > 0, else [`Error::ScrewJammed`]).
     pub fn validate(&self) -> Result<()> {
-        for (name, value) in [("lead_m", self.lead_m), ("mean_radius_m", self.mean_radius_m)] {
+        for (name, value) in [
+            ("lead_m", self.lead_m),
+            ("mean_radius_m", self.mean_radius_m),
+        ] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(Error::InvalidDimension { name, value });
             }

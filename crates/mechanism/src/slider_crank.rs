@@ -92,25 +92,27 @@ impl InvertedSliderCrank {
     /// which is equivalent to thesis eqs. 3.1.1/3.1.2 but keeps full accuracy near the
     /// toggles where `acos` loses half the digits.
     pub fn angles(&self, input_m: f64) -> Result<(f64, f64)> {
+        self.triangle(input_m)
+            .map(|(_, crank, slider)| (crank, slider))
+    }
+
+    /// (4 × area of A0 B0 A (m²), θ12 (rad), θ13 (rad)) at input `input_m` (m).
+    fn triangle(&self, input_m: f64) -> Result<(f64, f64, f64)> {
         let (a1, a2, s) = (self.base_distance_m, self.crank_length_m, input_m);
         let (min_input_m, max_input_m) = self.assembly_range_m();
+        let cannot = Error::CannotAssemble {
+            input_m,
+            min_input_m,
+            max_input_m,
+        };
         if !s.is_finite() || s <= 0.0 {
-            return Err(Error::CannotAssemble {
-                input_m,
-                min_input_m,
-                max_input_m,
-            });
+            return Err(cannot);
         }
-        let four_area = four_times_triangle_area(a1, a2, s, TRIANGLE_ROUNDING_TOLERANCE).ok_or(
-            Error::CannotAssemble {
-                input_m,
-                min_input_m,
-                max_input_m,
-            },
-        )?;
+        let four_area =
+            four_times_triangle_area(a1, a2, s, TRIANGLE_ROUNDING_TOLERANCE).ok_or(cannot)?;
         let crank = four_area.atan2(a1 * a1 + a2 * a2 - s * s);
         let at_base = four_area.atan2(a1 * a1 + s * s - a2 * a2);
-        Ok((crank, std::f64::consts::PI - at_base))
+        Ok((four_area, crank, std::f64::consts::PI - at_base))
     }
 
     /// Full kinematic state at input s34 = `input_m` (m), speed (m/s) and acceleration (m/s²).
@@ -121,8 +123,13 @@ impl InvertedSliderCrank {
     /// α13 = (a2 α12 cos δ + a2 ω12² sin δ - 2 ṡ ω13) / s, with δ = θ13 - θ12.
     /// Errors: [`Error::CannotAssemble`] outside the assembly range, [`Error::Toggle`] when
     /// the transmission angle is below `toggle_tolerance_rad`.
-    pub fn state(&self, input_m: f64, input_speed_mps: f64, input_accel_mps2: f64) -> Result<SliderCrankState> {
-        let (crank, slider) = self.angles(input_m)?;
+    pub fn state(
+        &self,
+        input_m: f64,
+        input_speed_mps: f64,
+        input_accel_mps2: f64,
+    ) -> Result<SliderCrankState> {
+        let (four_area, crank, slider) = self.triangle(input_m)?;
         let (a1, a2, s) = (self.base_distance_m, self.crank_length_m, input_m);
         let delta = slider - crank;
         let transmission = delta.min(std::f64::consts::PI - delta);
@@ -133,7 +140,9 @@ impl InvertedSliderCrank {
                 tolerance_rad: self.toggle_tolerance_rad,
             });
         }
-        let (sin_d, cos_d) = delta.sin_cos();
+        // sin δ and cos δ of the triangle's angle at A, algebraically (no trigonometry).
+        let sin_d = four_area / (2.0 * a2 * s);
+        let cos_d = (a2 * a2 + s * s - a1 * a1) / (2.0 * a2 * s);
         let rate_per_input = 1.0 / (a2 * sin_d);
         let crank_rate = input_speed_mps * rate_per_input;
         let slider_rate = input_speed_mps * cos_d / (s * sin_d);
@@ -144,10 +153,11 @@ impl InvertedSliderCrank {
             - 2.0 * input_speed_mps * slider_rate)
             / s;
 
-        let crank_dir = self.base_angle_rad + crank;
-        let slider_dir = self.base_angle_rad + slider;
-        let residual_x = a2 * crank_dir.cos() - a1 * self.base_angle_rad.cos() - s * slider_dir.cos();
-        let residual_y = a2 * crank_dir.sin() - a1 * self.base_angle_rad.sin() - s * slider_dir.sin();
+        // Loop residual in the frame turned by α0 (its length does not depend on α0).
+        let (sin12, cos12) = crank.sin_cos();
+        let (sin13, cos13) = slider.sin_cos();
+        let residual_x = a2 * cos12 - a1 - s * cos13;
+        let residual_y = a2 * sin12 - s * sin13;
 
         // Jacobian columns i a2 e^{iφ12} and -i s e^{iφ13}: JᵀJ = [[a2², -a2 s cosδ], [., s²]].
         let trace = a2 * a2 + s * s;
@@ -219,7 +229,13 @@ mod tests {
     #[test]
     fn beyond_reach_cannot_assemble() {
         let linkage = InvertedSliderCrank::try_new(5.0, 3.0, 0.0).unwrap();
-        assert!(matches!(linkage.state(8.5, 0.0, 0.0), Err(Error::CannotAssemble { .. })));
-        assert!(matches!(linkage.state(0.0, 0.0, 0.0), Err(Error::CannotAssemble { .. })));
+        assert!(matches!(
+            linkage.state(8.5, 0.0, 0.0),
+            Err(Error::CannotAssemble { .. })
+        ));
+        assert!(matches!(
+            linkage.state(0.0, 0.0, 0.0),
+            Err(Error::CannotAssemble { .. })
+        ));
     }
 }

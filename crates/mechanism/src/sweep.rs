@@ -87,7 +87,13 @@ impl CircularArcTrack {
         let last = (samples - 1) as f64;
         let end = self.synthesis.stroke_end_m;
         Ok(self.sweep_at(
-            (0..samples).map(|i| if i + 1 == samples { end } else { start + stroke * i as f64 / last }),
+            (0..samples).map(|i| {
+                if i + 1 == samples {
+                    end
+                } else {
+                    start + stroke * i as f64 / last
+                }
+            }),
             load,
         ))
     }

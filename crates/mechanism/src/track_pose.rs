@@ -1,6 +1,6 @@
 //! Position, velocity and acceleration of every named point of the track (thesis 3.1-3.4).
 
-use nalgebra::{Point2, Rotation2, Vector2};
+use nalgebra::{Point2, Vector2};
 use serde::Serialize;
 
 use crate::error::{Error, Result};
@@ -78,56 +78,64 @@ impl CircularArcTrack {
     pub fn pose(&self, input_m: f64, input_speed_mps: f64, input_accel_mps2: f64) -> Result<Pose> {
         let synthesis = &self.synthesis;
         let slack = SLOT_END_TOLERANCE * synthesis.stroke_end_m;
-        if !(input_m >= synthesis.stroke_start_m - slack && input_m <= synthesis.stroke_end_m + slack) {
+        if !(input_m >= synthesis.stroke_start_m - slack
+            && input_m <= synthesis.stroke_end_m + slack)
+        {
             return Err(Error::OutOfSlot {
                 input_m,
                 min_input_m: synthesis.stroke_start_m,
                 max_input_m: synthesis.stroke_end_m,
             });
         }
-        let linkage = self.linkage.state(input_m, input_speed_mps, input_accel_mps2)?;
+        let linkage = self
+            .linkage
+            .state(input_m, input_speed_mps, input_accel_mps2)?;
         Ok(self.pose_from_state(linkage))
     }
 
     pub(crate) fn pose_from_state(&self, linkage: SliderCrankState) -> Pose {
         let spec = &self.spec;
         let synthesis = &self.synthesis;
-        let deflection = linkage.crank_angle_rad - synthesis.stowed_crank_angle_rad;
-        let rotation = Rotation2::new(deflection);
+        // Unit vectors by complex products, to keep trigonometry to two sin_cos calls.
+        let turn = |cos: f64, sin: f64, v: Vector2<f64>| {
+            Vector2::new(cos * v.x - sin * v.y, sin * v.x + cos * v.y)
+        };
+        let base = synthesis.screw_mount_m.coords / spec.base_distance_m;
+        let (sin12, cos12) = linkage.crank_angle_rad.sin_cos();
+        let (sin13, cos13) = linkage.slider_angle_rad.sin_cos();
+        let crank_dir = turn(cos12, sin12, base);
+        let screw_dir = turn(cos13, sin13, base);
+        let stowed_dir = synthesis.nut_pivot_stowed_m.coords / spec.crank_length_m;
+        // Rotation by the deflection θ12 - θ12,i, taking stowed_dir onto crank_dir.
+        let (cos_defl, sin_defl) = (stowed_dir.dot(&crank_dir), stowed_dir.perp(&crank_dir));
         let (rate, accel) = (linkage.crank_rate_radps, linkage.crank_accel_radps2);
         let hinge = Point2::origin();
-        let flap_point = |stowed: Vector2<f64>| {
-            PointKinematics::on_rotating_body(hinge, rotation * stowed, rate, accel)
+        let flap_point = |stowed: Point2<f64>| {
+            PointKinematics::on_rotating_body(
+                hinge,
+                turn(cos_defl, sin_defl, stowed.coords),
+                rate,
+                accel,
+            )
         };
-        let polar = |radius: f64, angle: f64| Vector2::new(radius * angle.cos(), radius * angle.sin());
-        let crank_dir = spec.base_angle_rad + linkage.crank_angle_rad;
-        let screw_dir = spec.base_angle_rad + linkage.slider_angle_rad;
-        let nut_pivot_a = PointKinematics::on_rotating_body(
-            hinge,
-            polar(spec.crank_length_m, crank_dir),
-            rate,
-            accel,
-        );
-        let screw_end_b = PointKinematics::on_rotating_body(
-            synthesis.screw_mount_m,
-            polar(spec.screw_length_m, screw_dir),
-            linkage.slider_rate_radps,
-            linkage.slider_accel_radps2,
-        );
         Pose {
             linkage,
-            deflection_rad: deflection,
-            nut_pivot_a,
-            screw_end_b,
-            centre_of_mass_d: flap_point(spec.centre_of_mass_stowed_m.coords),
-            outer_pin_f: flap_point(polar(
-                spec.outer_slot_radius_m,
-                synthesis.outer_pin_angle_stowed_rad,
-            )),
-            inner_pin_g: flap_point(polar(
-                spec.inner_slot_radius_m,
-                synthesis.inner_pin_angle_stowed_rad,
-            )),
+            deflection_rad: linkage.crank_angle_rad - synthesis.stowed_crank_angle_rad,
+            nut_pivot_a: PointKinematics::on_rotating_body(
+                hinge,
+                crank_dir * spec.crank_length_m,
+                rate,
+                accel,
+            ),
+            screw_end_b: PointKinematics::on_rotating_body(
+                synthesis.screw_mount_m,
+                screw_dir * spec.screw_length_m,
+                linkage.slider_rate_radps,
+                linkage.slider_accel_radps2,
+            ),
+            centre_of_mass_d: flap_point(spec.centre_of_mass_stowed_m),
+            outer_pin_f: flap_point(synthesis.outer_pin_stowed_m),
+            inner_pin_g: flap_point(synthesis.inner_pin_stowed_m),
             diagnostics: PoseDiagnostics {
                 closure_residual_m: linkage.closure_residual_m,
                 jacobian_condition_number: linkage.jacobian_condition_number,

@@ -36,6 +36,10 @@ pub struct CircularArcTrackSpec {
     pub centre_of_mass_stowed_m: Point2<f64>,
     /// m_flap (kg): mass carried by this mechanism.
     pub flap_mass_kg: f64,
+    /// I_D (kg m²): flap moment of inertia about its centre of mass D, used only by load
+    /// cases with `include_inertia` (the thesis neglects inertia; its case has none).
+    #[serde(default)]
+    pub flap_moment_of_inertia_kgm2: f64,
     /// g (m/s²), acting along -y (thesis Appendix B small-angle assumption).
     pub gravity_mps2: f64,
     /// The screw jack (l, r, f of thesis section 3.6).
@@ -70,6 +74,7 @@ impl CircularArcTrackSpec {
             rotation_range_rad: 35f64.to_radians(),
             centre_of_mass_stowed_m: Point2::new(-0.030, 0.340),
             flap_mass_kg: 12.0,
+            flap_moment_of_inertia_kgm2: 0.0,
             gravity_mps2: 9.81,
             screw: ScrewJack {
                 lead_m: 0.008,

@@ -61,6 +61,10 @@ pub struct TrackSynthesis {
     pub inner_pin_angle_stowed_rad: f64,
     /// θF,i = β1 (rad), stowed direction of pin F.
     pub outer_pin_angle_stowed_rad: f64,
+    /// G stowed = F2,i = c1 e^{i(β1+β2)} (m).
+    pub inner_pin_stowed_m: Point2<f64>,
+    /// F stowed = F1,i = b1 e^{iβ1} (m).
+    pub outer_pin_stowed_m: Point2<f64>,
     /// Conditions worth a look that do not stop the design.
     pub warnings: Vec<SynthesisWarning>,
 }
@@ -137,7 +141,8 @@ impl CircularArcTrack {
         let (crank_i, slider_i) = linkage.angles(stroke_start_m)?;
         let (crank_f, _) = linkage.angles(stroke_end_m)?;
         let alpha0 = spec.base_angle_rad;
-        let polar = |radius: f64, angle: f64| Point2::new(radius * angle.cos(), radius * angle.sin());
+        let polar =
+            |radius: f64, angle: f64| Point2::new(radius * angle.cos(), radius * angle.sin());
         let nut_pivot_stowed_m = polar(a2, alpha0 + crank_i);
         let nut_pivot_deployed_m = polar(a2, alpha0 + crank_f);
 
@@ -152,7 +157,11 @@ impl CircularArcTrack {
         let theta_d = d.y.atan2(d.x);
         let g2 = (d - nut_pivot_stowed_m).norm();
         let alpha2 = guarded_acos((a2 * a2 + r_d * r_d - g2 * g2) / (2.0 * a2 * r_d), "alpha2")?;
-        let sigma: i8 = if wrap(theta_d - (alpha0 + crank_i)) > 0.0 { 1 } else { -1 };
+        let sigma: i8 = if wrap(theta_d - (alpha0 + crank_i)) > 0.0 {
+            1
+        } else {
+            -1
+        };
 
         let (b1, c1) = (spec.outer_slot_radius_m, spec.inner_slot_radius_m);
         let theta_f = spec.outer_slot_start_angle_rad;
@@ -197,6 +206,8 @@ impl CircularArcTrack {
             outer_pin_offset_angle_rad: beta6,
             inner_pin_angle_stowed_rad: theta_g,
             outer_pin_angle_stowed_rad: theta_f,
+            inner_pin_stowed_m: polar(c1, theta_g),
+            outer_pin_stowed_m: polar(b1, theta_f),
             warnings,
         };
         Ok(Self {
@@ -249,14 +260,50 @@ fn validate(spec: &CircularArcTrackSpec) -> Result<()> {
     let ranged = [
         ("rotation_range_rad", spec.rotation_range_rad, 0.0, PI),
         ("flap_mass_kg", spec.flap_mass_kg, 0.0, f64::MAX),
+        (
+            "flap_moment_of_inertia_kgm2",
+            spec.flap_moment_of_inertia_kgm2,
+            0.0,
+            f64::MAX,
+        ),
         ("gravity_mps2", spec.gravity_mps2, 0.0, f64::MAX),
         ("base_angle_rad", spec.base_angle_rad, -4.0 * PI, 4.0 * PI),
-        ("outer_slot_start_angle_rad", spec.outer_slot_start_angle_rad, -4.0 * PI, 4.0 * PI),
-        ("inner_slot_offset_angle_rad", spec.inner_slot_offset_angle_rad, -2.0 * PI, 2.0 * PI),
-        ("nominal_input_speed_mps", spec.nominal_input_speed_mps, -f64::MAX, f64::MAX),
-        ("nominal_input_accel_mps2", spec.nominal_input_accel_mps2, -f64::MAX, f64::MAX),
-        ("centre_of_mass_x_m", spec.centre_of_mass_stowed_m.x, -f64::MAX, f64::MAX),
-        ("centre_of_mass_y_m", spec.centre_of_mass_stowed_m.y, -f64::MAX, f64::MAX),
+        (
+            "outer_slot_start_angle_rad",
+            spec.outer_slot_start_angle_rad,
+            -4.0 * PI,
+            4.0 * PI,
+        ),
+        (
+            "inner_slot_offset_angle_rad",
+            spec.inner_slot_offset_angle_rad,
+            -2.0 * PI,
+            2.0 * PI,
+        ),
+        (
+            "nominal_input_speed_mps",
+            spec.nominal_input_speed_mps,
+            -f64::MAX,
+            f64::MAX,
+        ),
+        (
+            "nominal_input_accel_mps2",
+            spec.nominal_input_accel_mps2,
+            -f64::MAX,
+            f64::MAX,
+        ),
+        (
+            "centre_of_mass_x_m",
+            spec.centre_of_mass_stowed_m.x,
+            -f64::MAX,
+            f64::MAX,
+        ),
+        (
+            "centre_of_mass_y_m",
+            spec.centre_of_mass_stowed_m.y,
+            -f64::MAX,
+            f64::MAX,
+        ),
     ];
     for (name, value, min, max) in ranged {
         // `!(a <= b)` also rejects NaN.

@@ -10,16 +10,21 @@ pub const MM: f64 = 1000.0;
 
 /// The synthesised thesis case study.
 pub fn thesis_track() -> CircularArcTrack {
-    CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study()).expect("thesis case synthesises")
+    CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study())
+        .expect("thesis case synthesises")
 }
 
 /// A validation CSV (comment lines start with '#'): header and rows of raw cell strings.
+/// A parsed validation table.
 pub struct Table {
+    /// Column names.
     pub header: Vec<String>,
+    /// Raw cells.
     pub rows: Vec<Vec<String>>,
 }
 
 impl Table {
+    /// Index of a column.
     pub fn column(&self, name: &str) -> usize {
         self.header
             .iter()
@@ -27,6 +32,7 @@ impl Table {
             .unwrap_or_else(|| panic!("column {name} missing"))
     }
 
+    /// A cell as a number.
     pub fn number(&self, row: usize, name: &str) -> f64 {
         self.rows[row][self.column(name)]
             .parse()
@@ -59,7 +65,11 @@ pub fn load_table(name: &str) -> Table {
         .lines()
         .map(str::trim)
         .filter(|line| !line.is_empty() && !line.starts_with('#'));
-    let split = |line: &str| line.split(',').map(|c| c.trim().to_owned()).collect::<Vec<_>>();
+    let split = |line: &str| {
+        line.split(',')
+            .map(|c| c.trim().to_owned())
+            .collect::<Vec<_>>()
+    };
     let header = split(lines.next().expect("header"));
     let rows = lines.map(split).collect();
     Table { header, rows }

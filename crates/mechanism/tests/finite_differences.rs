@@ -44,14 +44,16 @@ fn rates_match_finite_differences_at_every_sample() {
     let margin = 1e-3;
     let samples = 41;
     for i in 0..samples {
-        let start = synthesis.stroke_start_m + margin
+        let start = synthesis.stroke_start_m
+            + margin
             + (synthesis.stroke_m - 2.0 * margin) * i as f64 / (samples - 1) as f64;
         let poses: Vec<Pose> = (-2..=2)
             .map(|k| pose_at_time(&track, start, k as f64 * STEP_S))
             .collect();
         let centre = &poses[2];
         let l = centre.linkage;
-        let angle = |f: fn(&Pose) -> f64| derivatives([0, 1, 2, 3, 4].map(|k| f(&poses[k])), STEP_S);
+        let angle =
+            |f: fn(&Pose) -> f64| derivatives([0, 1, 2, 3, 4].map(|k| f(&poses[k])), STEP_S);
         let (w12, a12) = angle(|p| p.linkage.crank_angle_rad);
         let (w13, a13) = angle(|p| p.linkage.slider_angle_rad);
         assert_relative_eq!(l.crank_rate_radps, w12, max_relative = 1e-6);
@@ -76,8 +78,14 @@ fn rates_match_finite_differences_at_every_sample() {
                 // passing through zero is still held to 1e-6.
                 let v_scale = kinematics.velocity_mps.norm();
                 let a_scale = kinematics.acceleration_mps2.norm();
-                assert!((v.x - velocity).abs() <= 1e-6 * v_scale, "point {index} axis {axis} v");
-                assert!((a.x - acceleration).abs() <= 1e-6 * a_scale, "point {index} axis {axis} a");
+                assert!(
+                    (v.x - velocity).abs() <= 1e-6 * v_scale,
+                    "point {index} axis {axis} v"
+                );
+                assert!(
+                    (a.x - acceleration).abs() <= 1e-6 * a_scale,
+                    "point {index} axis {axis} a"
+                );
             }
         }
     }
@@ -111,7 +119,11 @@ fn slot_reactions_balance_the_flap() {
     let track = thesis_track();
     let spec = *track.spec();
     let weight = spec.flap_mass_kg * spec.gravity_mps2;
-    for sample in track.sweep(25, &LoadCase::thesis_landing()).unwrap().samples {
+    for sample in track
+        .sweep(25, &LoadCase::thesis_landing())
+        .unwrap()
+        .samples
+    {
         let pose = track.pose(sample.input_m, 0.0, 0.0).unwrap();
         let forces = track.forces(&pose, &LoadCase::thesis_landing()).unwrap();
         let radial = |p: Point2<f64>| p.coords.normalize();
@@ -121,10 +133,78 @@ fn slot_reactions_balance_the_flap() {
             + radial(pose.outer_pin_f.position_m) * forces.outer_slot_reaction_n
             + along_screw
             + Vector2::new(0.0, -weight);
-        assert!(total.norm() <= 1e-9 * forces.outer_slot_reaction_n.abs(), "{total}");
+        assert!(
+            total.norm() <= 1e-9 * forces.outer_slot_reaction_n.abs(),
+            "{total}"
+        );
         let a = pose.nut_pivot_a.position_m.coords;
         let d = pose.centre_of_mass_d.position_m.coords;
-        let moment = a.perp(&along_screw) + d.perp(&Vector2::new(0.0, -weight)) - forces.external_moment_nm;
-        assert!(moment.abs() <= 1e-9 * forces.external_moment_nm.abs(), "{moment}");
+        let moment =
+            a.perp(&along_screw) + d.perp(&Vector2::new(0.0, -weight)) - forces.external_moment_nm;
+        assert!(
+            moment.abs() <= 1e-9 * forces.external_moment_nm.abs(),
+            "{moment}"
+        );
+    }
+}
+
+#[test]
+fn inertia_balances_by_virtual_work_and_by_newton_euler() {
+    use flapwright_mechanism::{CircularArcTrackSpec, ExternalMoment};
+    let spec = CircularArcTrackSpec {
+        flap_moment_of_inertia_kgm2: 0.8,
+        ..CircularArcTrackSpec::thesis_case_study()
+    };
+    let track = CircularArcTrack::synthesise(spec).unwrap();
+    let load = LoadCase {
+        name: "fast".into(),
+        external_moment: ExternalMoment::Linear {
+            stowed_nm: 110.0,
+            deployed_nm: 325.0,
+        },
+        include_inertia: true,
+    };
+    let weight = spec.flap_mass_kg * spec.gravity_mps2;
+    let synthesis = track.synthesis();
+    for i in 0..=12 {
+        let input = synthesis.stroke_start_m + synthesis.stroke_m * f64::from(i) / 12.0;
+        let pose = track.pose(input, 0.5, 2.0).unwrap();
+        let forces = track.forces(&pose, &load).unwrap();
+        assert_relative_eq!(
+            forces.actuator_force_virtual_work_n,
+            forces.actuator_force_n,
+            max_relative = 1e-9
+        );
+        // Newton-Euler on the flap: ΣF = m a_D, ΣM_A0 = I_D α12 + D × m a_D.
+        let a_d = pose.centre_of_mass_d.acceleration_mps2 * spec.flap_mass_kg;
+        let screw = spec.base_angle_rad + pose.linkage.slider_angle_rad;
+        let push = Vector2::new(screw.cos(), screw.sin()) * forces.actuator_force_n;
+        let total = pose.inner_pin_g.position_m.coords.normalize() * forces.inner_slot_reaction_n
+            + pose.outer_pin_f.position_m.coords.normalize() * forces.outer_slot_reaction_n
+            + push
+            + Vector2::new(0.0, -weight);
+        assert!((total - a_d).norm() <= 1e-9 * forces.outer_slot_reaction_n.abs());
+        let d = pose.centre_of_mass_d.position_m.coords;
+        let moment = pose.nut_pivot_a.position_m.coords.perp(&push)
+            + d.perp(&Vector2::new(0.0, -weight))
+            - forces.external_moment_nm;
+        let expected =
+            spec.flap_moment_of_inertia_kgm2 * pose.linkage.crank_accel_radps2 + d.perp(&a_d);
+        assert!((moment - expected).abs() <= 1e-9 * forces.external_moment_nm.abs());
+    }
+    // At the thesis's 35 mm/s the inertia changes F_input by far less than 0.1 % (Fig. 31).
+    let slow = LoadCase {
+        include_inertia: true,
+        ..LoadCase::thesis_landing()
+    };
+    for i in 0..=12 {
+        let input = synthesis.stroke_start_m + synthesis.stroke_m * f64::from(i) / 12.0;
+        let pose = track.pose(input, 0.035, 0.0).unwrap();
+        let with = track.forces(&pose, &slow).unwrap().actuator_force_n;
+        let without = track
+            .forces(&pose, &LoadCase::thesis_landing())
+            .unwrap()
+            .actuator_force_n;
+        assert_relative_eq!(with, without, max_relative = 1e-3);
     }
 }

@@ -3,6 +3,7 @@
 mod common;
 mod finite_differences;
 mod landing_gear;
+mod planar;
 mod properties;
 mod thesis_appendix_c;
 mod thesis_tables;

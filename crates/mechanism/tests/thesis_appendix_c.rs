@@ -18,11 +18,21 @@ fn kinematics_rows_match_the_spreadsheet() {
     for row in 0..table.rows.len() {
         let index = table.number(row, "row") as usize;
         let input = spreadsheet_input_m(&track, index);
-        assert_matches_print(input * MM, table.number(row, "s34_mm"), table.resolution(row, "s34_mm"), "s34");
+        assert_matches_print(
+            input * MM,
+            table.number(row, "s34_mm"),
+            table.resolution(row, "s34_mm"),
+            "s34",
+        );
         let pose = track.pose(input, 0.035, 0.0).unwrap();
         let l = pose.linkage;
         let check = |ours: f64, column: &str| {
-            assert_matches_print(ours, table.number(row, column), table.resolution(row, column), &format!("row {index} {column}"));
+            assert_matches_print(
+                ours,
+                table.number(row, column),
+                table.resolution(row, column),
+                &format!("row {index} {column}"),
+            );
         };
         check(l.crank_angle_rad, "theta12_rad");
         check(l.slider_angle_rad, "theta13_rad");
@@ -32,7 +42,14 @@ fn kinematics_rows_match_the_spreadsheet() {
         // The printed α12 column is the misprinted eq. 3.3.3: it is reproduced by the
         // misprint, and the corrected value is its negative (s̈34 = 0).
         let delta = l.slider_angle_rad - l.crank_angle_rad;
-        let misprint = alpha12_as_printed(a2, delta, 0.035, 0.0, l.crank_rate_radps, l.slider_rate_radps);
+        let misprint = alpha12_as_printed(
+            a2,
+            delta,
+            0.035,
+            0.0,
+            l.crank_rate_radps,
+            l.slider_rate_radps,
+        );
         check(misprint, "alpha12_printed_radps2");
         check(-l.crank_accel_radps2, "alpha12_printed_radps2");
         rows_checked += 1;
@@ -49,11 +66,18 @@ fn force_rows_match_the_spreadsheet() {
     let mut rows_checked = 0;
     for row in 0..table.rows.len() {
         let index = table.number(row, "row") as usize;
-        let pose = track.pose(spreadsheet_input_m(&track, index), 0.035, 0.0).unwrap();
+        let pose = track
+            .pose(spreadsheet_input_m(&track, index), 0.035, 0.0)
+            .unwrap();
         let c = track.forces(&pose, &cruise).unwrap();
         let l = track.forces(&pose, &landing).unwrap();
         let check = |ours: f64, column: &str| {
-            assert_matches_print(ours, table.number(row, column), table.resolution(row, column), &format!("row {index} {column}"));
+            assert_matches_print(
+                ours,
+                table.number(row, column),
+                table.resolution(row, column),
+                &format!("row {index} {column}"),
+            );
         };
         check(c.actuator_force_n, "cruise_F42_N");
         check(c.inner_slot_reaction_n, "cruise_G12G_N");

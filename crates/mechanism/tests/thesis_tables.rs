@@ -19,7 +19,10 @@ fn table2_inputs_are_the_case_study_constructor() {
         (spec.outer_slot_radius_m * MM, value("b1")),
         (spec.inner_slot_radius_m * MM, value("c1")),
         (spec.outer_slot_start_angle_rad.to_degrees(), value("beta1")),
-        (spec.inner_slot_offset_angle_rad.to_degrees(), value("beta2")),
+        (
+            spec.inner_slot_offset_angle_rad.to_degrees(),
+            value("beta2"),
+        ),
         (spec.rotation_range_rad.to_degrees(), value("beta3")),
         (spec.centre_of_mass_stowed_m.x * MM, value("xD")),
         (spec.centre_of_mass_stowed_m.y * MM, value("yD")),
@@ -47,7 +50,10 @@ fn table2_computed_cells_reproduced_to_printed_digits() {
         ("g2", synthesis.crank_to_centre_of_mass_m * MM),
         ("p2", synthesis.centre_of_mass_to_inner_pin_m * MM),
         ("q2", synthesis.centre_of_mass_to_outer_pin_m * MM),
-        ("alpha2", synthesis.centre_of_mass_offset_angle_rad.to_degrees()),
+        (
+            "alpha2",
+            synthesis.centre_of_mass_offset_angle_rad.to_degrees(),
+        ),
     ];
     let mut checked = 0;
     for (row, cells) in table.rows.iter().enumerate() {
@@ -77,8 +83,16 @@ fn collinearity_gives_same_screw_direction_and_full_rotation_at_both_ends() {
     let synthesis = track.synthesis();
     let spec = track.spec();
     let end = track.pose(synthesis.stroke_end_m, 0.0, 0.0).unwrap();
-    assert_relative_eq!(end.linkage.slider_angle_rad, synthesis.end_slider_angle_rad, max_relative = 1e-12);
-    assert_relative_eq!(end.deflection_rad, spec.rotation_range_rad, max_relative = 1e-12);
+    assert_relative_eq!(
+        end.linkage.slider_angle_rad,
+        synthesis.end_slider_angle_rad,
+        max_relative = 1e-12
+    );
+    assert_relative_eq!(
+        end.deflection_rad,
+        spec.rotation_range_rad,
+        max_relative = 1e-12
+    );
     // Transmission angle at both ends is (π - β3)/2 (step 8).
     let start = track.pose(synthesis.stroke_start_m, 0.0, 0.0).unwrap();
     for pose in [start, end] {
@@ -92,7 +106,11 @@ fn collinearity_gives_same_screw_direction_and_full_rotation_at_both_ends() {
     let theta_d = spec.base_angle_rad
         + synthesis.stowed_crank_angle_rad
         + f64::from(synthesis.centre_of_mass_side) * synthesis.centre_of_mass_offset_angle_rad;
-    assert_relative_eq!(theta_d, synthesis.centre_of_mass_angle_stowed_rad, max_relative = 1e-12);
+    assert_relative_eq!(
+        theta_d,
+        synthesis.centre_of_mass_angle_stowed_rad,
+        max_relative = 1e-12
+    );
     assert_relative_eq!(
         theta_d - synthesis.inner_pin_offset_angle_rad,
         synthesis.inner_pin_angle_stowed_rad,
@@ -104,6 +122,9 @@ fn collinearity_gives_same_screw_direction_and_full_rotation_at_both_ends() {
         max_relative = 1e-12
     );
 }
+
+/// Reads one column of a sweep sample.
+type Column = fn(&flapwright_mechanism::SweepSample) -> f64;
 
 fn table3_value(quantity: &str, scenario: &str, statistic: &str) -> f64 {
     let table = load_table("thesis-table3.csv");
@@ -118,7 +139,9 @@ fn table3_value(quantity: &str, scenario: &str, statistic: &str) -> f64 {
 #[test]
 fn table3_cruise_reproduced_within_half_percent() {
     let track = thesis_track();
-    let pose = track.pose(track.synthesis().stroke_start_m, 0.035, 0.0).unwrap();
+    let pose = track
+        .pose(track.synthesis().stroke_start_m, 0.035, 0.0)
+        .unwrap();
     let forces = track.forces(&pose, &LoadCase::thesis_cruise()).unwrap();
     let pairs = [
         ("F_input", forces.actuator_force_n),
@@ -128,7 +151,11 @@ fn table3_cruise_reproduced_within_half_percent() {
         ("T_L", forces.screw.lower_torque_nm * MM),
     ];
     for (quantity, ours) in pairs {
-        assert_relative_eq!(ours, table3_value(quantity, "cruise", "stowed"), max_relative = 5e-3);
+        assert_relative_eq!(
+            ours,
+            table3_value(quantity, "cruise", "stowed"),
+            max_relative = 5e-3
+        );
     }
 }
 
@@ -137,7 +164,7 @@ fn table3_landing_min_max_reproduced_within_half_percent() {
     let track = thesis_track();
     let sweep = track.sweep(401, &LoadCase::thesis_landing()).unwrap();
     assert!(sweep.stopped.is_none());
-    let columns: [(&str, fn(&flapwright_mechanism::SweepSample) -> f64); 5] = [
+    let columns: [(&str, Column); 5] = [
         ("F_input", |s| s.actuator_force_n),
         ("G12G", |s| s.joint_reactions_n.inner_pin_g_n),
         ("G12F", |s| s.joint_reactions_n.outer_pin_f_n),
@@ -148,7 +175,15 @@ fn table3_landing_min_max_reproduced_within_half_percent() {
         let values: Vec<f64> = sweep.samples.iter().map(column).collect();
         let min = values.iter().copied().fold(f64::INFINITY, f64::min);
         let max = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        assert_relative_eq!(min, table3_value(quantity, "landing", "min"), max_relative = 5e-3);
-        assert_relative_eq!(max, table3_value(quantity, "landing", "max"), max_relative = 5e-3);
+        assert_relative_eq!(
+            min,
+            table3_value(quantity, "landing", "min"),
+            max_relative = 5e-3
+        );
+        assert_relative_eq!(
+            max,
+            table3_value(quantity, "landing", "max"),
+            max_relative = 5e-3
+        );
     }
 }

@@ -67,7 +67,10 @@ pub fn parse_boundary_csv(reader: impl BufRead) -> Result<Vec<BoundaryPoint>> {
     let mut header_seen = false;
     for (index, line) in reader.lines().enumerate() {
         let line_number = index + 1;
-        let line = line.map_err(|_| Error::BoundaryCsvField { line: line_number, column: "(unreadable line)" })?;
+        let line = line.map_err(|_| Error::BoundaryCsvField {
+            line: line_number,
+            column: "(unreadable line)",
+        })?;
         let trimmed = line.trim();
         if trimmed.is_empty() || trimmed.starts_with('#') {
             continue;
@@ -78,14 +81,28 @@ pub fn parse_boundary_csv(reader: impl BufRead) -> Result<Vec<BoundaryPoint>> {
         }
         let fields = split_csv(trimmed);
         let field = |i: usize, column: &'static str| {
-            fields.get(i).map(|s| s.trim()).ok_or(Error::BoundaryCsvField { line: line_number, column })
+            fields
+                .get(i)
+                .map(|s| s.trim())
+                .ok_or(Error::BoundaryCsvField {
+                    line: line_number,
+                    column,
+                })
         };
         let number = |i: usize, column: &'static str| -> Result<f64> {
-            let value: f64 = field(i, column)?.parse().map_err(|_| Error::BoundaryCsvField { line: line_number, column })?;
+            let value: f64 = field(i, column)?
+                .parse()
+                .map_err(|_| Error::BoundaryCsvField {
+                    line: line_number,
+                    column,
+                })?;
             if value.is_finite() {
                 Ok(value)
             } else {
-                Err(Error::BoundaryCsvField { line: line_number, column })
+                Err(Error::BoundaryCsvField {
+                    line: line_number,
+                    column,
+                })
             }
         };
         let optional = |i: usize, column: &'static str| -> Result<Option<f64>> {
@@ -98,7 +115,12 @@ pub fn parse_boundary_csv(reader: impl BufRead) -> Result<Vec<BoundaryPoint>> {
         points.push(BoundaryPoint {
             plane: field(0, "plane")?.to_owned(),
             boundary: field(1, "boundary")?.to_owned(),
-            point: field(3, "point")?.parse().map_err(|_| Error::BoundaryCsvField { line: line_number, column: "point" })?,
+            point: field(3, "point")?
+                .parse()
+                .map_err(|_| Error::BoundaryCsvField {
+                    line: line_number,
+                    column: "point",
+                })?,
             r_mm: optional(4, "r_mm")?,
             theta_deg: optional(5, "theta_deg")?,
             theta_rad: optional(6, "theta_rad")?,
@@ -107,11 +129,25 @@ pub fn parse_boundary_csv(reader: impl BufRead) -> Result<Vec<BoundaryPoint>> {
             polar_consistent: match field(9, "polar_consistent")? {
                 "true" => true,
                 "false" => false,
-                _ => return Err(Error::BoundaryCsvField { line: line_number, column: "polar_consistent" }),
+                _ => {
+                    return Err(Error::BoundaryCsvField {
+                        line: line_number,
+                        column: "polar_consistent",
+                    })
+                }
             },
         });
     }
     Ok(points)
+}
+
+/// The points (station frame, m) of one boundary of one plane, in table order, e.g.
+/// `boundary_points_m(&rows, "outer", "flap")`.
+pub fn boundary_points_m(rows: &[BoundaryPoint], plane: &str, boundary: &str) -> Vec<Point2<f64>> {
+    rows.iter()
+        .filter(|r| r.plane == plane && r.boundary == boundary)
+        .map(BoundaryPoint::position_m)
+        .collect()
 }
 
 /// Distance statistics of reference points to a set of polygons, metres.
@@ -129,14 +165,21 @@ pub struct Deviation {
 pub fn distance_to_segment_m(point: &Point2<f64>, a: &Point2<f64>, b: &Point2<f64>) -> f64 {
     let ab = b - a;
     let length_squared = ab.norm_squared();
-    let t = if length_squared > 0.0 { ((point - a).dot(&ab) / length_squared).clamp(0.0, 1.0) } else { 0.0 };
+    let t = if length_squared > 0.0 {
+        ((point - a).dot(&ab) / length_squared).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     (point - (a + ab * t)).norm()
 }
 
 /// For every reference point, the distance to the nearest edge of any closed polygon in
 /// `polygons` (station frame, m); returns max and mean, or `None` when there is no point
 /// or no edge to measure against.
-pub fn boundary_deviation(polygons: &[Vec<Point2<f64>>], reference_points: &[Point2<f64>]) -> Option<Deviation> {
+pub fn boundary_deviation(
+    polygons: &[Vec<Point2<f64>>],
+    reference_points: &[Point2<f64>],
+) -> Option<Deviation> {
     let edges: Vec<(Point2<f64>, Point2<f64>)> = polygons
         .iter()
         .filter(|p| p.len() >= 2)
@@ -147,7 +190,12 @@ pub fn boundary_deviation(polygons: &[Vec<Point2<f64>>], reference_points: &[Poi
     }
     let distances: Vec<f64> = reference_points
         .iter()
-        .map(|q| edges.iter().map(|(a, b)| distance_to_segment_m(q, a, b)).fold(f64::INFINITY, f64::min))
+        .map(|q| {
+            edges
+                .iter()
+                .map(|(a, b)| distance_to_segment_m(q, a, b))
+                .fold(f64::INFINITY, f64::min)
+        })
         .collect();
     Some(Deviation {
         max_m: distances.iter().copied().fold(0.0, f64::max),

@@ -5,7 +5,10 @@
 //! plane perpendicular to gravity (aircraft -z) towards the nose (aircraft -x), y completing
 //! a right-handed frame (up-ish).
 
-use nalgebra::{Isometry3, Matrix3, Point2, Point3, Rotation3, Translation3, Unit, UnitQuaternion, Vector2, Vector3};
+use nalgebra::{
+    Isometry3, Matrix3, Point2, Point3, Rotation3, Translation3, Unit, UnitQuaternion, Vector2,
+    Vector3,
+};
 
 use crate::error::{finite, Error, Result};
 
@@ -35,6 +38,9 @@ pub struct StationPoint {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StationFrame {
     aircraft_from_station: Isometry3<f64>,
+    /// The axes exactly as constructed (columns of the rotation), aircraft frame; the
+    /// quaternion in `aircraft_from_station` reproduces them to rounding (~1e-16).
+    axes_ac: [Vector3<f64>; 3],
 }
 
 impl StationFrame {
@@ -43,7 +49,10 @@ impl StationFrame {
     /// The normal becomes the station z axis, flipped if needed to point outboard
     /// (aircraft +y); x = normalize(e_z x z) flipped to point towards the nose; y = z x x.
     /// Errors: non-finite input, or a normal within [`VERTICAL_SINE_TOL`] of vertical.
-    pub fn try_from_origin_and_normal(origin_ac: Point3<f64>, normal_ac: &Unit<Vector3<f64>>) -> Result<Self> {
+    pub fn try_from_origin_and_normal(
+        origin_ac: Point3<f64>,
+        normal_ac: &Unit<Vector3<f64>>,
+    ) -> Result<Self> {
         for (quantity, value) in [
             ("station origin x", origin_ac.x),
             ("station origin y", origin_ac.y),
@@ -61,7 +70,10 @@ impl StationFrame {
         let horizontal = Vector3::z().cross(&z_axis);
         let sine = horizontal.norm();
         if sine < VERTICAL_SINE_TOL {
-            return Err(Error::NormalAlongGravity { normal_ac: [z_axis.x, z_axis.y, z_axis.z], sine_limit: VERTICAL_SINE_TOL });
+            return Err(Error::NormalAlongGravity {
+                normal_ac: [z_axis.x, z_axis.y, z_axis.z],
+                sine_limit: VERTICAL_SINE_TOL,
+            });
         }
         let mut x_axis = horizontal / sine;
         if x_axis.x > 0.0 || (x_axis.x == 0.0 && x_axis.y < 0.0) {
@@ -70,12 +82,14 @@ impl StationFrame {
         // Re-orthogonalise z against x (x is exactly horizontal; z is unit to rounding).
         let y_axis = z_axis.cross(&x_axis).normalize();
         let z_axis = x_axis.cross(&y_axis);
-        let rotation = Rotation3::from_matrix_unchecked(Matrix3::from_columns(&[x_axis, y_axis, z_axis]));
+        let rotation =
+            Rotation3::from_matrix_unchecked(Matrix3::from_columns(&[x_axis, y_axis, z_axis]));
         Ok(Self {
             aircraft_from_station: Isometry3::from_parts(
                 Translation3::from(origin_ac.coords),
                 UnitQuaternion::from_rotation_matrix(&rotation),
             ),
+            axes_ac: [x_axis, y_axis, z_axis],
         })
     }
 
@@ -96,28 +110,34 @@ impl StationFrame {
 
     /// Station x axis (in plane, horizontal, towards the nose) in the aircraft frame.
     pub fn x_axis_ac(&self) -> Unit<Vector3<f64>> {
-        Unit::new_unchecked(self.aircraft_from_station.rotation * Vector3::x())
+        Unit::new_unchecked(self.axes_ac[0])
     }
 
     /// Station y axis (in plane, up-ish) in the aircraft frame.
     pub fn y_axis_ac(&self) -> Unit<Vector3<f64>> {
-        Unit::new_unchecked(self.aircraft_from_station.rotation * Vector3::y())
+        Unit::new_unchecked(self.axes_ac[1])
     }
 
     /// Station z axis (plane normal, outboard) in the aircraft frame.
     pub fn z_axis_ac(&self) -> Unit<Vector3<f64>> {
-        Unit::new_unchecked(self.aircraft_from_station.rotation * Vector3::z())
+        Unit::new_unchecked(self.axes_ac[2])
     }
 
     /// Coordinates in this station frame of a point given in the aircraft frame (m).
+    /// Computed as dot products with the constructed axes, so a point exactly on the
+    /// plane gets an offset of exactly 0 more often than through the quaternion.
     pub fn station_point_from_aircraft(&self, point_ac: &Point3<f64>) -> StationPoint {
-        let p = self.aircraft_from_station.inverse_transform_point(point_ac);
-        StationPoint { in_plane_m: Point2::new(p.x, p.y), normal_offset_m: p.z }
+        let d = point_ac - self.origin_ac();
+        StationPoint {
+            in_plane_m: Point2::new(self.axes_ac[0].dot(&d), self.axes_ac[1].dot(&d)),
+            normal_offset_m: self.axes_ac[2].dot(&d),
+        }
     }
 
     /// Aircraft-frame position of an in-plane point given in station coordinates (m).
     pub fn aircraft_point_from_station(&self, point_st: &Point2<f64>) -> Point3<f64> {
-        self.aircraft_from_station.transform_point(&Point3::new(point_st.x, point_st.y, 0.0))
+        self.aircraft_from_station
+            .transform_point(&Point3::new(point_st.x, point_st.y, 0.0))
     }
 
     /// Aircraft-frame position of a station point (in-plane coordinates plus offset), m.
@@ -146,7 +166,11 @@ mod tests {
 
     #[test]
     fn unswept_axis_gives_nose_and_up() {
-        let frame = StationFrame::try_from_origin_and_normal(Point3::new(1.0, 2.0, 0.5), &Vector3::y_axis()).unwrap();
+        let frame = StationFrame::try_from_origin_and_normal(
+            Point3::new(1.0, 2.0, 0.5),
+            &Vector3::y_axis(),
+        )
+        .unwrap();
         assert!((frame.x_axis_ac().into_inner() - Vector3::new(-1.0, 0.0, 0.0)).norm() < 1e-15);
         assert!((frame.y_axis_ac().into_inner() - Vector3::new(0.0, 0.0, 1.0)).norm() < 1e-15);
         assert!((frame.z_axis_ac().into_inner() - Vector3::new(0.0, 1.0, 0.0)).norm() < 1e-15);
@@ -154,7 +178,8 @@ mod tests {
 
     #[test]
     fn vertical_normal_is_rejected() {
-        let err = StationFrame::try_from_origin_and_normal(Point3::origin(), &Vector3::z_axis()).unwrap_err();
+        let err = StationFrame::try_from_origin_and_normal(Point3::origin(), &Vector3::z_axis())
+            .unwrap_err();
         assert!(matches!(err, Error::NormalAlongGravity { .. }));
     }
 }

@@ -8,7 +8,8 @@
 //! - [`HingeAxis`], [`Plane`]: the flap rotation axis and flap side planes (aircraft frame).
 //! - [`thesis_stations`]: planes perpendicular to the axis (thesis `000`, Ch. 4 steps 1-3).
 //! - [`FlapDeployment`], [`FlapSetting`]: flap poses from deflection, conical rotations and
-//!   gap/overlap translation (Zaccai et al. `003`, section 2, Figs. 2-3, 5).
+//!   gap/overlap translation (Zaccai et al. `003`, section 2, Figs. 2-3, 5);
+//!   [`setting_from_section_shifts`] derives θ_o, θ_g from the shifts of two sections.
 //! - [`skewed_plane_normal_ac`]: plane normal = skew direction x dihedral vector (`003` Fig. 4).
 //! - [`compute_station`] → [`Station`]: frame, skew angle and the out-of-plane residual
 //!   of each attachment point over the deployment ([`out_of_plane_residual_m`]).
@@ -60,6 +61,7 @@
 //!   [`Error::OpenSection`].
 
 pub mod boundary;
+pub mod conical;
 pub mod error;
 pub mod frame;
 pub mod motion;
@@ -70,13 +72,22 @@ pub mod skew;
 pub mod station;
 pub mod thesis;
 
-pub use boundary::{boundary_deviation, distance_to_segment_m, parse_boundary_csv, BoundaryPoint, Deviation};
+pub use boundary::{
+    boundary_deviation, distance_to_segment_m, parse_boundary_csv, BoundaryPoint, Deviation,
+};
+pub use conical::{setting_from_section_shifts, SectionShift};
 pub use error::{Error, Result};
 pub use frame::{StationFrame, StationPoint, DIRECTION_TOL, VERTICAL_SINE_TOL};
 pub use motion::{FlapDeployment, FlapSetting};
 pub use plane::{unit_direction, HingeAxis, Plane, AXIS_PLANE_COSINE_TOL};
 pub use report::{FrameReport, SectionReport, StationReport};
 pub use section::{cut_mesh, signed_area_m2, Section, SECTION_MERGE_TOL_M};
-pub use skew::{angle_to_streamwise_plane_rad, dihedral_up_vector_ac, skew_angle_rad, skew_direction_ac, skewed_plane_normal_ac};
-pub use station::{compute_station, out_of_plane_residual_m, PlaneConstruction, Station, PURE_ROTATION_ANGLE_TOL_RAD, PURE_ROTATION_LENGTH_TOL_M};
+pub use skew::{
+    angle_to_streamwise_plane_rad, dihedral_up_vector_ac, skew_angle_rad, skew_direction_ac,
+    skewed_plane_normal_ac,
+};
+pub use station::{
+    compute_station, out_of_plane_residual_m, PlaneConstruction, Station,
+    PURE_ROTATION_ANGLE_TOL_RAD, PURE_ROTATION_LENGTH_TOL_M,
+};
 pub use thesis::{thesis_stations, ThesisStations};

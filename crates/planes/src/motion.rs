@@ -26,7 +26,12 @@ pub struct FlapSetting {
 impl FlapSetting {
     /// The stowed setting: no rotation, no translation.
     pub fn stowed() -> Self {
-        Self { deflection_rad: 0.0, overlap_rotation_rad: 0.0, gap_rotation_rad: 0.0, base_translation_ac: Vector3::zeros() }
+        Self {
+            deflection_rad: 0.0,
+            overlap_rotation_rad: 0.0,
+            gap_rotation_rad: 0.0,
+            base_translation_ac: Vector3::zeros(),
+        }
     }
 
     fn interpolated(&self, other: &Self, fraction: f64) -> Self {
@@ -35,7 +40,9 @@ impl FlapSetting {
             deflection_rad: mix(self.deflection_rad, other.deflection_rad),
             overlap_rotation_rad: mix(self.overlap_rotation_rad, other.overlap_rotation_rad),
             gap_rotation_rad: mix(self.gap_rotation_rad, other.gap_rotation_rad),
-            base_translation_ac: self.base_translation_ac.lerp(&other.base_translation_ac, fraction),
+            base_translation_ac: self
+                .base_translation_ac
+                .lerp(&other.base_translation_ac, fraction),
         }
     }
 }
@@ -65,7 +72,9 @@ impl FlapDeployment {
             * UnitQuaternion::from_axis_angle(&self.overlap_axis_ac, setting.overlap_rotation_rad)
             * UnitQuaternion::from_axis_angle(&self.hinge.direction_ac, setting.deflection_rad);
         let base = self.base_point_ac.coords;
-        Translation3::from(base + setting.base_translation_ac) * rotation * Translation3::from(-base)
+        Translation3::from(base + setting.base_translation_ac)
+            * rotation
+            * Translation3::from(-base)
     }
 
     /// Pose at `deployment` in [0, 1] along the settings (equally spaced, parameters
@@ -75,23 +84,34 @@ impl FlapDeployment {
         finite("deployment", deployment)?;
         let count = self.settings.len();
         if count == 0 {
-            return Err(Error::TooFew { quantity: "flap settings", value: 0, minimum: 1 });
+            return Err(Error::TooFew {
+                quantity: "flap settings",
+                value: 0,
+                minimum: 1,
+            });
         }
         if count == 1 {
             return Ok(self.pose_ac(&self.settings[0]));
         }
         let position = deployment.clamp(0.0, 1.0) * (count - 1) as f64;
         let index = (position.floor() as usize).min(count - 2);
-        let setting = self.settings[index].interpolated(&self.settings[index + 1], position - index as f64);
+        let setting =
+            self.settings[index].interpolated(&self.settings[index + 1], position - index as f64);
         Ok(self.pose_ac(&setting))
     }
 
     /// `samples` poses equally spaced over the deployment (first stowed, last final).
     pub fn sample_poses_ac(&self, samples: usize) -> Result<Vec<Isometry3<f64>>> {
         if samples < 2 {
-            return Err(Error::TooFew { quantity: "deployment samples", value: samples, minimum: 2 });
+            return Err(Error::TooFew {
+                quantity: "deployment samples",
+                value: samples,
+                minimum: 2,
+            });
         }
-        (0..samples).map(|i| self.pose_at_ac(i as f64 / (samples - 1) as f64)).collect()
+        (0..samples)
+            .map(|i| self.pose_at_ac(i as f64 / (samples - 1) as f64))
+            .collect()
     }
 
     /// True when every setting is a pure rotation about the stowed hinge line (no conical

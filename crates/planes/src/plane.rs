@@ -12,7 +12,11 @@ pub const AXIS_PLANE_COSINE_TOL: f64 = 1e-6;
 pub fn unit_direction(quantity: &'static str, vector: Vector3<f64>) -> Result<Unit<Vector3<f64>>> {
     let norm = finite(quantity, vector.norm())?;
     if norm < DIRECTION_TOL {
-        return Err(Error::ZeroLengthDirection { quantity, norm, limit: DIRECTION_TOL });
+        return Err(Error::ZeroLengthDirection {
+            quantity,
+            norm,
+            limit: DIRECTION_TOL,
+        });
     }
     Ok(Unit::new_unchecked(vector / norm))
 }
@@ -30,14 +34,21 @@ pub struct HingeAxis {
 impl HingeAxis {
     /// Axis through `point_ac` along `direction_ac` (any length; flipped to point outboard).
     pub fn try_new(point_ac: Point3<f64>, direction_ac: Vector3<f64>) -> Result<Self> {
-        for (quantity, value) in [("hinge point x", point_ac.x), ("hinge point y", point_ac.y), ("hinge point z", point_ac.z)] {
+        for (quantity, value) in [
+            ("hinge point x", point_ac.x),
+            ("hinge point y", point_ac.y),
+            ("hinge point z", point_ac.z),
+        ] {
             finite(quantity, value)?;
         }
         let mut direction = unit_direction("hinge axis", direction_ac)?;
         if direction.y < 0.0 {
             direction = -direction;
         }
-        Ok(Self { point_ac, direction_ac: direction })
+        Ok(Self {
+            point_ac,
+            direction_ac: direction,
+        })
     }
 
     /// Axis through two points (aircraft frame, m), e.g. the forward attachment points.
@@ -63,7 +74,10 @@ pub struct Plane {
 impl Plane {
     /// Plane through `point_ac` with normal along `normal_ac` (any length).
     pub fn try_new(point_ac: Point3<f64>, normal_ac: Vector3<f64>) -> Result<Self> {
-        Ok(Self { point_ac, normal_ac: unit_direction("plane normal", normal_ac)? })
+        Ok(Self {
+            point_ac,
+            normal_ac: unit_direction("plane normal", normal_ac)?,
+        })
     }
 
     /// Signed distance (m) of `point_ac` from the plane, along its normal.
@@ -76,7 +90,11 @@ impl Plane {
     pub fn intersect_axis(&self, axis: &HingeAxis, plane: &'static str) -> Result<Point3<f64>> {
         let cosine = self.normal_ac.dot(&axis.direction_ac);
         if cosine.abs() < AXIS_PLANE_COSINE_TOL {
-            return Err(Error::AxisParallelToPlane { plane, cosine: cosine.abs(), limit: AXIS_PLANE_COSINE_TOL });
+            return Err(Error::AxisParallelToPlane {
+                plane,
+                cosine: cosine.abs(),
+                limit: AXIS_PLANE_COSINE_TOL,
+            });
         }
         let distance_m = -self.signed_distance_m(&axis.point_ac) / cosine;
         Ok(axis.point_at(distance_m))

@@ -68,7 +68,11 @@ impl StationReport {
                 .iter()
                 .map(|s| SectionReport {
                     part_name: s.part_name.clone(),
-                    polygons: s.polygons.iter().map(|p| p.iter().map(|q| [q.x, q.y]).collect()).collect(),
+                    polygons: s
+                        .polygons
+                        .iter()
+                        .map(|p| p.iter().map(|q| [q.x, q.y]).collect())
+                        .collect(),
                 })
                 .collect(),
         }

@@ -42,11 +42,50 @@ fn edge_key(a: u32, b: u32) -> EdgeKey {
 }
 
 /// Cuts `mesh` (closed, consistently wound, aircraft frame, m) by the plane of `frame`.
-/// Errors: a triangle index out of range, or a cut that does not close (open or
-/// non-manifold mesh at the plane).
+/// Errors: a non-finite vertex, a triangle index out of range, or a cut that does not
+/// close (open or non-manifold mesh at the plane).
+///
+/// ```
+/// use flapwright_geom::TriMesh;
+/// use flapwright_planes::{cut_mesh, signed_area_m2, StationFrame};
+/// use nalgebra::{Point3, Vector3};
+///
+/// // Tetrahedron with outward winding, cut by the plane y = 0.25 (normal outboard).
+/// let mesh = TriMesh {
+///     vertices: vec![
+///         Point3::new(0.0, 0.0, 0.0),
+///         Point3::new(1.0, 0.0, 0.0),
+///         Point3::new(0.0, 1.0, 0.0),
+///         Point3::new(0.0, 0.0, 1.0),
+///     ],
+///     triangles: vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+/// };
+/// let frame = StationFrame::try_from_origin_and_normal(Point3::new(0.0, 0.25, 0.0), &Vector3::y_axis())?;
+/// let section = cut_mesh(&mesh, &frame, "tetrahedron")?;
+/// assert_eq!(section.polygons.len(), 1);
+/// // A right triangle with legs 0.75: area 0.28125 m², counter-clockwise.
+/// assert!((signed_area_m2(&section.polygons[0]) - 0.28125).abs() < 1e-15);
+/// # Ok::<(), flapwright_planes::Error>(())
+/// ```
 pub fn cut_mesh(mesh: &TriMesh, frame: &StationFrame, part_name: &str) -> Result<Section> {
-    let station_from_aircraft = frame.station_from_aircraft();
-    let points: Vec<_> = mesh.vertices.iter().map(|v| station_from_aircraft.transform_point(v)).collect();
+    let points: Vec<_> = mesh
+        .vertices
+        .iter()
+        .map(|v| {
+            let p = frame.station_point_from_aircraft(v);
+            nalgebra::Point3::new(p.in_plane_m.x, p.in_plane_m.y, p.normal_offset_m)
+        })
+        .collect();
+    if let Some(value) = points
+        .iter()
+        .flat_map(|p| [p.x, p.y, p.z])
+        .find(|v| !v.is_finite())
+    {
+        return Err(Error::NotFinite {
+            quantity: "mesh vertex coordinate (station frame)",
+            value,
+        });
+    }
     let above = |i: u32| points[i as usize].z >= 0.0;
     let mut crossings: HashMap<EdgeKey, Point2<f64>> = HashMap::new();
     let mut segments: Vec<(EdgeKey, EdgeKey)> = Vec::new();
@@ -73,7 +112,9 @@ pub fn cut_mesh(mesh: &TriMesh, frame: &StationFrame, part_name: &str) -> Result
                 _ => {}
             }
         }
-        let (Some(entering), Some(leaving)) = (entering, leaving) else { continue };
+        let (Some(entering), Some(leaving)) = (entering, leaving) else {
+            continue;
+        };
         for key in [entering, leaving] {
             crossings.entry(key).or_insert_with(|| {
                 let (p, q) = (points[key.0 as usize], points[key.1 as usize]);
@@ -86,7 +127,11 @@ pub fn cut_mesh(mesh: &TriMesh, frame: &StationFrame, part_name: &str) -> Result
     let mut next_by_start: HashMap<EdgeKey, usize> = HashMap::with_capacity(segments.len());
     for (index, segment) in segments.iter().enumerate() {
         if next_by_start.insert(segment.0, index).is_some() {
-            return Err(Error::OpenSection { part_name: part_name.to_owned(), edge_start: segment.0 .0, edge_end: segment.0 .1 });
+            return Err(Error::OpenSection {
+                part_name: part_name.to_owned(),
+                edge_start: segment.0 .0,
+                edge_end: segment.0 .1,
+            });
         }
     }
     let mut used = vec![false; segments.len()];
@@ -106,21 +151,35 @@ pub fn cut_mesh(mesh: &TriMesh, frame: &StationFrame, part_name: &str) -> Result
             }
             match next_by_start.get(&end) {
                 Some(&next) if !used[next] => current = next,
-                _ => return Err(Error::OpenSection { part_name: part_name.to_owned(), edge_start: end.0, edge_end: end.1 }),
+                _ => {
+                    return Err(Error::OpenSection {
+                        part_name: part_name.to_owned(),
+                        edge_start: end.0,
+                        edge_end: end.1,
+                    })
+                }
             }
         }
-        while polygon.len() > 1 && (polygon[0] - polygon[polygon.len() - 1]).norm() <= SECTION_MERGE_TOL_M {
+        while polygon.len() > 1
+            && (polygon[0] - polygon[polygon.len() - 1]).norm() <= SECTION_MERGE_TOL_M
+        {
             polygon.pop();
         }
         if polygon.len() >= 3 {
             polygons.push(polygon);
         }
     }
-    Ok(Section { part_name: part_name.to_owned(), polygons })
+    Ok(Section {
+        part_name: part_name.to_owned(),
+        polygons,
+    })
 }
 
 fn push_merged(polygon: &mut Vec<Point2<f64>>, point: Point2<f64>) {
-    if polygon.last().is_none_or(|last| (point - last).norm() > SECTION_MERGE_TOL_M) {
+    if polygon
+        .last()
+        .is_none_or(|last| (point - last).norm() > SECTION_MERGE_TOL_M)
+    {
         polygon.push(point);
     }
 }
@@ -144,29 +203,57 @@ mod tests {
 
     /// Unit cube [0,1]^3 with outward winding.
     fn cube() -> TriMesh {
-        let vertices = (0..8).map(|i| Point3::new((i & 1) as f64, ((i >> 1) & 1) as f64, ((i >> 2) & 1) as f64)).collect();
-        let quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
-        let triangles = quads.iter().flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]).collect();
-        TriMesh { vertices, triangles }
+        let vertices = (0..8)
+            .map(|i| Point3::new((i & 1) as f64, ((i >> 1) & 1) as f64, ((i >> 2) & 1) as f64))
+            .collect();
+        let quads = [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ];
+        let triangles = quads
+            .iter()
+            .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
+            .collect();
+        TriMesh {
+            vertices,
+            triangles,
+        }
     }
 
     #[test]
     fn cube_cut_is_a_counter_clockwise_unit_square() {
-        let frame = StationFrame::try_from_origin_and_normal(Point3::new(0.5, 0.3, 0.5), &Vector3::y_axis()).unwrap();
+        let frame = StationFrame::try_from_origin_and_normal(
+            Point3::new(0.5, 0.3, 0.5),
+            &Vector3::y_axis(),
+        )
+        .unwrap();
         let section = cut_mesh(&cube(), &frame, "cube").unwrap();
         assert_eq!(section.polygons.len(), 1);
-        assert_eq!(section.polygons[0].len(), 4);
+        // 8 points: the crossings of the face diagonals lie on the sides.
+        assert_eq!(section.polygons[0].len(), 8);
         assert!((signed_area_m2(&section.polygons[0]) - 1.0).abs() < 1e-14);
     }
 
     #[test]
     fn plane_through_a_face_of_vertices_still_closes() {
         // Plane y = 0 contains the four vertices of a face: all count as "above".
-        let frame = StationFrame::try_from_origin_and_normal(Point3::new(0.5, 0.0, 0.5), &Vector3::y_axis()).unwrap();
+        let frame = StationFrame::try_from_origin_and_normal(
+            Point3::new(0.5, 0.0, 0.5),
+            &Vector3::y_axis(),
+        )
+        .unwrap();
         let section = cut_mesh(&cube(), &frame, "cube").unwrap();
         assert!(section.polygons.is_empty());
         // Plane y = 1 through the far face: the cut is the face itself.
-        let frame = StationFrame::try_from_origin_and_normal(Point3::new(0.5, 1.0, 0.5), &Vector3::y_axis()).unwrap();
+        let frame = StationFrame::try_from_origin_and_normal(
+            Point3::new(0.5, 1.0, 0.5),
+            &Vector3::y_axis(),
+        )
+        .unwrap();
         let section = cut_mesh(&cube(), &frame, "cube").unwrap();
         assert_eq!(section.polygons.len(), 1);
         assert!((signed_area_m2(&section.polygons[0]) - 1.0).abs() < 1e-14);

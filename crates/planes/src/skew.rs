@@ -19,14 +19,26 @@ pub fn dihedral_up_vector_ac(dihedral_rad: f64) -> Unit<Vector3<f64>> {
 
 /// Skew direction of a forward attachment point: unit vector from its stowed to its
 /// deployed position (`003` Fig. 4a), aircraft frame. Errors when it does not move.
-pub fn skew_direction_ac(stowed_ac: &Point3<f64>, deployed_ac: &Point3<f64>) -> Result<Unit<Vector3<f64>>> {
-    unit_direction("skew direction (attachment displacement, m)", deployed_ac - stowed_ac)
+pub fn skew_direction_ac(
+    stowed_ac: &Point3<f64>,
+    deployed_ac: &Point3<f64>,
+) -> Result<Unit<Vector3<f64>>> {
+    unit_direction(
+        "skew direction (attachment displacement, m)",
+        deployed_ac - stowed_ac,
+    )
 }
 
 /// Mechanism plane normal = skew direction x dihedral vector (`003` Fig. 4b), oriented
 /// outboard (aircraft +y), unit, aircraft frame.
-pub fn skewed_plane_normal_ac(skew_direction: &Unit<Vector3<f64>>, dihedral_up: &Unit<Vector3<f64>>) -> Result<Unit<Vector3<f64>>> {
-    let normal = unit_direction("skew direction x dihedral vector", skew_direction.cross(dihedral_up))?;
+pub fn skewed_plane_normal_ac(
+    skew_direction: &Unit<Vector3<f64>>,
+    dihedral_up: &Unit<Vector3<f64>>,
+) -> Result<Unit<Vector3<f64>>> {
+    let normal = unit_direction(
+        "skew direction x dihedral vector",
+        skew_direction.cross(dihedral_up),
+    )?;
     Ok(if normal.y < 0.0 { -normal } else { normal })
 }
 
@@ -36,7 +48,11 @@ pub fn skewed_plane_normal_ac(skew_direction: &Unit<Vector3<f64>>, dihedral_up: 
 /// (a plane perpendicular to a hinge line swept back by Λ has skew angle Λ).
 /// Dihedral tilt does not count as skew; see [`angle_to_streamwise_plane_rad`].
 pub fn skew_angle_rad(normal_ac: &Unit<Vector3<f64>>) -> f64 {
-    let n = if normal_ac.y < 0.0 { -normal_ac.into_inner() } else { normal_ac.into_inner() };
+    let n = if normal_ac.y < 0.0 {
+        -normal_ac.into_inner()
+    } else {
+        normal_ac.into_inner()
+    };
     n.x.atan2(n.y)
 }
 

@@ -6,7 +6,9 @@ use nalgebra::{Isometry3, Point3};
 use crate::error::Result;
 use crate::frame::StationFrame;
 use crate::motion::FlapDeployment;
-use crate::skew::{dihedral_up_vector_ac, skew_angle_rad, skew_direction_ac, skewed_plane_normal_ac};
+use crate::skew::{
+    dihedral_up_vector_ac, skew_angle_rad, skew_direction_ac, skewed_plane_normal_ac,
+};
 
 /// Conical rotations below this count as none when choosing the default construction, rad.
 pub const PURE_ROTATION_ANGLE_TOL_RAD: f64 = 1e-12;
@@ -54,18 +56,29 @@ impl Station {
     /// Largest out-of-plane motion of any attachment point over the deployment, m
     /// (0 when there are no attachment points).
     pub fn max_out_of_plane_residual_m(&self) -> f64 {
-        self.attachment_residuals_m.iter().copied().fold(0.0, f64::max)
+        self.attachment_residuals_m
+            .iter()
+            .copied()
+            .fold(0.0, f64::max)
     }
 }
 
 /// Largest motion (m) of a flap point normal to the plane of `frame`, over `poses`
 /// (stowed-to-deployed rigid flap poses, aircraft frame): max_i |n · (T_i p - p)|.
 /// This is what the spherical or bearing joint at that point must absorb (`003` Fig. 13).
-pub fn out_of_plane_residual_m(frame: &StationFrame, point_stowed_ac: &Point3<f64>, poses_ac: &[Isometry3<f64>]) -> f64 {
+pub fn out_of_plane_residual_m(
+    frame: &StationFrame,
+    point_stowed_ac: &Point3<f64>,
+    poses_ac: &[Isometry3<f64>],
+) -> f64 {
     let normal = frame.z_axis_ac();
     poses_ac
         .iter()
-        .map(|pose| normal.dot(&(pose.transform_point(point_stowed_ac) - point_stowed_ac)).abs())
+        .map(|pose| {
+            normal
+                .dot(&(pose.transform_point(point_stowed_ac) - point_stowed_ac))
+                .abs()
+        })
         .fold(0.0, f64::max)
 }
 
@@ -96,7 +109,10 @@ pub fn compute_station(
     };
     let frame = StationFrame::try_from_origin_and_normal(origin_ac, &normal)?;
     let poses = deployment.sample_poses_ac(samples)?;
-    let attachment_residuals_m = attachments_ac.iter().map(|p| out_of_plane_residual_m(&frame, p, &poses)).collect();
+    let attachment_residuals_m = attachments_ac
+        .iter()
+        .map(|p| out_of_plane_residual_m(&frame, p, &poses))
+        .collect();
     Ok(Station {
         name: name.to_owned(),
         construction,

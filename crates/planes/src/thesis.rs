@@ -26,7 +26,12 @@ pub struct ThesisStations {
 /// The thesis' outer plane is offset 0; its inner plane A1 is "A0 translated by d2"
 /// towards the inboard side, i.e. offset `-d2`. The thesis states d2 < flap span and
 /// leaves the numbers to the designer (Appendix B shows orientations only).
-pub fn thesis_stations(axis: &HingeAxis, inner_side_plane: &Plane, d1_m: f64, offsets_from_a0_m: &[f64]) -> Result<ThesisStations> {
+pub fn thesis_stations(
+    axis: &HingeAxis,
+    inner_side_plane: &Plane,
+    d1_m: f64,
+    offsets_from_a0_m: &[f64],
+) -> Result<ThesisStations> {
     finite("d1_m", d1_m)?;
     let p_ac = inner_side_plane.intersect_axis(axis, "inner flap side")?;
     let a0_ac = p_ac + axis.direction_ac.into_inner() * d1_m;
@@ -34,8 +39,15 @@ pub fn thesis_stations(axis: &HingeAxis, inner_side_plane: &Plane, d1_m: f64, of
         .iter()
         .map(|&offset| {
             finite("station offset from A0 (m)", offset)?;
-            StationFrame::try_from_origin_and_normal(a0_ac + axis.direction_ac.into_inner() * offset, &axis.direction_ac)
+            StationFrame::try_from_origin_and_normal(
+                a0_ac + axis.direction_ac.into_inner() * offset,
+                &axis.direction_ac,
+            )
         })
         .collect::<Result<Vec<_>>>()?;
-    Ok(ThesisStations { p_ac, a0_ac, frames })
+    Ok(ThesisStations {
+        p_ac,
+        a0_ac,
+        frames,
+    })
 }

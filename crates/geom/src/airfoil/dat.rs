@@ -15,7 +15,9 @@ use super::{Airfoil, Surface};
 use crate::error::{Error, Result};
 
 fn parse_pair(text: &str) -> Option<(f64, f64)> {
-    let mut it = text.split(|c: char| c.is_whitespace() || c == ',').filter(|s| !s.is_empty());
+    let mut it = text
+        .split(|c: char| c.is_whitespace() || c == ',')
+        .filter(|s| !s.is_empty());
     let x = it.next()?.parse().ok()?;
     let y = it.next()?.parse().ok()?;
     it.next().is_none().then_some((x, y))
@@ -37,7 +39,12 @@ impl Airfoil {
             match parse_pair(text) {
                 Some((x, y)) => pairs.push((x, y)),
                 None if name.is_none() && pairs.is_empty() => name = Some(text.to_owned()),
-                None => return Err(Error::DatSyntax { line: index + 1, text: text.to_owned() }),
+                None => {
+                    return Err(Error::DatSyntax {
+                        line: index + 1,
+                        text: text.to_owned(),
+                    })
+                }
             }
         }
         let name = name.unwrap_or_else(|| "unnamed".to_owned());
@@ -47,10 +54,15 @@ impl Airfoil {
                 let (upper, lower) = (a as usize, b as usize);
                 let data = &pairs[1..];
                 if data.len() != upper + lower {
-                    return Err(Error::LednicerCount { upper, lower, found: data.len() });
+                    return Err(Error::LednicerCount {
+                        upper,
+                        lower,
+                        found: data.len(),
+                    });
                 }
                 let to_point = |&(x, y): &(f64, f64)| Point2::new(x, y);
-                let mut points: Vec<Point2<f64>> = data[..upper].iter().rev().map(to_point).collect();
+                let mut points: Vec<Point2<f64>> =
+                    data[..upper].iter().rev().map(to_point).collect();
                 let lower_points: Vec<Point2<f64>> = data[upper..].iter().map(to_point).collect();
                 let skip = usize::from(lower_points.first() == points.last());
                 points.extend(lower_points.into_iter().skip(skip));

@@ -61,17 +61,29 @@ pub struct Naca {
 
 /// Standard 5-digit mean lines: (P digit, r, k1) for c_l,i = 0.3 (Abbott & von Doenhoff,
 /// section 6.4).
-const FIVE_DIGIT_STANDARD: [(u32, f64, f64); 5] =
-    [(1, 0.0580, 361.400), (2, 0.1260, 51.640), (3, 0.2025, 15.957), (4, 0.2900, 6.643), (5, 0.3910, 3.230)];
+const FIVE_DIGIT_STANDARD: [(u32, f64, f64); 5] = [
+    (1, 0.0580, 361.400),
+    (2, 0.1260, 51.640),
+    (3, 0.2025, 15.957),
+    (4, 0.2900, 6.643),
+    (5, 0.3910, 3.230),
+];
 
 /// Reflexed 5-digit mean lines: (P digit, r, k1, k2/k1) for c_l,i = 0.3 (NASA TM-4741).
-const FIVE_DIGIT_REFLEXED: [(u32, f64, f64, f64); 4] =
-    [(2, 0.1300, 51.990, 0.000764), (3, 0.2170, 15.793, 0.00677), (4, 0.3180, 6.520, 0.0303), (5, 0.4410, 3.191, 0.1355)];
+#[allow(clippy::approx_constant)] // r = 0.3180 is a table value, not 1/pi
+const FIVE_DIGIT_REFLEXED: [(u32, f64, f64, f64); 4] = [
+    (2, 0.1300, 51.990, 0.000764),
+    (3, 0.2170, 15.793, 0.00677),
+    (4, 0.3180, 6.520, 0.0303),
+    (5, 0.4410, 3.191, 0.1355),
+];
 
 impl Naca {
     /// Parses "2412", "NACA 23012", "naca0012" (4 or 5 digits; 5-digit third digit 0 or 1).
     pub fn parse(designation: &str, trailing_edge: TrailingEdge) -> Result<Naca> {
-        let unknown = || Error::UnknownNacaDesignation { designation: designation.to_owned() };
+        let unknown = || Error::UnknownNacaDesignation {
+            designation: designation.to_owned(),
+        };
         let trimmed = designation.trim();
         let digits_text = trimmed
             .strip_prefix("NACA")
@@ -81,7 +93,11 @@ impl Naca {
             .trim()
             .trim_start_matches('-')
             .trim();
-        let digits: Vec<u32> = digits_text.chars().map(|c| c.to_digit(10)).collect::<Option<_>>().ok_or_else(unknown)?;
+        let digits: Vec<u32> = digits_text
+            .chars()
+            .map(|c| c.to_digit(10))
+            .collect::<Option<_>>()
+            .ok_or_else(unknown)?;
         let thickness_of = |a: u32, b: u32| f64::from(10 * a + b) / 100.0;
         match digits[..] {
             [m, p, t1, t2] => {
@@ -89,7 +105,10 @@ impl Naca {
                     return Err(unknown());
                 }
                 Ok(Naca {
-                    camber: NacaCamber::FourDigit { max_camber: f64::from(m) / 100.0, max_camber_position: f64::from(p) / 10.0 },
+                    camber: NacaCamber::FourDigit {
+                        max_camber: f64::from(m) / 100.0,
+                        max_camber_position: f64::from(p) / 10.0,
+                    },
                     thickness_ratio: thickness_of(t1, t2),
                     trailing_edge,
                 })
@@ -101,16 +120,36 @@ impl Naca {
                 let design_lift_coefficient = 3.0 * f64::from(l) / 20.0;
                 let camber = match s {
                     0 => {
-                        let &(_, r, k1) = FIVE_DIGIT_STANDARD.iter().find(|e| e.0 == p).ok_or_else(unknown)?;
-                        NacaCamber::FiveDigit { design_lift_coefficient, junction: r, k1, k2_over_k1: None }
+                        let &(_, r, k1) = FIVE_DIGIT_STANDARD
+                            .iter()
+                            .find(|e| e.0 == p)
+                            .ok_or_else(unknown)?;
+                        NacaCamber::FiveDigit {
+                            design_lift_coefficient,
+                            junction: r,
+                            k1,
+                            k2_over_k1: None,
+                        }
                     }
                     1 => {
-                        let &(_, r, k1, k21) = FIVE_DIGIT_REFLEXED.iter().find(|e| e.0 == p).ok_or_else(unknown)?;
-                        NacaCamber::FiveDigit { design_lift_coefficient, junction: r, k1, k2_over_k1: Some(k21) }
+                        let &(_, r, k1, k21) = FIVE_DIGIT_REFLEXED
+                            .iter()
+                            .find(|e| e.0 == p)
+                            .ok_or_else(unknown)?;
+                        NacaCamber::FiveDigit {
+                            design_lift_coefficient,
+                            junction: r,
+                            k1,
+                            k2_over_k1: Some(k21),
+                        }
                     }
                     _ => return Err(unknown()),
                 };
-                Ok(Naca { camber, thickness_ratio: thickness_of(t1, t2), trailing_edge })
+                Ok(Naca {
+                    camber,
+                    thickness_ratio: thickness_of(t1, t2),
+                    trailing_edge,
+                })
             }
             _ => Err(unknown()),
         }
@@ -118,14 +157,17 @@ impl Naca {
 
     /// Half-thickness y_t(x) measured perpendicular to the mean line (Abbott & von Doenhoff
     /// eq. 6.2): `y_t = 5 t (0.2969 sqrt(x) - 0.1260 x - 0.3516 x^2 + 0.2843 x^3 - a4 x^4)`,
-    /// a4 = 0.1015 (open) or 0.1036 (closed). x in [0, 1], unit chord.
+    /// a4 = 0.1015 (open) or 0.1036 (closed). x in [0, 1], unit chord (values outside are
+    /// clamped to the ends).
     pub fn thickness(&self, x: f64) -> f64 {
         let a4 = match self.trailing_edge {
             TrailingEdge::Open => 0.1015,
             TrailingEdge::Closed => 0.1036,
         };
         let x = x.clamp(0.0, 1.0);
-        5.0 * self.thickness_ratio * (0.2969 * x.sqrt() - 0.1260 * x - 0.3516 * x * x + 0.2843 * x.powi(3) - a4 * x.powi(4))
+        5.0 * self.thickness_ratio
+            * (0.2969 * x.sqrt() - 0.1260 * x - 0.3516 * x * x + 0.2843 * x.powi(3)
+                - a4 * x.powi(4))
     }
 
     /// Mean-line height y_c(x), unit chord.
@@ -140,17 +182,31 @@ impl Naca {
 
     fn camber_and_slope(&self, x: f64) -> (f64, f64) {
         match self.camber {
-            NacaCamber::FourDigit { max_camber: m, max_camber_position: p } => {
+            NacaCamber::FourDigit {
+                max_camber: m,
+                max_camber_position: p,
+            } => {
                 if m == 0.0 {
                     (0.0, 0.0)
                 } else if x < p {
-                    (m / (p * p) * (2.0 * p * x - x * x), 2.0 * m / (p * p) * (p - x))
+                    (
+                        m / (p * p) * (2.0 * p * x - x * x),
+                        2.0 * m / (p * p) * (p - x),
+                    )
                 } else {
                     let q = (1.0 - p) * (1.0 - p);
-                    (m / q * ((1.0 - 2.0 * p) + 2.0 * p * x - x * x), 2.0 * m / q * (p - x))
+                    (
+                        m / q * ((1.0 - 2.0 * p) + 2.0 * p * x - x * x),
+                        2.0 * m / q * (p - x),
+                    )
                 }
             }
-            NacaCamber::FiveDigit { design_lift_coefficient, junction: r, k1, k2_over_k1 } => {
+            NacaCamber::FiveDigit {
+                design_lift_coefficient,
+                junction: r,
+                k1,
+                k2_over_k1,
+            } => {
                 let scale = design_lift_coefficient / 0.3;
                 let (y, dy) = match k2_over_k1 {
                     None if x < r => (
@@ -161,9 +217,15 @@ impl Naca {
                     Some(k21) => {
                         let c = -k21 * (1.0 - r).powi(3) - r.powi(3);
                         if x < r {
-                            (k1 / 6.0 * ((x - r).powi(3) + c * x + r.powi(3)), k1 / 6.0 * (3.0 * (x - r).powi(2) + c))
+                            (
+                                k1 / 6.0 * ((x - r).powi(3) + c * x + r.powi(3)),
+                                k1 / 6.0 * (3.0 * (x - r).powi(2) + c),
+                            )
                         } else {
-                            (k1 / 6.0 * (k21 * (x - r).powi(3) + c * x + r.powi(3)), k1 / 6.0 * (3.0 * k21 * (x - r).powi(2) + c))
+                            (
+                                k1 / 6.0 * (k21 * (x - r).powi(3) + c * x + r.powi(3)),
+                                k1 / 6.0 * (3.0 * k21 * (x - r).powi(2) + c),
+                            )
                         }
                     }
                 };
@@ -175,9 +237,16 @@ impl Naca {
     /// Upper and lower surface points at mean-line station x (eq. 6.1).
     pub fn surface_points(&self, x: f64) -> (Point2<f64>, Point2<f64>) {
         let (yc, slope) = self.camber_and_slope(x.clamp(0.0, 1.0));
-        let yt = if self.trailing_edge == TrailingEdge::Closed && x >= 1.0 { 0.0 } else { self.thickness(x) };
+        let yt = if self.trailing_edge == TrailingEdge::Closed && x >= 1.0 {
+            0.0
+        } else {
+            self.thickness(x)
+        };
         let (sin, cos) = slope.atan().sin_cos();
-        (Point2::new(x - yt * sin, yc + yt * cos), Point2::new(x + yt * sin, yc - yt * cos))
+        (
+            Point2::new(x - yt * sin, yc + yt * cos),
+            Point2::new(x + yt * sin, yc - yt * cos),
+        )
     }
 }
 
@@ -185,9 +254,17 @@ impl Airfoil {
     /// Generates a NACA 4- or 5-digit section with `points_per_side` points on each side
     /// (leading edge shared), cosine spacing of the mean-line station
     /// `x_i = (1 - cos(pi i / (n - 1))) / 2`, in Selig order.
-    pub fn naca(designation: &str, points_per_side: usize, trailing_edge: TrailingEdge) -> Result<Airfoil> {
+    pub fn naca(
+        designation: &str,
+        points_per_side: usize,
+        trailing_edge: TrailingEdge,
+    ) -> Result<Airfoil> {
         if points_per_side < MIN_POINTS_PER_SIDE {
-            return Err(Error::TooFewPoints { what: "NACA points per side", count: points_per_side, minimum: MIN_POINTS_PER_SIDE });
+            return Err(Error::TooFewPoints {
+                what: "NACA points per side",
+                count: points_per_side,
+                minimum: MIN_POINTS_PER_SIDE,
+            });
         }
         let naca = Naca::parse(designation, trailing_edge)?;
         let stations: Vec<(Point2<f64>, Point2<f64>)> = (0..points_per_side)
@@ -195,7 +272,8 @@ impl Airfoil {
                 let x = if i + 1 == points_per_side {
                     1.0
                 } else {
-                    0.5 * (1.0 - (std::f64::consts::PI * i as f64 / (points_per_side - 1) as f64).cos())
+                    0.5 * (1.0
+                        - (std::f64::consts::PI * i as f64 / (points_per_side - 1) as f64).cos())
                 };
                 naca.surface_points(x)
             })

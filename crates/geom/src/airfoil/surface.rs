@@ -30,7 +30,10 @@ impl SurfaceLine {
     /// Point at arc length `s` (clamped to the line).
     pub(crate) fn point_at_arc(&self, s: f64) -> Point2<f64> {
         let s = s.clamp(0.0, self.length());
-        let i = self.cumulative.partition_point(|&c| c <= s).clamp(1, self.points.len() - 1);
+        let i = self
+            .cumulative
+            .partition_point(|&c| c <= s)
+            .clamp(1, self.points.len() - 1);
         let (s0, s1) = (self.cumulative[i - 1], self.cumulative[i]);
         let t = if s1 > s0 { (s - s0) / (s1 - s0) } else { 0.0 };
         self.points[i - 1] + (self.points[i] - self.points[i - 1]) * t
@@ -46,7 +49,9 @@ impl SurfaceLine {
             }
             if (x0 < x && x <= x1) || (x1 <= x && x < x0) {
                 let t = (x - x0) / (x1 - x0);
-                return Some(self.cumulative[i] + t * (self.cumulative[i + 1] - self.cumulative[i]));
+                return Some(
+                    self.cumulative[i] + t * (self.cumulative[i + 1] - self.cumulative[i]),
+                );
             }
         }
         None

@@ -14,12 +14,16 @@ use crate::mesh::TriMesh;
 /// the 80-byte header holds `flapwright <name> (m)` (truncated, never starting with
 /// "solid", which readers would take for ASCII STL).
 pub fn write_binary(mesh: &TriMesh, name: &str, mut writer: impl Write) -> Result<()> {
-    let to_vertex = |p: &nalgebra::Point3<f64>| stl_io::Vertex::new([p.x as f32, p.y as f32, p.z as f32]);
+    let to_vertex =
+        |p: &nalgebra::Point3<f64>| stl_io::Vertex::new([p.x as f32, p.y as f32, p.z as f32]);
     let triangles: Vec<stl_io::Triangle> = (0..mesh.triangles.len())
         .map(|i| {
             let n = mesh.triangle_normal(i);
             let [a, b, c] = mesh.triangles[i].map(|v| to_vertex(&mesh.vertices[v as usize]));
-            stl_io::Triangle { normal: stl_io::Normal::new([n.x as f32, n.y as f32, n.z as f32]), vertices: [a, b, c] }
+            stl_io::Triangle {
+                normal: stl_io::Normal::new([n.x as f32, n.y as f32, n.z as f32]),
+                vertices: [a, b, c],
+            }
         })
         .collect();
     let mut bytes = Vec::with_capacity(84 + 50 * triangles.len());

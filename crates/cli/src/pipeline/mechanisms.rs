@@ -1,0 +1,172 @@
+//! Mechanism stage: synthesise each station's mechanism and sweep it under every load case.
+
+use anyhow::Result;
+use flapwright_mechanism::{
+    CircularArcTrack, CircularArcTrackSpec, ExternalMoment, LoadCase, ScrewJack, Sweep,
+    TrackSynthesis, DEFAULT_TOGGLE_TOLERANCE_RAD,
+};
+use nalgebra::Point2;
+use serde::Serialize;
+
+use crate::scene::{CircularArcTrackScene, MechanismScene, Problem, Scene, SceneError};
+
+/// Standard gravity used by the mechanism's weight term (m/s²), as the thesis (Table 2).
+const GRAVITY_MPS2: f64 = 9.81;
+
+/// Thesis step 9: "select a3 slightly greater than Δs + s34,i"; Table 2 has 250 mm for
+/// 224.6 mm, so an unspecified screw is 10 % longer than the full stroke.
+const SCREW_LENGTH_MARGIN: f64 = 1.10;
+
+/// A synthesised station mechanism.
+#[derive(Debug, Clone)]
+pub struct StationMechanism {
+    /// Station name.
+    pub station: String,
+    /// The synthesised track.
+    pub track: CircularArcTrack,
+}
+
+/// The report's record of one station's mechanism.
+#[derive(Debug, Clone, Serialize)]
+pub struct MechanismReport {
+    /// Mechanism kind.
+    pub kind: &'static str,
+    /// The dimensions used (SI).
+    pub dimensions: CircularArcTrackSpec,
+    /// What synthesis computed (thesis steps 7-10).
+    pub synthesis: TrackSynthesis,
+    /// One sweep per load case.
+    pub load_cases: Vec<Sweep>,
+}
+
+fn spec_from_scene(m: &CircularArcTrackScene, screw_length_m: f64) -> CircularArcTrackSpec {
+    CircularArcTrackSpec {
+        base_distance_m: m.base_distance_m,
+        crank_length_m: m.crank_length_m,
+        screw_length_m,
+        base_angle_rad: m.base_angle_deg.to_radians(),
+        outer_slot_radius_m: m.outer_slot_radius_m,
+        inner_slot_radius_m: m.inner_slot_radius_m,
+        outer_slot_start_angle_rad: m.slot_start_angle_deg.to_radians(),
+        inner_slot_offset_angle_rad: m.slot_offset_angle_deg.to_radians(),
+        rotation_range_rad: m.rotation_range_deg.to_radians(),
+        centre_of_mass_stowed_m: Point2::new(
+            m.flap_centre_of_mass_m[0],
+            m.flap_centre_of_mass_m[1],
+        ),
+        flap_mass_kg: m.flap_mass_kg,
+        flap_moment_of_inertia_kgm2: 0.0,
+        gravity_mps2: GRAVITY_MPS2,
+        screw: ScrewJack {
+            lead_m: m.screw_lead_m,
+            mean_radius_m: m.screw_mean_radius_m,
+            friction_coefficient: m.screw_friction,
+        },
+        nominal_input_speed_mps: m.nut_speed_mps,
+        nominal_input_accel_mps2: 0.0,
+        toggle_tolerance_rad: DEFAULT_TOGGLE_TOLERANCE_RAD,
+    }
+}
+
+fn synthesise(m: &CircularArcTrackScene) -> flapwright_mechanism::Result<CircularArcTrack> {
+    match m.screw_length_m {
+        Some(length) => CircularArcTrack::synthesise(spec_from_scene(m, length)),
+        None => {
+            // Synthesise once with an unbounded screw to learn the stroke, then size it.
+            let probe = CircularArcTrack::synthesise(spec_from_scene(m, f64::MAX))?;
+            let length = SCREW_LENGTH_MARGIN * probe.synthesis().stroke_end_m;
+            CircularArcTrack::synthesise(spec_from_scene(m, length))
+        }
+    }
+}
+
+/// Synthesises every station; a mechanism that cannot be built from its dimensions is bad
+/// input, reported with the station's path like any other scene problem.
+pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationMechanism>> {
+    let mut problems = Vec::new();
+    let mut built = Vec::new();
+    for (i, station) in scene.station.iter().enumerate() {
+        let MechanismScene::CircularArcTrack(m) = &station.mechanism;
+        match synthesise(m) {
+            Ok(track) => built.push(StationMechanism {
+                station: station.name.clone(),
+                track,
+            }),
+            Err(error) => problems.push(Problem {
+                path: format!("station[{i}].mechanism"),
+                message: format!("cannot be synthesised: {error}"),
+            }),
+        }
+    }
+    if problems.is_empty() {
+        Ok(built)
+    } else {
+        Err(SceneError::Invalid(problems).into())
+    }
+}
+
+/// The scene's load cases in the mechanism crate's terms.
+pub fn load_cases(scene: &Scene) -> Vec<LoadCase> {
+    scene
+        .loads
+        .cases
+        .iter()
+        .map(|case| LoadCase {
+            name: case.name.clone(),
+            external_moment: match (
+                case.moment_nm,
+                case.moment_stowed_nm,
+                case.moment_deployed_nm,
+            ) {
+                (Some(moment), _, _) => ExternalMoment::Constant(moment),
+                (None, Some(stowed_nm), Some(deployed_nm)) => ExternalMoment::Linear {
+                    stowed_nm,
+                    deployed_nm,
+                },
+                // Validation guarantees one of the two forms; no moment is the honest fallback.
+                _ => ExternalMoment::Constant(0.0),
+            },
+            include_inertia: false,
+        })
+        .collect()
+}
+
+/// Sweeps one station under every load case (a weight-only case when the scene has none).
+pub fn sweep_station(
+    mechanism: &StationMechanism,
+    cases: &[LoadCase],
+    samples: usize,
+    warnings: &mut Vec<String>,
+) -> Result<MechanismReport> {
+    let weight_only = [LoadCase {
+        name: "weight-only".into(),
+        external_moment: ExternalMoment::Constant(0.0),
+        include_inertia: false,
+    }];
+    let cases = if cases.is_empty() {
+        &weight_only[..]
+    } else {
+        cases
+    };
+    let track = &mechanism.track;
+    for warning in &track.synthesis().warnings {
+        warnings.push(format!("station {}: {warning:?}", mechanism.station));
+    }
+    let mut sweeps = Vec::with_capacity(cases.len());
+    for case in cases {
+        let sweep = track.sweep(samples, case)?;
+        if let Some(stop) = &sweep.stopped {
+            warnings.push(format!(
+                "station {}, load case {}: deployment stopped at sample {} (s34 = {:.6} m): {}",
+                mechanism.station, case.name, stop.sample_index, stop.input_m, stop.reason
+            ));
+        }
+        sweeps.push(sweep);
+    }
+    Ok(MechanismReport {
+        kind: "circular-arc-track",
+        dimensions: *track.spec(),
+        synthesis: track.synthesis().clone(),
+        load_cases: sweeps,
+    })
+}

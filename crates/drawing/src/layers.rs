@@ -1,0 +1,193 @@
+//! The geometric layers of a station drawing: section parts, slots, swept envelope,
+//! fairing line and the mechanism at each setting (flap outline and links).
+//!
+//! Each function maps station-frame geometry through a [`ScreenMap`] and returns an
+//! SVG group; labels are placed separately (`annotate`).
+
+use crate::model::{MechanismSnapshot, PartStyle, SectionOutline, SlotArc};
+use crate::style::{css_name, num, points_attribute, setting_style, title, INK};
+use crate::view::ScreenMap;
+use nalgebra::Point2;
+use svg::node::element::{Group, Polygon, Polyline};
+
+/// Samples per slot arc polyline (arcs span well under 180 degrees in practice).
+const ARC_SAMPLES: usize = 64;
+
+/// Fill and stroke of a section part.
+fn part_paint(kind: PartStyle) -> (&'static str, &'static str, f64) {
+    match kind {
+        PartStyle::WingSkin => ("#d4d4d4", INK, 1.4),
+        PartStyle::Flap => ("#e9eef7", INK, 1.2),
+        PartStyle::Spar => ("#7a7a7a", INK, 1.0),
+        PartStyle::TorqueTube => ("#111111", "#111111", 1.0),
+        PartStyle::Other => ("none", "#777777", 1.0),
+    }
+}
+
+/// Short name of a part style for SVG classes and the legend.
+pub(crate) fn part_class(kind: PartStyle) -> &'static str {
+    match kind {
+        PartStyle::WingSkin => "wing-skin",
+        PartStyle::Flap => "flap-section",
+        PartStyle::Spar => "spar",
+        PartStyle::TorqueTube => "torque-tube",
+        PartStyle::Other => "other-part",
+    }
+}
+
+/// Section parts, drawn as filled polygons, torque tubes last so they stay visible.
+pub(crate) fn sections_layer(sections: &[SectionOutline], map: &ScreenMap) -> Group {
+    let mut ordered: Vec<&SectionOutline> = sections.iter().collect();
+    ordered.sort_by_key(|s| matches!(s.kind, PartStyle::TorqueTube));
+    let mut group = Group::new().set("id", "sections").set("class", "sections");
+    for section in ordered {
+        let (fill, stroke, width) = part_paint(section.kind);
+        let mut part = Group::new()
+            .set("class", format!("part {}", part_class(section.kind)))
+            .add(title(&section.part));
+        for polygon in &section.polygons {
+            part = part.add(
+                Polygon::new()
+                    .set("points", points_attribute(&map.to_page_all(polygon)))
+                    .set("fill", fill)
+                    .set("stroke", stroke)
+                    .set("stroke-width", num(width))
+                    .set("stroke-linejoin", "round"),
+            );
+        }
+        group = group.add(part);
+    }
+    group
+}
+
+/// Slots: a channel (dark edges, pale inside) with a dash-dot centre line.
+pub(crate) fn slots_layer(slots: &[SlotArc], map: &ScreenMap) -> Group {
+    let mut group = Group::new().set("id", "slots").set("class", "slots");
+    for slot in slots {
+        let points = points_attribute(&map.to_page_all(&slot.sample(ARC_SAMPLES)));
+        let channel = |colour: &str, width: f64| {
+            Polyline::new()
+                .set("points", points.clone())
+                .set("fill", "none")
+                .set("stroke", colour.to_owned())
+                .set("stroke-width", num(width))
+                .set("stroke-linecap", "round")
+                .set("stroke-linejoin", "round")
+        };
+        group = group.add(
+            Group::new()
+                .set("class", "slot")
+                .add(title(&slot.name))
+                .add(channel("#4d4d4d", 12.0))
+                .add(channel("#f7f7f7", 9.0))
+                .add(
+                    channel("#8a8a8a", 0.8)
+                        .set("stroke-dasharray", "10 3 2 3")
+                        .set("stroke-linecap", "butt"),
+                ),
+        );
+    }
+    group
+}
+
+/// Swept envelope: translucent blue fill with a thin dashed outline.
+pub(crate) fn envelope_layer(envelope: &[Vec<Point2<f64>>], map: &ScreenMap) -> Group {
+    let mut group = Group::new()
+        .set("id", "envelope")
+        .set("class", "envelope")
+        .add(title("swept envelope"));
+    for outline in envelope {
+        group = group.add(
+            Polygon::new()
+                .set("points", points_attribute(&map.to_page_all(outline)))
+                .set("fill", ENVELOPE_FILL)
+                .set("fill-opacity", "0.22")
+                .set("stroke", ENVELOPE_STROKE)
+                .set("stroke-width", "1")
+                .set("stroke-dasharray", "4 3"),
+        );
+    }
+    group
+}
+
+/// Fill colour of the swept envelope.
+pub(crate) const ENVELOPE_FILL: &str = "#56b4e9";
+/// Outline colour of the swept envelope.
+pub(crate) const ENVELOPE_STROKE: &str = "#2b7bb9";
+/// Colour of the fairing line.
+pub(crate) const FAIRING_COLOUR: &str = "#0f7b5f";
+/// Dash pattern of the fairing line (long dash, dot).
+pub(crate) const FAIRING_DASH: &str = "18 4 3 4";
+
+/// The fairing line: a green long-dash-dot polyline.
+pub(crate) fn fairing_layer(line: &[Point2<f64>], map: &ScreenMap) -> Group {
+    Group::new()
+        .set("id", "fairing-line")
+        .set("class", "fairing-line")
+        .add(title("fairing line"))
+        .add(
+            Polyline::new()
+                .set("points", points_attribute(&map.to_page_all(line)))
+                .set("fill", "none")
+                .set("stroke", FAIRING_COLOUR)
+                .set("stroke-width", "2.2")
+                .set("stroke-dasharray", FAIRING_DASH)
+                .set("stroke-linejoin", "round"),
+        )
+}
+
+/// SVG id of setting `index` ("setting-2-landing").
+pub(crate) fn setting_id(index: usize, setting: &MechanismSnapshot) -> String {
+    format!("setting-{index}-{}", css_name(&setting.label))
+}
+
+/// One setting: flap outline (lightly tinted) and links, in the setting's colour and
+/// dash pattern. Joints are drawn by `annotate` so they sit above every setting.
+pub(crate) fn setting_layer(index: usize, setting: &MechanismSnapshot, map: &ScreenMap) -> Group {
+    let style = setting_style(index);
+    let mut group = Group::new()
+        .set("id", setting_id(index, setting))
+        .set(
+            "class",
+            format!("setting setting-{}", css_name(&setting.label)),
+        )
+        .add(title(&format!(
+            "{} ({:.1} deg)",
+            setting.label, setting.deflection_deg
+        )));
+    let dashed = |element: Polyline| match style.dash {
+        Some(dash) => element.set("stroke-dasharray", dash),
+        None => element,
+    };
+    for outline in &setting.flap_outline {
+        let mut polygon = Polygon::new()
+            .set("class", "flap-outline")
+            .set("points", points_attribute(&map.to_page_all(outline)))
+            .set("fill", style.colour)
+            .set("fill-opacity", "0.07")
+            .set("stroke", style.colour)
+            .set("stroke-width", "1.8")
+            .set("stroke-linejoin", "round")
+            .set("stroke-linecap", "round");
+        if let Some(dash) = style.dash {
+            polygon = polygon.set("stroke-dasharray", dash);
+        }
+        group = group.add(polygon);
+    }
+    for link in &setting.links {
+        group = group.add(
+            dashed(
+                Polyline::new()
+                    .set("class", "link")
+                    .set("points", points_attribute(&map.to_page_all(&link.points)))
+                    .set("fill", "none")
+                    .set("stroke", style.colour)
+                    .set("stroke-width", "3.2")
+                    .set("stroke-linejoin", "round")
+                    .set("stroke-linecap", "round"),
+            )
+            .add(title(&link.name)),
+        );
+    }
+    group
+}

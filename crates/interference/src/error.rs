@@ -1,0 +1,48 @@
+//! Errors of the interference sweep.
+
+/// Why a clearance sweep could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// A setting is outside its allowed range.
+    #[error("{setting} = {value}: must be in {allowed}")]
+    SettingOutOfRange {
+        /// Setting name.
+        setting: &'static str,
+        /// Given value.
+        value: f64,
+        /// Allowed range, as text.
+        allowed: &'static str,
+    },
+    /// The deployment range is empty or not finite.
+    #[error("deployment range [{start}, {end}] must be finite with start < end")]
+    BadRange {
+        /// Range start.
+        start: f64,
+        /// Range end.
+        end: f64,
+    },
+    /// A distance query failed.
+    #[error("distance between {part_a} and {part_b} at deployment {parameter}")]
+    Query {
+        /// First part.
+        part_a: String,
+        /// Second part.
+        part_b: String,
+        /// Deployment parameter.
+        parameter: f64,
+        /// The geometry error.
+        #[source]
+        source: flapwright_geom::Error,
+    },
+    /// A part's speed bound is negative or not finite, so no certified bound can be given.
+    #[error("part {part}: speed bound {value} m per unit deployment must be finite and >= 0")]
+    BadSpeedBound {
+        /// Part name.
+        part: String,
+        /// Given bound.
+        value: f64,
+    },
+}
+
+/// Result with this crate's [`Error`].
+pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -1,0 +1,34 @@
+//! Certified clearance sweeps of moving flap-mechanism parts against the wing structure.
+//!
+//! # Overview
+//! - [`Part`]: a collision shape (from `flapwright_geom::collision`) and its [`Motion`]
+//!   over the deployment parameter `t` (pose and a certified speed bound).
+//! - [`sweep_pair`] → [`PairClearance`]: smallest clearance of a pair over the deployment,
+//!   where it occurs, the closest points, and a residual bound.
+//!
+//! # Units and frames
+//! Metres, aircraft frame (x aft, y outboard, z up). `t` is whatever the caller's motions
+//! take (Flapwright uses the flap deflection in rad); speed bounds are in m per unit `t`.
+//!
+//! # Design notes
+//! Sampling alone can miss a thin part passing between two samples. Distances between
+//! rigid parts are Lipschitz in `t` with constant L = sum of the parts' speed bounds, which
+//! gives a lower bound of the distance on every interval between samples; the sweep
+//! refines where that bound could undercut the smallest sample. No time-of-impact query is
+//! needed, and the guarantee holds for any motion whose speed bound is honest.
+//!
+//! # Limitations
+//! Mesh distances are to surfaces (parry's triangle-mesh queries): a part wholly inside a
+//! mesh reports the distance to the nearest face. Model solids as convex shapes.
+//!
+//! # Pitfalls
+//! A speed bound that is too small voids the guarantee silently; derive it from the
+//! mechanism's geometry (largest radius times largest angular rate), never from samples.
+
+mod error;
+mod part;
+mod sweep;
+
+pub use error::{Error, Result};
+pub use part::{Fixed, Motion, Part};
+pub use sweep::{sweep_pair, PairClearance, SweepSettings};

@@ -1,0 +1,77 @@
+//! Parts as the sweep sees them: a collision shape and how it moves with deployment.
+
+use flapwright_geom::collision::CollisionShape;
+use nalgebra::Isometry3;
+
+/// How a rigid part moves with the deployment parameter `t` (e.g. flap deflection, rad).
+pub trait Motion: Send + Sync {
+    /// Pose of the part's local frame in the aircraft frame at deployment `t`.
+    fn pose_ac(&self, t: f64) -> Isometry3<f64>;
+
+    /// A certified upper bound on the speed of any point of the part, in metres per unit
+    /// of `t`, over the whole deployment range. The sweep's guarantee rests on it:
+    /// |d(t) - d(t')| <= (L_a + L_b) |t - t'| for the distance d between two parts.
+    fn speed_bound(&self) -> f64;
+}
+
+/// A part that does not move (wing skin, spars, torque tube, fixed tracks).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Fixed;
+
+impl Motion for Fixed {
+    fn pose_ac(&self, _t: f64) -> Isometry3<f64> {
+        Isometry3::identity()
+    }
+
+    fn speed_bound(&self) -> f64 {
+        0.0
+    }
+}
+
+/// A part for the sweep: name, shape in its local frame, motion.
+pub struct Part {
+    /// Part name (as in the report and JUnit file).
+    pub name: String,
+    /// Shape in the part's local frame.
+    pub shape: CollisionShape,
+    /// How the local frame moves.
+    pub motion: Box<dyn Motion>,
+}
+
+impl std::fmt::Debug for Part {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Part")
+            .field("name", &self.name)
+            .field("speed_bound", &self.motion.speed_bound())
+            .finish()
+    }
+}
+
+impl Part {
+    /// A part that does not move (its shape given in the aircraft frame).
+    pub fn fixed(name: impl Into<String>, shape: CollisionShape) -> Self {
+        Self {
+            name: name.into(),
+            shape,
+            motion: Box::new(Fixed),
+        }
+    }
+
+    /// A moving part.
+    pub fn moving(
+        name: impl Into<String>,
+        shape: CollisionShape,
+        motion: impl Motion + 'static,
+    ) -> Self {
+        Self {
+            name: name.into(),
+            shape,
+            motion: Box::new(motion),
+        }
+    }
+
+    /// True when the part moves (non-zero speed bound).
+    pub fn is_moving(&self) -> bool {
+        self.motion.speed_bound() > 0.0
+    }
+}

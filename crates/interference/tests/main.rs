@@ -1,0 +1,23 @@
+//! Integration tests of the clearance sweep.
+
+mod brute_force;
+mod sweep;
+
+use flapwright_interference::Motion;
+use nalgebra::{Isometry3, Vector3};
+
+/// Rotation about the aircraft z axis through the origin by angle `t` (rad); points within
+/// `max_radius_m` of the axis move at most `max_radius_m` per radian.
+pub struct TurnAboutZ {
+    pub max_radius_m: f64,
+}
+
+impl Motion for TurnAboutZ {
+    fn pose_ac(&self, t: f64) -> Isometry3<f64> {
+        Isometry3::rotation(Vector3::z() * t)
+    }
+
+    fn speed_bound(&self) -> f64 {
+        self.max_radius_m
+    }
+}

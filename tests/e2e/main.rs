@@ -3,6 +3,7 @@
 
 mod bad_input;
 mod default_scene;
+mod stations;
 mod stl_reader;
 
 use std::path::{Path, PathBuf};

@@ -250,16 +250,24 @@ fn build_drawing(demo: &Demo) -> StationDrawing {
         .chain([demo.b0])
         .collect();
     let envelope = convex_hull(swept);
-    // Fairing: the envelope's lower side, 20 mm lower, from the wing lower skin aft.
-    let mut lower: Vec<P> = envelope
-        .iter()
-        .filter(|p| p.y < 0.300)
-        .map(|p| P::new(p.x, p.y - 0.020))
-        .collect();
-    lower.sort_by(|a, b| b.x.total_cmp(&a.x));
+    // Fairing: the envelope's lower side (hull vertices from the leftmost to the
+    // rightmost, counter-clockwise), 20 mm lower, joined to the wing and flap skins.
+    let leftmost = (0..envelope.len())
+        .min_by(|a, b| envelope[*a].x.total_cmp(&envelope[*b].x))
+        .unwrap_or(0);
+    let rightmost = (0..envelope.len())
+        .max_by(|a, b| envelope[*a].x.total_cmp(&envelope[*b].x))
+        .unwrap_or(0);
     let mut fairing = vec![mm(420.0, 284.0)];
+    let mut i = rightmost;
+    let mut lower = Vec::new();
+    while i != leftmost {
+        lower.push(envelope[i] - Vector2::new(0.0, 0.020));
+        i = (i + envelope.len() - 1) % envelope.len();
+    }
+    lower.push(envelope[leftmost] - Vector2::new(0.010, 0.020));
     fairing.extend(lower);
-    fairing.push(mm(-170.0, 300.0));
+    fairing.push(mm(envelope[leftmost].x * 1000.0 - 60.0, 305.0));
     let flap_spar_x = 160.0 - 0.2 * 560.0;
     StationDrawing {
         title: "Station demo - thesis case study (Table 2)".into(),

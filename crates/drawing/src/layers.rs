@@ -90,7 +90,7 @@ pub(crate) fn slots_layer(slots: &[SlotArc], map: &ScreenMap) -> Group {
     group
 }
 
-/// Swept envelope: translucent blue fill with a thin dashed outline.
+/// Swept envelope: translucent yellow fill (kept apart from the blue stowed flap) with a thin dashed outline.
 pub(crate) fn envelope_layer(envelope: &[Vec<Point2<f64>>], map: &ScreenMap) -> Group {
     let mut group = Group::new()
         .set("id", "envelope")
@@ -101,7 +101,7 @@ pub(crate) fn envelope_layer(envelope: &[Vec<Point2<f64>>], map: &ScreenMap) -> 
             Polygon::new()
                 .set("points", points_attribute(&map.to_page_all(outline)))
                 .set("fill", ENVELOPE_FILL)
-                .set("fill-opacity", "0.22")
+                .set("fill-opacity", "0.3")
                 .set("stroke", ENVELOPE_STROKE)
                 .set("stroke-width", "1")
                 .set("stroke-dasharray", "4 3"),
@@ -111,9 +111,9 @@ pub(crate) fn envelope_layer(envelope: &[Vec<Point2<f64>>], map: &ScreenMap) -> 
 }
 
 /// Fill colour of the swept envelope.
-pub(crate) const ENVELOPE_FILL: &str = "#56b4e9";
+pub(crate) const ENVELOPE_FILL: &str = "#f0e442";
 /// Outline colour of the swept envelope.
-pub(crate) const ENVELOPE_STROKE: &str = "#2b7bb9";
+pub(crate) const ENVELOPE_STROKE: &str = "#9a8c00";
 /// Colour of the fairing line.
 pub(crate) const FAIRING_COLOUR: &str = "#0f7b5f";
 /// Dash pattern of the fairing line (long dash, dot).

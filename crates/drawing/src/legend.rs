@@ -136,7 +136,7 @@ pub(crate) fn legend(drawing: &StationDrawing, x: f64, y: f64, column_px: f64) -
         let sample: Group = match kind {
             Swatch::Envelope => Group::new().add(
                 swatch(px + 4.0, row_y, ENVELOPE_FILL, ENVELOPE_STROKE)
-                    .set("fill-opacity", "0.22")
+                    .set("fill-opacity", "0.3")
                     .set("stroke-dasharray", "4 3"),
             ),
             Swatch::Fairing => Group::new().add(

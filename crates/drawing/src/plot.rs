@@ -91,6 +91,24 @@ pub fn plots_page_size_px(count: usize) -> (f64, f64) {
 /// [`Error::NoPlots`], [`Error::NoSeries`], [`Error::EmptySeries`], and
 /// [`Error::NonFiniteSample`] naming the plot, series and sample index of a NaN or
 /// infinite value (such a point is never drawn).
+///
+/// # Example
+/// ```
+/// use flapwright_drawing::{render_plots_svg, Error, Plot, Series};
+///
+/// let plot = Plot {
+///     title: "Flap deflection".into(),
+///     x_label: "nut travel s34 [mm]".into(),
+///     y_label: "deflection [deg]".into(),
+///     series: vec![Series { name: "flap".into(), points: vec![(80.3, 0.0), (152.4, 17.5), (224.6, 35.0)] }],
+/// };
+/// assert!(render_plots_svg("Station 1", &[plot.clone()])?.contains("deflection [deg]"));
+///
+/// let mut broken = plot;
+/// broken.series[0].points[1].1 = f64::NAN;
+/// assert!(matches!(render_plots_svg("Station 1", &[broken]), Err(Error::NonFiniteSample { index: 1, .. })));
+/// # Ok::<(), Error>(())
+/// ```
 pub fn render_plots_svg(title: &str, plots: &[Plot]) -> Result<String> {
     if plots.is_empty() {
         return Err(Error::NoPlots);

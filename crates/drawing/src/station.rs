@@ -80,6 +80,36 @@ fn block_lines(drawing: &StationDrawing, map: &ScreenMap, placer: &mut LabelPlac
 /// a NaN or infinite coordinate, [`Error::TooFewPoints`], [`Error::NonPositiveRadius`],
 /// [`Error::ZeroLengthDimension`], and [`Error::DegenerateExtent`] when all the geometry
 /// lies on one point.
+///
+/// # Example
+/// ```
+/// use flapwright_drawing::{render_station_svg, Dimension, Joint, Link, MechanismSnapshot, StationDrawing};
+/// use nalgebra::Point2;
+///
+/// let crank = |deg: f64| {
+///     let (s, c) = deg.to_radians().sin_cos();
+///     Point2::new(0.24 * c, 0.24 * s)
+/// };
+/// let snapshot = |label: &str, deg: f64| MechanismSnapshot {
+///     label: label.into(),
+///     deflection_deg: deg,
+///     flap_outline: vec![],
+///     links: vec![Link { name: "crank".into(), points: vec![Point2::origin(), crank(80.0 + deg)] }],
+///     joints: vec![
+///         Joint { name: "A0".into(), at: Point2::origin(), fixed: true },
+///         Joint { name: "A".into(), at: crank(80.0 + deg), fixed: false },
+///     ],
+/// };
+/// let drawing = StationDrawing {
+///     title: "Crank".into(),
+///     settings: vec![snapshot("stowed", 0.0), snapshot("takeoff", 15.0), snapshot("landing", 35.0)],
+///     dimensions: vec![Dimension::new("a2", Point2::origin(), crank(80.0))],
+///     ..Default::default()
+/// };
+/// let svg = render_station_svg(&drawing)?;
+/// assert!(svg.contains("a2 = 240.0 mm") && svg.contains("setting-2-landing"));
+/// # Ok::<(), flapwright_drawing::Error>(())
+/// ```
 pub fn render_station_svg(drawing: &StationDrawing) -> Result<String> {
     validate_station(drawing)?;
     let points = all_points(drawing);
@@ -107,7 +137,7 @@ pub fn render_station_svg(drawing: &StationDrawing) -> Result<String> {
 
     let rows = legend_rows(drawing) as f64;
     let footer_px = (ROW_PX * rows + 10.0).max(NOTE_HEIGHT_PX) + MARGIN_PX;
-    let page_height = drawing_bottom + 16.0 + footer_px;
+    let page_height = (drawing_bottom + 16.0 + footer_px).ceil();
 
     let frame = PageBox {
         left: MARGIN_PX,

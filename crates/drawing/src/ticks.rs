@@ -21,6 +21,11 @@ pub struct Ticks {
 ///
 /// `span` must be finite and > 0 and `target_count` >= 1; otherwise 1.0 is returned
 /// (a safe default for degenerate axes, which [`nice_ticks`] widens first).
+///
+/// ```
+/// assert_eq!(flapwright_drawing::nice_step(144.3, 6), 50.0);
+/// assert_eq!(flapwright_drawing::nice_step(1.0, 5), 0.2);
+/// ```
 pub fn nice_step(span: f64, target_count: usize) -> f64 {
     if !(span.is_finite() && span > 0.0) || target_count == 0 {
         return 1.0;

@@ -17,7 +17,7 @@ use crate::mesh::TriMesh;
 pub use crate::mesher::MIN_TRAILING_EDGE_GAP_CHORD_FRACTION;
 use crate::mesher::{consistent_trailing_edges, truncated_outline, Mesher};
 use crate::structure::{SparSpec, TorqueTubeSpec};
-use crate::wing::{SectionAt, Wing, WingSpec};
+use crate::wing::{Wing, WingSpec};
 
 /// Mesh fineness.
 #[derive(Debug, Clone, Copy, PartialEq)]

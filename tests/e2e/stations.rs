@@ -1,0 +1,255 @@
+//! Stations in the report: frames, sections, mechanism sweeps; the thesis case study
+//! through the binary; the default scene's section cuts against the thesis Fig. 45.
+
+use std::collections::BTreeMap;
+
+use flapwright_planes::boundary::boundary_points_m;
+use flapwright_planes::{boundary_deviation, parse_boundary_csv};
+use nalgebra::{Point2, Vector3};
+use serde_json::Value;
+
+use crate::{repo_root, run_flapwright};
+
+fn design(scene: &str) -> (tempfile::TempDir, Value) {
+    let dir = tempfile::tempdir().unwrap();
+    let scene_path = repo_root().join(scene);
+    let output = run_flapwright(
+        dir.path(),
+        &["design", scene_path.to_str().unwrap(), "--out", "out"],
+    );
+    assert!(
+        output.status.success(),
+        "stderr:\n{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let text = std::fs::read_to_string(dir.path().join("out/report.json")).unwrap();
+    (dir, serde_json::from_str(&text).unwrap())
+}
+
+fn vector(value: &Value) -> Vector3<f64> {
+    let a: Vec<f64> = serde_json::from_value(value.clone()).unwrap();
+    Vector3::new(a[0], a[1], a[2])
+}
+
+/// Paths of every `null` in the report: serde_json writes NaN and inf as null, so a null
+/// where a number belongs is a NaN that escaped.
+fn null_paths(value: &Value, path: String, found: &mut Vec<String>) {
+    match value {
+        Value::Null => found.push(path),
+        Value::Array(items) => items
+            .iter()
+            .enumerate()
+            .for_each(|(i, v)| null_paths(v, format!("{path}[{i}]"), found)),
+        Value::Object(map) => map
+            .iter()
+            .for_each(|(k, v)| null_paths(v, format!("{path}.{k}"), found)),
+        _ => {}
+    }
+}
+
+#[test]
+fn default_scene_stations_have_frames_sections_and_sweeps() {
+    let (_dir, report) = design("data/scenes/small-aircraft.toml");
+    let stations = report["stations"].as_array().unwrap();
+    assert_eq!(stations.len(), 2);
+    for station in stations {
+        let plane = &station["plane"];
+        let frame = &plane["frame"];
+        let (x, y, z) = (
+            vector(&frame["x_axis"]),
+            vector(&frame["y_axis"]),
+            vector(&frame["z_axis"]),
+        );
+        for (axis, name) in [(x, "x"), (y, "y"), (z, "z")] {
+            assert!((axis.norm() - 1.0).abs() < 1e-12, "{name} axis unit");
+        }
+        assert!(x.dot(&y).abs() < 1e-12 && y.dot(&z).abs() < 1e-12 && x.dot(&z).abs() < 1e-12);
+        assert!((x.cross(&y) - z).norm() < 1e-12, "right-handed");
+        assert!(
+            x.z.abs() < 1e-12 && x.x < 0.0,
+            "x horizontal, towards the nose"
+        );
+        assert!(z.y > 0.0, "z outboard");
+        // The track turns the flap about the fixed hinge line: residual is rounding only.
+        assert!(plane["out_of_plane_residual_m"].as_f64().unwrap() < 1e-12);
+        let parts: Vec<&str> = plane["sections"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| s["part_name"].as_str().unwrap())
+            .collect();
+        for part in ["wing", "flap", "rear-spar", "torque-tube"] {
+            assert!(
+                parts.contains(&part),
+                "{part} cut at {}: {parts:?}",
+                station["name"]
+            );
+        }
+        let cases = station["mechanism"]["load_cases"].as_array().unwrap();
+        assert_eq!(cases.len(), 2);
+        for case in cases {
+            assert!(case["stopped"].is_null(), "full deployment");
+            let samples = case["samples"].as_array().unwrap();
+            assert_eq!(samples.len(), 51);
+            for key in [
+                "input_m",
+                "deflection_deg",
+                "transmission_angle_deg",
+                "actuator_force_n",
+                "raise_torque_nm",
+                "lower_torque_nm",
+                "closure_residual_m",
+            ] {
+                assert!(samples[0][key].is_f64(), "sample field {key}");
+            }
+            for joint in ["A", "B0", "F", "G"] {
+                assert!(
+                    samples[0]["joint_reactions_n"][joint].is_f64(),
+                    "reaction at {joint}"
+                );
+            }
+            let last = samples.last().unwrap();
+            assert!((last["deflection_deg"].as_f64().unwrap() - 35.0).abs() < 1e-9);
+        }
+    }
+    let mut nulls = Vec::new();
+    null_paths(&report, String::new(), &mut nulls);
+    nulls.retain(|p| !p.ends_with(".stopped"));
+    assert!(
+        nulls.is_empty(),
+        "no NaN escaped into the report: {nulls:?}"
+    );
+}
+
+/// Table 3 of the thesis (`data/validation/thesis-table3.csv`) from the binary's report of
+/// `data/scenes/thesis-case-study.toml` (the mechanism crate's tests check the same numbers
+/// through its API; this checks the scene -> report path).
+#[test]
+fn thesis_case_study_scene_reproduces_table_3() {
+    let (_dir, report) = design("data/scenes/thesis-case-study.toml");
+    assert_eq!(
+        report["stages"],
+        serde_json::json!(["synthesis", "kinematics"]),
+        "no 3D stage without a wing"
+    );
+    let mechanism = &report["stations"][0]["mechanism"];
+    let synthesis = &mechanism["synthesis"];
+    assert!((synthesis["stroke_start_m"].as_f64().unwrap() * 1e3 - 80.3).abs() < 0.05);
+    assert!((synthesis["stroke_m"].as_f64().unwrap() * 1e3 - 144.3).abs() < 0.05);
+    let cases: BTreeMap<String, &Value> = mechanism["load_cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| (c["load_case"].as_str().unwrap().to_string(), &c["samples"]))
+        .collect();
+    let column = |case: &str, quantity: &str| -> Vec<f64> {
+        cases[case]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| match quantity {
+                "F_input" => s["actuator_force_n"].as_f64().unwrap(),
+                "G12G" => s["joint_reactions_n"]["G"].as_f64().unwrap(),
+                "G12F" => s["joint_reactions_n"]["F"].as_f64().unwrap(),
+                "T_R" => s["raise_torque_nm"].as_f64().unwrap() * 1e3,
+                "T_L" => s["lower_torque_nm"].as_f64().unwrap() * 1e3,
+                other => panic!("unknown quantity {other}"),
+            })
+            .collect()
+    };
+    let table =
+        std::fs::read_to_string(repo_root().join("data/validation/thesis-table3.csv")).unwrap();
+    let mut checked = 0;
+    for line in table.lines().filter(|l| !l.starts_with('#')).skip(1) {
+        let fields: Vec<&str> = line.split(',').collect();
+        let (quantity, scenario, statistic, printed) = (
+            fields[0],
+            fields[1],
+            fields[2],
+            fields[3].parse::<f64>().unwrap(),
+        );
+        if !["F_input", "G12G", "G12F", "T_R", "T_L"].contains(&quantity) {
+            continue;
+        }
+        let values = column(scenario, quantity);
+        let computed = match statistic {
+            "stowed" => values[0],
+            "min" => values.iter().copied().fold(f64::INFINITY, f64::min),
+            "max" => values.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+            other => panic!("unknown statistic {other}"),
+        };
+        assert!(
+            (computed - printed).abs() <= 0.005 * printed.abs(),
+            "{quantity} {scenario} {statistic}: {computed} vs Table 3 {printed}"
+        );
+        checked += 1;
+    }
+    assert!(checked >= 15, "checked {checked} Table 3 entries");
+}
+
+/// How close the default scene's section cuts come to the thesis Fig. 45 boundaries.
+///
+/// Measured (mm, max / mean distance of the thesis points to the nearest cut edge):
+/// flap 29 / 11 (inner), 36 / 17 (outer); rear spar face 36 / 8, 21 / 14; wing lower skin
+/// ahead of the cove 25 / 16, 13 / 11; torque tube centre within 0.3 mm. The thesis flap
+/// is thicker (~16 % of its chord in Fig. 45) than the NACA 63(1)-212 it names, which is
+/// most of the flap deviation. Not modelled: the main wing's upper shroud reaching back over
+/// the flap (Fig. 45 `wing-top`/`flap-top`, ~0.3 m behind our cove) and the cove shape
+/// (`flap-front`), so those boundaries are reported here, not asserted.
+#[test]
+fn default_scene_cuts_come_close_to_thesis_figure_45() {
+    let (_dir, report) = design("data/scenes/small-aircraft.toml");
+    let csv =
+        std::fs::read(repo_root().join("data/validation/thesis-fig45-boundaries.csv")).unwrap();
+    let rows = parse_boundary_csv(csv.as_slice()).unwrap();
+    // (thesis boundary, our part, bound on the max deviation in m: measured, rounded up to 5 mm)
+    let checks = [
+        ("flap", "flap", 0.040),
+        ("spar-front", "rear-spar", 0.040),
+        ("wing-below-spar", "wing", 0.030),
+    ];
+    for station in report["stations"].as_array().unwrap() {
+        let plane = station["name"].as_str().unwrap();
+        let sections: BTreeMap<&str, Vec<Vec<Point2<f64>>>> = station["plane"]["sections"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| {
+                let polygons: Vec<Vec<[f64; 2]>> =
+                    serde_json::from_value(s["polygons"].clone()).unwrap();
+                (
+                    s["part_name"].as_str().unwrap(),
+                    polygons
+                        .into_iter()
+                        .map(|p| p.into_iter().map(|q| Point2::new(q[0], q[1])).collect())
+                        .collect(),
+                )
+            })
+            .collect();
+        for (boundary, part, bound_m) in checks {
+            let reference = boundary_points_m(&rows, plane, boundary);
+            assert!(!reference.is_empty(), "{plane} {boundary} in the table");
+            let deviation = boundary_deviation(&sections[part], &reference).unwrap();
+            eprintln!(
+                "{plane:5} {boundary:16} vs {part:10}: max {:5.1} mm, mean {:5.1} mm",
+                deviation.max_m * 1e3,
+                deviation.mean_m * 1e3
+            );
+            assert!(
+                deviation.max_m < bound_m,
+                "{plane} {boundary}: {deviation:?}"
+            );
+        }
+        let tube = &sections["torque-tube"][0];
+        let centre = tube
+            .iter()
+            .fold(Vector3::zeros(), |acc, p| acc + Vector3::new(p.x, p.y, 0.0))
+            / tube.len() as f64;
+        let thesis = boundary_points_m(&rows, plane, "torque-tube-centre")[0];
+        let offset = (Point2::new(centre.x, centre.y) - thesis).norm();
+        assert!(
+            offset < 0.002,
+            "{plane} torque tube centre {offset} m from Fig. 45"
+        );
+    }
+}

@@ -53,7 +53,7 @@ pub(crate) fn joints_layer(
                 }
                 fixed_seen.push(&joint.name);
             }
-            let (x, y) = map.to_page(&joint.at);
+            let (x, y) = map.page_point(&joint.at);
             let (label, colour, class) = if joint.fixed {
                 (joint.name.clone(), INK, "fixed".to_owned())
             } else {
@@ -203,8 +203,8 @@ pub(crate) fn dimensions_layer(
         .set("id", "dimensions")
         .set("class", "dimensions");
     for dimension in dimensions {
-        let (x1, y1) = map.to_page(&dimension.from);
-        let (x2, y2) = map.to_page(&dimension.to);
+        let (x1, y1) = map.page_point(&dimension.from);
+        let (x2, y2) = map.page_point(&dimension.to);
         let length = ((x2 - x1).powi(2) + (y2 - y1).powi(2)).sqrt();
         if length < 1e-9 {
             continue; // validated as non-zero in metres; below a pixel there is no line to draw
@@ -226,22 +226,23 @@ pub(crate) fn dimensions_layer(
         let (sin, cos) = angle.to_radians().sin_cos();
         let box_hw = cos.abs() * half_w + sin.abs() * half_h;
         let box_hh = sin.abs() * half_w + cos.abs() * half_h;
-        let (mx, my) = (0.5 * (x1 + x2), 0.5 * (y1 + y2));
-        let offsets = [24.0, -24.0, 42.0, -42.0, 62.0, -62.0];
-        let text_centre = |offset: f64| {
-            let side = offset.signum();
-            let reach = offset + side * (half_h + 2.0);
-            (mx + nx * reach, my + ny * reach)
+        // Candidates: each offset (alternating sides, growing), then slid along the line.
+        let mut candidates: Vec<(f64, f64)> = Vec::new();
+        for offset in [24.0, -24.0, 42.0, -42.0, 62.0, -62.0] {
+            for along in [0.5, 0.35, 0.65, 0.25, 0.75] {
+                candidates.push((offset, along));
+            }
+        }
+        let text_centre = |(offset, along): (f64, f64)| {
+            let reach = offset + offset.signum() * (half_h + 2.0);
+            (
+                x1 + along * (x2 - x1) + nx * reach,
+                y1 + along * (y2 - y1) + ny * reach,
+            )
         };
-        let (tx, ty) = placer.place_best(offsets.iter().map(|o| text_centre(*o)), box_hw, box_hh);
-        let offset = offsets
-            .iter()
-            .copied()
-            .find(|o| {
-                let (cx, cy) = text_centre(*o);
-                (cx - tx).abs() < 1e-9 && (cy - ty).abs() < 1e-9
-            })
-            .unwrap_or(offsets[0]);
+        let (chosen, (tx, ty)) =
+            placer.place_best(candidates.iter().map(|c| text_centre(*c)), box_hw, box_hh);
+        let (offset, _) = candidates[chosen];
         let side = offset.signum();
         let (ax, ay) = (x1 + nx * offset, y1 + ny * offset);
         let (bx, by) = (x2 + nx * offset, y2 + ny * offset);
@@ -295,9 +296,15 @@ pub(crate) fn slot_labels(slots: &[SlotArc], map: &ScreenMap, placer: &mut Label
     let mut group = Group::new().set("id", "slot-labels").set("class", "labels");
     for slot in slots {
         let ends = slot.sample(2);
-        let (x, y) = map.to_page(&ends[1]);
-        let (cx, cy) = placer.place_near(x, y, 0.5 * text_width(&slot.name, size), 0.5 * size, 8.0);
-        group = group.add(
+        let (x, y) = map.page_point(&ends[1]);
+        let (half_width, half_height) = (0.5 * text_width(&slot.name, size), 0.5 * size);
+        let (cx, cy) = placer.place_near(x, y, half_width, half_height, 8.0);
+        let mut label = Group::new().set("class", "slot-label");
+        let distance = ((cx - x).powi(2) + (cy - y).powi(2)).sqrt() - half_width.max(half_height);
+        if distance > LEADER_MIN_PX {
+            label = label.add(line(x, y, cx, cy, "#4d4d4d", 0.7));
+        }
+        label = label.add(
             text(
                 &slot.name,
                 cx,
@@ -308,6 +315,7 @@ pub(crate) fn slot_labels(slots: &[SlotArc], map: &ScreenMap, placer: &mut Label
             )
             .set("font-style", "italic"),
         );
+        group = group.add(label);
     }
     group
 }
@@ -316,7 +324,7 @@ pub(crate) fn slot_labels(slots: &[SlotArc], map: &ScreenMap, placer: &mut Label
 pub(crate) fn block_slots(slots: &[SlotArc], map: &ScreenMap, placer: &mut LabelPlacer) {
     for slot in slots {
         for p in slot.sample(24) {
-            let (x, y) = map.to_page(&p);
+            let (x, y) = map.page_point(&p);
             placer.block(PageBox::centred(x, y, 6.0, 6.0));
         }
     }

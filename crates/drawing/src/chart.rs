@@ -3,7 +3,7 @@
 
 use crate::plot::Plot;
 use crate::style::{css_name, num, points_attribute, series_style, text, text_width, Anchor, INK};
-use crate::ticks::{format_tick, nice_ticks};
+use crate::ticks::{format_tick, padded_ticks};
 use svg::node::element::{Circle, Group, Line, Polyline, Rectangle};
 
 /// Width of one chart cell, px.
@@ -24,10 +24,12 @@ const TICK_FONT_PX: f64 = 12.0;
 const AXIS_FONT_PX: f64 = 13.0;
 /// Legend font size, px.
 const LEGEND_FONT_PX: f64 = 12.0;
-/// Wanted number of tick intervals on x and on y.
-const X_TICKS: usize = 6;
+/// Share of the data span added at each end of an axis.
+const PAD_FRACTION: f64 = 0.04;
+/// Wanted number of x tick intervals.
+const X_TICKS: usize = 8;
 /// Wanted number of y tick intervals.
-const Y_TICKS: usize = 5;
+const Y_TICKS: usize = 6;
 
 /// A plain line.
 fn line(x1: f64, y1: f64, x2: f64, y2: f64, colour: &str, width: f64) -> Line {
@@ -51,8 +53,8 @@ pub(crate) fn chart(index: usize, plot: &Plot, left: f64, top: f64) -> Group {
     let (y_min, y_max) = all().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), (_, y)| {
         (lo.min(*y), hi.max(*y))
     });
-    let x_ticks = nice_ticks(x_min, x_max, X_TICKS);
-    let y_ticks = nice_ticks(y_min, y_max, Y_TICKS);
+    let x_ticks = padded_ticks(x_min, x_max, X_TICKS, PAD_FRACTION);
+    let y_ticks = padded_ticks(y_min, y_max, Y_TICKS, PAD_FRACTION);
     let (area_left, area_top) = (left + LEFT_PX, top + TOP_PX);
     let (area_width, area_height) = (
         CHART_WIDTH_PX - LEFT_PX - RIGHT_PX,

@@ -136,35 +136,36 @@ impl LabelPlacer {
                 )
             })
         });
-        self.place_best(candidates, half_width, half_height)
+        self.place_best(candidates, half_width, half_height).1
     }
 
     /// Places a box of the given half-size at the first of `candidates` (centres) that
-    /// is free, or else at the one with the least overlap; returns that centre.
+    /// is free, or else at the one with the least overlap; returns the index of that
+    /// candidate and its centre.
     pub fn place_best(
         &mut self,
         candidates: impl IntoIterator<Item = (f64, f64)>,
         half_width: f64,
         half_height: f64,
-    ) -> (f64, f64) {
-        let mut best: Option<((f64, f64), f64)> = None;
-        for (cx, cy) in candidates {
+    ) -> (usize, (f64, f64)) {
+        let mut best: Option<(usize, (f64, f64), f64)> = None;
+        for (index, (cx, cy)) in candidates.into_iter().enumerate() {
             let candidate = PageBox::centred(cx, cy, half_width, half_height);
             let cost = self.cost(&candidate);
             if cost <= 0.0 {
-                best = Some(((cx, cy), 0.0));
+                best = Some((index, (cx, cy), 0.0));
                 break;
             }
-            if best.is_none_or(|(_, c)| cost < c) {
-                best = Some(((cx, cy), cost));
+            if best.is_none_or(|(_, _, c)| cost < c) {
+                best = Some((index, (cx, cy), cost));
             }
         }
-        let ((cx, cy), _) = best.unwrap_or(((self.frame.left, self.frame.top), 0.0));
+        let (index, (cx, cy), _) = best.unwrap_or((0, (self.frame.left, self.frame.top), 0.0));
         self.taken.push((
             PageBox::centred(cx, cy, half_width, half_height),
             SOLID_WEIGHT,
         ));
-        (cx, cy)
+        (index, (cx, cy))
     }
 }
 

@@ -48,7 +48,7 @@ pub(crate) fn sections_layer(sections: &[SectionOutline], map: &ScreenMap) -> Gr
         for polygon in &section.polygons {
             part = part.add(
                 Polygon::new()
-                    .set("points", points_attribute(&map.to_page_all(polygon)))
+                    .set("points", points_attribute(&map.page_points(polygon)))
                     .set("fill", fill)
                     .set("stroke", stroke)
                     .set("stroke-width", num(width))
@@ -64,7 +64,7 @@ pub(crate) fn sections_layer(sections: &[SectionOutline], map: &ScreenMap) -> Gr
 pub(crate) fn slots_layer(slots: &[SlotArc], map: &ScreenMap) -> Group {
     let mut group = Group::new().set("id", "slots").set("class", "slots");
     for slot in slots {
-        let points = points_attribute(&map.to_page_all(&slot.sample(ARC_SAMPLES)));
+        let points = points_attribute(&map.page_points(&slot.sample(ARC_SAMPLES)));
         let channel = |colour: &str, width: f64| {
             Polyline::new()
                 .set("points", points.clone())
@@ -99,7 +99,7 @@ pub(crate) fn envelope_layer(envelope: &[Vec<Point2<f64>>], map: &ScreenMap) -> 
     for outline in envelope {
         group = group.add(
             Polygon::new()
-                .set("points", points_attribute(&map.to_page_all(outline)))
+                .set("points", points_attribute(&map.page_points(outline)))
                 .set("fill", ENVELOPE_FILL)
                 .set("fill-opacity", "0.3")
                 .set("stroke", ENVELOPE_STROKE)
@@ -127,7 +127,7 @@ pub(crate) fn fairing_layer(line: &[Point2<f64>], map: &ScreenMap) -> Group {
         .add(title("fairing line"))
         .add(
             Polyline::new()
-                .set("points", points_attribute(&map.to_page_all(line)))
+                .set("points", points_attribute(&map.page_points(line)))
                 .set("fill", "none")
                 .set("stroke", FAIRING_COLOUR)
                 .set("stroke-width", "2.2")
@@ -162,7 +162,7 @@ pub(crate) fn setting_layer(index: usize, setting: &MechanismSnapshot, map: &Scr
     for outline in &setting.flap_outline {
         let mut polygon = Polygon::new()
             .set("class", "flap-outline")
-            .set("points", points_attribute(&map.to_page_all(outline)))
+            .set("points", points_attribute(&map.page_points(outline)))
             .set("fill", style.colour)
             .set("fill-opacity", "0.07")
             .set("stroke", style.colour)
@@ -179,7 +179,7 @@ pub(crate) fn setting_layer(index: usize, setting: &MechanismSnapshot, map: &Scr
             dashed(
                 Polyline::new()
                     .set("class", "link")
-                    .set("points", points_attribute(&map.to_page_all(&link.points)))
+                    .set("points", points_attribute(&map.page_points(&link.points)))
                     .set("fill", "none")
                     .set("stroke", style.colour)
                     .set("stroke-width", "3.2")

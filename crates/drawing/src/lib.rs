@@ -69,4 +69,4 @@ pub use model::{
 };
 pub use plot::{plots_page_size_px, render_plots_svg, Plot, Series, PLOT_COLUMNS};
 pub use station::{render_station_svg, STATION_PAGE_WIDTH_PX};
-pub use ticks::{format_tick, nice_step, nice_ticks, Ticks};
+pub use ticks::{format_tick, nice_step, nice_ticks, padded_ticks, Ticks};

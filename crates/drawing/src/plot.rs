@@ -16,7 +16,7 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
 }
 
-/// One small chart: title, axis labels (with units, e.g. "nut travel s34 [mm]") and
+/// One small chart: title, axis labels (with units, e.g. `"nut travel s34 [mm]"`) and
 /// series.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Plot {

@@ -52,18 +52,18 @@ fn all_points(drawing: &StationDrawing) -> Vec<Point2<f64>> {
 /// light obstacle for labels.
 fn block_lines(drawing: &StationDrawing, map: &ScreenMap, placer: &mut LabelPlacer) {
     for polygon in drawing.sections.iter().flat_map(|s| s.polygons.iter()) {
-        placer.block_line(&map.to_page_all(polygon), true);
+        placer.block_line(&map.page_points(polygon), true);
     }
     for setting in &drawing.settings {
         for outline in &setting.flap_outline {
-            placer.block_line(&map.to_page_all(outline), true);
+            placer.block_line(&map.page_points(outline), true);
         }
         for link in &setting.links {
-            placer.block_line(&map.to_page_all(&link.points), false);
+            placer.block_line(&map.page_points(&link.points), false);
         }
     }
     if let Some(line) = &drawing.fairing_line {
-        placer.block_line(&map.to_page_all(line), false);
+        placer.block_line(&map.page_points(line), false);
     }
 }
 
@@ -115,7 +115,7 @@ pub fn render_station_svg(drawing: &StationDrawing) -> Result<String> {
     let points = all_points(drawing);
     let bounds = Bounds::around(&points).ok_or(Error::EmptyDrawing)?;
     let extent = bounds.width().max(bounds.height());
-    if !(extent > 0.0) {
+    if extent <= 0.0 {
         return Err(Error::DegenerateExtent {
             width_m: bounds.width(),
             height_m: bounds.height(),

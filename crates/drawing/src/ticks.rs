@@ -91,6 +91,74 @@ pub fn nice_ticks(min: f64, max: f64, target_count: usize) -> Ticks {
     }
 }
 
+/// Ticks for a chart axis: the axis spans the data plus `pad_fraction` of its span on
+/// each side (so no line runs along the frame), and the ticks are the multiples of a
+/// nice step (1/2/5 x 10^k, the one giving the interval count closest to
+/// `target_count`) inside that range, at least two of them.
+///
+/// Degenerate and non-finite data are handled as in [`nice_ticks`].
+pub fn padded_ticks(min: f64, max: f64, target_count: usize, pad_fraction: f64) -> Ticks {
+    let widened = nice_ticks(min, max, target_count);
+    let (low, high) = if min.is_finite() && max.is_finite() && (max - min).abs() > 0.0 {
+        (min.min(max), min.max(max))
+    } else {
+        // Constant or invalid data: keep the widened nice range.
+        return widened;
+    };
+    let pad = pad_fraction.max(0.0) * (high - low);
+    let (axis_min, axis_max) = (low - pad, high + pad);
+    let target = target_count.max(1) as f64;
+    let mut step = nice_step(axis_max - axis_min, target_count.max(1));
+    // The 1-2-5 rule can leave far fewer intervals than wanted (2.5 instead of 6 when
+    // it jumps from 200 to 500): take the next smaller step when it comes closer.
+    let smaller = smaller_nice_step(step);
+    let span = axis_max - axis_min;
+    if span / smaller - target < target - span / step {
+        step = smaller;
+    }
+    let inside = |step: f64| {
+        let first = (axis_min / step - 1e-9).ceil() as i64;
+        let last = (axis_max / step + 1e-9).floor() as i64;
+        (first..=last)
+            .map(|i| {
+                let v = i as f64 * step;
+                if v.abs() < step * 1e-9 {
+                    0.0
+                } else {
+                    v
+                }
+            })
+            .collect::<Vec<f64>>()
+    };
+    let mut values = inside(step);
+    if values.len() < 2 {
+        // Too few ticks inside: step down 1 -> 0.5 -> 0.2 ... until there are two.
+        for _ in 0..6 {
+            step = smaller_nice_step(step);
+            values = inside(step);
+            if values.len() >= 2 {
+                break;
+            }
+        }
+    }
+    Ticks {
+        axis_min,
+        axis_max,
+        step,
+        values,
+    }
+}
+
+/// The next nice step below `step`: 10 -> 5 -> 2 -> 1 (times a power of ten).
+fn smaller_nice_step(step: f64) -> f64 {
+    let mantissa = step / 10f64.powf(step.log10().floor());
+    if (mantissa - 5.0).abs() < 1e-6 {
+        step * 0.4
+    } else {
+        step * 0.5
+    }
+}
+
 /// Formats a tick value with just enough decimals for `step` (e.g. step 0.2 -> "1.4").
 pub fn format_tick(value: f64, step: f64) -> String {
     let decimals = if step > 0.0 && step.is_finite() {
@@ -171,6 +239,20 @@ mod tests {
         );
         let exact = nice_ticks(0.0, 30.000000000001, 5);
         assert_eq!(exact.axis_max, 30.0);
+    }
+
+    #[test]
+    fn padded_ticks_stay_inside_the_padded_range() {
+        let ticks = padded_ticks(80.3, 224.6, 8, 0.04);
+        assert!(ticks.axis_min < 80.3 && ticks.axis_max > 224.6);
+        assert_eq!(ticks.step, 20.0);
+        assert_eq!(ticks.values.first(), Some(&80.0));
+        assert_eq!(ticks.values.last(), Some(&220.0));
+        let deflection = padded_ticks(0.0, 35.0, 5, 0.04);
+        assert_eq!(deflection.values, vec![0.0, 10.0, 20.0, 30.0]);
+        // 1253 / 6: 200 gives 6.3 intervals, 500 only 2.5.
+        assert_eq!(padded_ticks(480.0, 1640.0, 6, 0.04).step, 200.0);
+        assert!(padded_ticks(5.0, 5.0, 5, 0.04).values.len() >= 2);
     }
 
     #[test]

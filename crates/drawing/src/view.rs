@@ -95,7 +95,7 @@ impl ScreenMap {
     }
 
     /// Page position of a station-frame point.
-    pub fn to_page(&self, p: &Point2<f64>) -> (f64, f64) {
+    pub fn page_point(&self, p: &Point2<f64>) -> (f64, f64) {
         (
             self.left_px + (p.x - self.bounds.min_x) * self.px_per_m,
             self.top_px + (self.bounds.max_y - p.y) * self.px_per_m,
@@ -103,8 +103,8 @@ impl ScreenMap {
     }
 
     /// Page positions of several points.
-    pub fn to_page_all(&self, points: &[Point2<f64>]) -> Vec<(f64, f64)> {
-        points.iter().map(|p| self.to_page(p)).collect()
+    pub fn page_points(&self, points: &[Point2<f64>]) -> Vec<(f64, f64)> {
+        points.iter().map(|p| self.page_point(p)).collect()
     }
 
     /// Height of the drawn box, px.
@@ -127,11 +127,11 @@ mod tests {
         };
         let map = ScreenMap::fit(bounds, 10.0, 20.0, 200.0, 1000.0);
         assert_eq!(map.px_per_m, 100.0);
-        assert_eq!(map.to_page(&Point2::new(-1.0, 0.5)), (10.0, 20.0));
-        assert_eq!(map.to_page(&Point2::new(1.0, 0.0)), (210.0, 70.0));
+        assert_eq!(map.page_point(&Point2::new(-1.0, 0.5)), (10.0, 20.0));
+        assert_eq!(map.page_point(&Point2::new(1.0, 0.0)), (210.0, 70.0));
         // Height-limited: centred horizontally.
         let tall = ScreenMap::fit(bounds, 0.0, 0.0, 200.0, 25.0);
         assert_eq!(tall.px_per_m, 50.0);
-        assert_eq!(tall.to_page(&Point2::new(-1.0, 0.5)), (50.0, 0.0));
+        assert_eq!(tall.page_point(&Point2::new(-1.0, 0.5)), (50.0, 0.0));
     }
 }

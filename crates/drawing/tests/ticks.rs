@@ -1,6 +1,6 @@
 //! Nice ticks: properties over random ranges.
 
-use flapwright_drawing::{nice_step, nice_ticks};
+use flapwright_drawing::{nice_step, nice_ticks, padded_ticks};
 use proptest::prelude::*;
 
 proptest! {
@@ -23,5 +23,14 @@ proptest! {
         let step = nice_step(span, target);
         prop_assert!(step * (1.0 + 1e-9) >= span / target as f64);
         prop_assert!(step <= 10.0 * span / target as f64 * (1.0 + 1e-9));
+    }
+
+    #[test]
+    fn padded_ticks_lie_inside_and_are_at_least_two(low in -1e4f64..1e4, span in 1e-3f64..1e4, target in 2usize..10) {
+        let high = low + span;
+        let ticks = padded_ticks(low, high, target, 0.04);
+        prop_assert!(ticks.axis_min < low && ticks.axis_max > high);
+        prop_assert!(ticks.values.len() >= 2, "{:?}", ticks);
+        prop_assert!(ticks.values.iter().all(|v| *v >= ticks.axis_min - 1e-9 * span && *v <= ticks.axis_max + 1e-9 * span));
     }
 }

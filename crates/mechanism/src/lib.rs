@@ -76,6 +76,7 @@ mod sweep;
 mod track_pose;
 mod track_spec;
 mod track_synthesis;
+pub mod urdf;
 
 pub use angle::{
     four_times_triangle_area, guarded_acos, ACOS_ROUNDING_TOLERANCE, DEFAULT_TOGGLE_TOLERANCE_RAD,

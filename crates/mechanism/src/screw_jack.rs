@@ -108,4 +108,24 @@ mod tests {
         assert!(!steep.is_self_locking());
         assert!(steep.torques(load).lower_torque_nm < 0.0);
     }
+
+    /// Virtual work: without friction one turn of T_R lifts L by one lead, 2π T_R = L l,
+    /// and lowering returns it, T_L = -T_R; with friction the efficiency drops below 1.
+    #[test]
+    fn frictionless_thread_conserves_work() {
+        let frictionless = ScrewJack {
+            lead_m: 0.008,
+            mean_radius_m: 0.016,
+            friction_coefficient: 0.0,
+        };
+        let torques = frictionless.torques(1000.0);
+        let turn = 2.0 * std::f64::consts::PI;
+        assert!((turn * torques.raise_torque_nm - 1000.0 * 0.008).abs() < 1e-12);
+        assert!((torques.lower_torque_nm + torques.raise_torque_nm).abs() < 1e-12);
+        let rough = ScrewJack {
+            friction_coefficient: 0.1,
+            ..frictionless
+        };
+        assert!(1000.0 * 0.008 / (turn * rough.torques(1000.0).raise_torque_nm) < 1.0);
+    }
 }

@@ -4,10 +4,10 @@
 //!
 //! Run: `cargo run -p flapwright-sizing --example thesis_screw_jack`
 
-use flapwright_sizing::{size_screw_jack, ScrewJackInput, ScrewThread, CS25_SAFETY_FACTOR};
+use flapwright_sizing::{size_screw_jack, ScrewJackInput, ScrewJack, CS25_SAFETY_FACTOR};
 
 fn main() -> Result<(), flapwright_sizing::Error> {
-    let thread = ScrewThread {
+    let thread = ScrewJack {
         mean_radius_m: 0.016,
         lead_m: 0.008,
         friction_coefficient: 0.1,
@@ -16,8 +16,8 @@ fn main() -> Result<(), flapwright_sizing::Error> {
     let jack = ScrewJackInput {
         station: "thesis".into(),
         name: "screw jack".into(),
-        max_raise_torque_nm: thread.raise_torque_nm(input_force_n)?,
-        max_lower_torque_nm: thread.lower_torque_nm(input_force_n)?,
+        max_raise_torque_nm: thread.torques(input_force_n).raise_torque_nm,
+        max_lower_torque_nm: thread.torques(input_force_n).lower_torque_nm,
     };
     let sizing = size_screw_jack(&jack, CS25_SAFETY_FACTOR)?;
     println!(

@@ -88,7 +88,7 @@ pub use rod::{
     GoverningCase, RodInput, RodSizing,
 };
 pub use screw_jack::{
-    motor_torque_nm, size_screw_jack, ScrewJackInput, ScrewJackSizing, ScrewThread,
+    motor_torque_nm, size_screw_jack, ScrewJackInput, ScrewJackSizing,
 };
 pub use section::SectionShape;
 pub use torque_tube::{
@@ -97,3 +97,6 @@ pub use torque_tube::{
 };
 pub use warning::SizingWarning;
 pub use weights::{mass_kg, prism_volume_m3, MassBreakdown, MassItem, StationMass};
+
+/// The screw thread (thesis eqs 3.6.9, 3.6.10) is the mechanism crate's.
+pub use flapwright_mechanism::ScrewJack;

@@ -1,74 +1,12 @@
-//! Screw jacks: raise and lower torque of a square thread (thesis `000` section 3.6),
-//! self-locking, and the motor torque with a safety factor (thesis section 5.2).
+//! Screw jacks: the motor torque with a safety factor and the self-locking verdict
+//! (thesis `000` section 5.2). The thread torques themselves (eqs 3.6.9, 3.6.10) belong to
+//! the mechanism: `flapwright_mechanism::ScrewJack`, re-exported here.
 
 use serde::Serialize;
 
-use crate::check::{finite, non_negative, positive};
+use crate::check::finite;
 use crate::warning::SizingWarning;
 use crate::{Error, Result};
-use std::f64::consts::PI;
-
-/// Square-thread screw geometry (thesis `000` Fig. 17-18).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct ScrewThread {
-    /// Mean thread radius r, m (thesis case study: 16 mm).
-    pub mean_radius_m: f64,
-    /// Lead l (axial advance per turn), m (thesis: 8 mm).
-    pub lead_m: f64,
-    /// Thread friction coefficient f (thesis: 0.1).
-    pub friction_coefficient: f64,
-}
-
-impl ScrewThread {
-    fn validate(&self) -> Result<()> {
-        positive("mean_radius_m", self.mean_radius_m)?;
-        positive("lead_m", self.lead_m)?;
-        non_negative("friction_coefficient", self.friction_coefficient)?;
-        Ok(())
-    }
-
-    /// Lead angle lambda = atan(l / (2 pi r)), rad. (The thesis text prints
-    /// "tan lambda = 1/2 pi r" before eq 3.6.9: an extraction typo for l / (2 pi r).)
-    pub fn lead_angle_rad(&self) -> f64 {
-        (self.lead_m / (2.0 * PI * self.mean_radius_m)).atan()
-    }
-
-    /// Self-locking by geometry: f > tan(lambda) = l / (2 pi r), i.e. the lowering torque
-    /// of eq 3.6.10 is positive for a positive load.
-    pub fn is_self_locking(&self) -> bool {
-        2.0 * PI * self.mean_radius_m * self.friction_coefficient > self.lead_m
-    }
-
-    /// Raising torque T_R = (2 pi r f + l) / (2 pi r - f l) r L (thesis eq 3.6.9), N m,
-    /// for axial load L in N (the mechanism's input force F_input).
-    ///
-    /// # Errors
-    /// [`Error::OutOfRange`] for bad geometry or load; [`Error::ScrewJamsWhenRaising`]
-    /// when 2 pi r - f l <= 0.
-    pub fn raise_torque_nm(&self, axial_load_n: f64) -> Result<f64> {
-        self.validate()?;
-        finite("axial_load_n", axial_load_n)?;
-        let (r, l, f) = (self.mean_radius_m, self.lead_m, self.friction_coefficient);
-        let denominator_m = 2.0 * PI * r - f * l;
-        if denominator_m <= 0.0 {
-            return Err(Error::ScrewJamsWhenRaising { denominator_m });
-        }
-        Ok((2.0 * PI * r * f + l) / denominator_m * r * axial_load_n)
-    }
-
-    /// Lowering torque T_L = (2 pi r f - l) / (2 pi r + f l) r L (thesis eq 3.6.10), N m.
-    /// Positive: torque must be applied to lower (self-locking); negative: the load
-    /// back-drives the screw.
-    ///
-    /// # Errors
-    /// [`Error::OutOfRange`] for bad geometry or load.
-    pub fn lower_torque_nm(&self, axial_load_n: f64) -> Result<f64> {
-        self.validate()?;
-        finite("axial_load_n", axial_load_n)?;
-        let (r, l, f) = (self.mean_radius_m, self.lead_m, self.friction_coefficient);
-        Ok((2.0 * PI * r * f - l) / (2.0 * PI * r + f * l) * r * axial_load_n)
-    }
-}
 
 /// Peak screw torques of one screw jack over the deployment.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -158,45 +96,4 @@ pub fn size_screw_jack(input: &ScrewJackInput, safety_factor: f64) -> Result<Scr
         self_locking,
         warnings,
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Eq 3.6.9/3.6.10 against the tan-form eqs 3.6.4/3.6.8 they were rewritten from.
-    #[test]
-    fn lead_form_matches_tan_form() {
-        let t = ScrewThread {
-            mean_radius_m: 0.016,
-            lead_m: 0.008,
-            friction_coefficient: 0.1,
-        };
-        let (r, f, tan) = (0.016, 0.1, t.lead_angle_rad().tan());
-        let raise = r * (f + tan) / (1.0 - f * tan) * 1000.0;
-        let lower = r * (f - tan) / (1.0 + f * tan) * 1000.0;
-        assert!((t.raise_torque_nm(1000.0).unwrap() - raise).abs() < 1e-12);
-        assert!((t.lower_torque_nm(1000.0).unwrap() - lower).abs() < 1e-12);
-        assert!(t.is_self_locking());
-    }
-
-    /// Virtual work: without friction one turn of torque T_R lifts L by one lead,
-    /// 2 pi T_R = L l, and lowering returns it, T_L = -T_R.
-    #[test]
-    fn frictionless_thread_conserves_work() {
-        let t = ScrewThread {
-            mean_radius_m: 0.016,
-            lead_m: 0.008,
-            friction_coefficient: 0.0,
-        };
-        let raise = t.raise_torque_nm(1000.0).unwrap();
-        assert!((2.0 * PI * raise - 1000.0 * 0.008).abs() < 1e-12);
-        assert!((t.lower_torque_nm(1000.0).unwrap() + raise).abs() < 1e-12);
-        // With friction the efficiency L l / (2 pi T_R) drops below 1.
-        let t = ScrewThread {
-            friction_coefficient: 0.1,
-            ..t
-        };
-        assert!(1000.0 * 0.008 / (2.0 * PI * t.raise_torque_nm(1000.0).unwrap()) < 1.0);
-    }
 }

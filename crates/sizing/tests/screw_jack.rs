@@ -2,11 +2,11 @@
 
 use crate::data::{number, rows};
 use approx::assert_relative_eq;
-use flapwright_sizing::{motor_torque_nm, size_screw_jack, ScrewJackInput, ScrewThread};
+use flapwright_sizing::{motor_torque_nm, size_screw_jack, ScrewJackInput, ScrewJack};
 
-fn thesis_thread() -> ScrewThread {
+fn thesis_thread() -> ScrewJack {
     // Thesis section 5.2: r = 16 mm, l = 8 mm, f = 0.1.
-    ScrewThread {
+    ScrewJack {
         mean_radius_m: 0.016,
         lead_m: 0.008,
         friction_coefficient: 0.1,
@@ -26,8 +26,8 @@ fn table_3_raise_and_lower_torques() {
     for row in &table {
         let force_n = number(&row[1]);
         let tolerance_nm = number(&row[4]) * 1e-3;
-        let raise_nm = thread.raise_torque_nm(force_n).unwrap();
-        let lower_nm = thread.lower_torque_nm(force_n).unwrap();
+        let raise_nm = thread.torques(force_n).raise_torque_nm;
+        let lower_nm = thread.torques(force_n).lower_torque_nm;
         assert!(
             (raise_nm - number(&row[2]) * 1e-3).abs() <= tolerance_nm,
             "{}: T_R {raise_nm}",
@@ -53,14 +53,14 @@ fn section_5_2_motor_torque() {
     let scale = 10f64.powf(number(&row[4]));
     let round = |x: f64| (x * scale).round() / scale;
     // Raise torque recomputed from the spreadsheet input force 1622.9 N:
-    let recomputed = thesis_thread().raise_torque_nm(1622.9).unwrap();
+    let recomputed = thesis_thread().torques(1622.9).raise_torque_nm;
     assert_relative_eq!(recomputed, raise_nm, max_relative = 1e-5);
     let sizing = size_screw_jack(
         &ScrewJackInput {
             station: "thesis".into(),
             name: "screw jack".into(),
             max_raise_torque_nm: recomputed,
-            max_lower_torque_nm: thesis_thread().lower_torque_nm(1622.9).unwrap(),
+            max_lower_torque_nm: thesis_thread().torques(1622.9).lower_torque_nm,
         },
         safety_factor,
     )
@@ -82,18 +82,18 @@ fn section_5_2_motor_torque() {
 #[test]
 fn back_drivable_screw_warns() {
     // Steep lead: l = 20 mm, r = 16 mm, f = 0.1: tan(lambda) = 0.199 > f.
-    let thread = ScrewThread {
+    let thread = ScrewJack {
         mean_radius_m: 0.016,
         lead_m: 0.020,
         friction_coefficient: 0.1,
     };
     assert!(!thread.is_self_locking());
-    let lower = thread.lower_torque_nm(1000.0).unwrap();
+    let lower = thread.torques(1000.0).lower_torque_nm;
     assert!(lower < 0.0);
     let input = ScrewJackInput {
         station: "s1".into(),
         name: "jack".into(),
-        max_raise_torque_nm: thread.raise_torque_nm(1000.0).unwrap(),
+        max_raise_torque_nm: thread.torques(1000.0).raise_torque_nm,
         max_lower_torque_nm: lower,
     };
     let sizing = size_screw_jack(&input, 1.5).unwrap();

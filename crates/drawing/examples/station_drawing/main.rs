@@ -14,132 +14,12 @@ use flapwright_drawing::{
     render_plots_svg, render_station_svg, Dimension, Joint, Link, MechanismSnapshot, PartStyle,
     Plot, SectionOutline, Series, SlotArc, StationDrawing,
 };
-use nalgebra::{Point2, Rotation2, Vector2};
+use nalgebra::Vector2;
 use std::path::{Path, PathBuf};
 
-type P = Point2<f64>;
+mod geometry;
 
-/// Millimetres to a station-frame point in metres.
-fn mm(x: f64, y: f64) -> P {
-    P::new(x / 1000.0, y / 1000.0)
-}
-
-/// Rotation about A0 (the origin) by `deg`, counter-clockwise (trailing edge down).
-fn rotate(p: &P, deg: f64) -> P {
-    Rotation2::new(deg.to_radians()) * p
-}
-
-/// NACA 2412-like flap outline: chord 560 mm, leading edge at x = 160 mm, trailing edge
-/// at x = -400 mm, chord line at y = 330 mm (station frame, x towards the nose).
-fn flap_outline() -> Vec<P> {
-    let (chord, thickness, camber, camber_at) = (560.0, 0.12, 0.02, 0.4);
-    let stations: Vec<f64> = (0..=24)
-        .map(|i| 0.5 * (1.0 - (std::f64::consts::PI * i as f64 / 24.0).cos()))
-        .collect();
-    let half_thickness = |t: f64| {
-        5.0 * thickness
-            * (0.2969 * t.sqrt() - 0.1260 * t - 0.3516 * t * t + 0.2843 * t.powi(3)
-                - 0.1036 * t.powi(4))
-    };
-    let camber_line = |t: f64| {
-        if t < camber_at {
-            camber / (camber_at * camber_at) * (2.0 * camber_at * t - t * t)
-        } else {
-            camber / ((1.0 - camber_at).powi(2))
-                * (1.0 - 2.0 * camber_at + 2.0 * camber_at * t - t * t)
-        }
-    };
-    let point = |t: f64, sign: f64| {
-        mm(
-            160.0 - chord * t,
-            330.0 + chord * (camber_line(t) + sign * half_thickness(t)),
-        )
-    };
-    let mut outline: Vec<P> = stations.iter().rev().map(|t| point(*t, 1.0)).collect(); // TE -> LE, upper
-    outline.extend(stations.iter().skip(1).map(|t| point(*t, -1.0))); // LE -> TE, lower
-    outline.pop(); // trailing edge closes onto the first point
-    outline
-}
-
-/// Rear part of the wing with the cove around the flap leading edge (illustrative).
-fn wing_skin() -> Vec<P> {
-    [
-        (750.0, 446.0),
-        (600.0, 440.0),
-        (300.0, 421.0),
-        (150.0, 402.0),
-        (60.0, 384.0),
-        (52.0, 378.0),
-        (150.0, 386.0),
-        (205.0, 378.0),
-        (232.0, 350.0),
-        (238.0, 318.0),
-        (255.0, 292.0),
-        (400.0, 284.0),
-        (750.0, 281.0),
-    ]
-    .iter()
-    .map(|(x, y)| mm(*x, *y))
-    .collect()
-}
-
-/// A circle as a polygon (station frame, m).
-fn circle(centre: P, radius_m: f64) -> Vec<P> {
-    (0..32)
-        .map(|i| {
-            centre
-                + radius_m
-                    * Vector2::new(
-                        (i as f64 / 32.0 * std::f64::consts::TAU).cos(),
-                        (i as f64 / 32.0 * std::f64::consts::TAU).sin(),
-                    )
-        })
-        .collect()
-}
-
-/// Convex hull (Andrew's monotone chain), counter-clockwise.
-fn convex_hull(mut points: Vec<P>) -> Vec<P> {
-    points.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
-    let cross = |o: &P, a: &P, b: &P| (a - o).perp(&(b - o));
-    let mut hull: Vec<P> = Vec::new();
-    for pass in 0..2 {
-        let start = hull.len();
-        let iter: Box<dyn Iterator<Item = &P>> = if pass == 0 {
-            Box::new(points.iter())
-        } else {
-            Box::new(points.iter().rev())
-        };
-        for p in iter {
-            while hull.len() >= start + 2
-                && cross(&hull[hull.len() - 2], &hull[hull.len() - 1], p) <= 0.0
-            {
-                hull.pop();
-            }
-            hull.push(*p);
-        }
-        hull.pop();
-    }
-    hull
-}
-
-/// Distance from `p` to segment `a`-`b`, metres.
-fn segment_distance(p: &P, a: &P, b: &P) -> f64 {
-    let ab = b - a;
-    let t = ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
-    (p - (a + t * ab)).norm()
-}
-
-/// Smallest vertex-to-edge distance between two closed polygons, metres.
-fn clearance(first: &[P], second: &[P]) -> f64 {
-    let one_way = |from: &[P], to: &[P]| {
-        from.iter()
-            .flat_map(|p| {
-                (0..to.len()).map(move |i| segment_distance(p, &to[i], &to[(i + 1) % to.len()]))
-            })
-            .fold(f64::INFINITY, f64::min)
-    };
-    one_way(first, second).min(one_way(second, first))
-}
+use geometry::{circle, clearance, convex_hull, flap_outline, mm, rotate, wing_skin, P};
 
 /// The thesis Table 2 mechanism, positions in the station frame.
 struct Demo {
@@ -271,7 +151,7 @@ fn build_drawing(demo: &Demo) -> StationDrawing {
     let flap_spar_x = 160.0 - 0.2 * 560.0;
     StationDrawing {
         title: "Station demo - thesis case study (Table 2)".into(),
-        subtitle: "Circular-arc slots b1 = 350 mm, c1 = 300 mm; screw jack from B0; flap rotation 35 deg about A0".into(),
+        subtitle: "Circular-arc slots b1 = 350 mm, c1 = 300 mm; screw jack from B0; flap rotation 35\u{b0} about A0".into(),
         sections: vec![
             SectionOutline { part: "wing skin".into(), kind: PartStyle::WingSkin, polygons: vec![wing] },
             SectionOutline { part: "rear spar".into(), kind: PartStyle::Spar, polygons: vec![vec![mm(600.0, 282.0), mm(612.0, 282.0), mm(612.0, 440.0), mm(600.0, 440.0)]] },

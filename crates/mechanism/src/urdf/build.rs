@@ -1,0 +1,282 @@
+//! Building the urdf-rs robot of a wing and writing it as XML.
+
+use std::collections::BTreeSet;
+use std::fmt::Write as _;
+
+use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
+use urdf_rs::{
+    Axis, Geometry, Joint, JointLimit, JointType, Link, LinkName, Robot, Vec3, Visual,
+};
+
+use super::layout::{
+    joint_limits, screw_stowed_direction_rad, validate_mesh_path, validate_name,
+    validate_stations, velocity_limits, StationNames,
+};
+use super::rpy::origin_from_isometry;
+use super::{BaseLink, CutJoint, StationMechanism3d, UrdfModel};
+use crate::error::{Error, Result};
+
+/// The URDF version written (`<robot version>`); 1.0 keeps every reader happy.
+const URDF_VERSION: &str = "1.0";
+
+/// Builds the wing's robot: `base` as the root link in the aircraft frame and every
+/// station's track as a tree (see the [module docs](super)), with the flap link on the
+/// station that owns it. Joint limits come from the deployment range: hinge [0, β3] (rad),
+/// screw the extreme directions over the stroke (rad), nut [s34,i, s34,f] (m).
+///
+/// Meshes: the base meshes are in the aircraft frame (identity visual origin); the flap
+/// mesh, in the aircraft frame with the flap stowed, gets the visual origin
+/// station_from_aircraft of its owning station, so that it shows where it is at zero
+/// joint values.
+///
+/// Errors: [`Error::NoStations`], [`Error::InvalidUrdfName`], [`Error::DuplicateUrdfName`],
+/// [`Error::FlapOwnership`], [`Error::FlapMeshOnNonOwningStation`],
+/// [`Error::MeshPathNotRelative`], [`Error::NonFinitePlacement`], and pose errors of a
+/// track that cannot run its own stroke.
+pub fn build_robot(
+    robot_name: &str,
+    base: &BaseLink,
+    stations: &[StationMechanism3d],
+) -> Result<UrdfModel> {
+    validate_name("robot", robot_name)?;
+    validate_name("base link", &base.name)?;
+    validate_stations(stations)?;
+    let mut base_link = empty_link(&base.name);
+    for mesh in &base.meshes {
+        base_link
+            .visual
+            .push(mesh_visual(mesh.name.as_str(), &mesh.filename, &Isometry3::identity())?);
+    }
+    let mut robot = Robot {
+        name: robot_name.to_owned(),
+        version: Some(URDF_VERSION.to_owned()),
+        links: vec![base_link],
+        joints: Vec::new(),
+        materials: Vec::new(),
+    };
+    let mut cut_joints = Vec::new();
+    for station in stations {
+        add_station(&mut robot, &mut cut_joints, &base.name, station)?;
+    }
+    let mut names = BTreeSet::new();
+    for name in robot.links.iter().map(|l| &l.name) {
+        if !names.insert(name.clone()) {
+            return Err(Error::DuplicateUrdfName { name: name.clone() });
+        }
+    }
+    names.clear();
+    for name in robot.joints.iter().map(|j| &j.name) {
+        if !names.insert(name.clone()) {
+            return Err(Error::DuplicateUrdfName { name: name.clone() });
+        }
+    }
+    Ok(UrdfModel { robot, cut_joints })
+}
+
+/// The robot as URDF XML: an XML declaration, a comment naming the frames and every cut
+/// joint, then urdf-rs's `write_to_string` (which writes no declaration itself).
+///
+/// Errors: [`Error::UrdfWrite`] when urdf-rs cannot serialise the robot.
+pub fn to_xml(model: &UrdfModel) -> Result<String> {
+    let body = urdf_rs::write_to_string(&model.robot).map_err(|e| Error::UrdfWrite {
+        message: e.to_string(),
+    })?;
+    let mut text = String::from("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<!--\n");
+    // Writing to a String cannot fail.
+    let _ = writeln!(
+        text,
+        "  Robot `{}` written by flapwright-mechanism (urdf module).\n  \
+         Units: metres, radians. Base link frame = aircraft frame (x aft, y starboard, z up).\n  \
+         Station links: thesis station frame (origin A0 = hinge, x to the nose, y up, z outboard).\n  \
+         Joint values per deployment sample are in the trajectory file beside this one.\n  \
+         URDF describes trees only: these closed-loop joints are cut (not in this file):",
+        model.robot.name
+    );
+    for cut in &model.cut_joints {
+        let [x, y, z] = cut.location_stowed_ac_m;
+        let [ax, ay, az] = cut.axis_ac;
+        let _ = writeln!(
+            text,
+            "    - station {}: {} joint {} between links {} and {}, at ({x:.6}, {y:.6}, {z:.6}) m \
+             stowed, axis ({ax:.6}, {ay:.6}, {az:.6}) (aircraft frame)",
+            cut.station, cut.kind, cut.joint, cut.between.0, cut.between.1
+        );
+    }
+    text.push_str(
+        "  Pin-in-slot joints F and G are represented exactly by each <station>_flap_hinge\n  \
+         revolute at A0: both slots are circular arcs centred at A0.\n-->\n",
+    );
+    text.push_str(&body);
+    if !text.ends_with('\n') {
+        text.push('\n');
+    }
+    Ok(text)
+}
+
+fn add_station(
+    robot: &mut Robot,
+    cut_joints: &mut Vec<CutJoint>,
+    base_name: &str,
+    station: &StationMechanism3d,
+) -> Result<()> {
+    let names = StationNames::new(&station.name);
+    let track = station.track;
+    let limits = joint_limits(track)?;
+    let velocities = velocity_limits(track)?;
+    let z = Vector3::z();
+    let placement = &station.aircraft_from_station;
+    for link in [
+        &names.station_link,
+        &names.fitting_link,
+        &names.screw_link,
+        &names.nut_link,
+    ] {
+        robot.links.push(empty_link(link));
+    }
+    robot.joints.push(joint(
+        &names.mount_joint,
+        JointType::Fixed,
+        (base_name, &names.station_link),
+        placement,
+        z,
+        None,
+    ));
+    robot.joints.push(joint(
+        &names.hinge_joint,
+        JointType::Revolute,
+        (&names.station_link, &names.fitting_link),
+        &Isometry3::identity(),
+        z,
+        Some((limits[0], velocities[0])),
+    ));
+    let b0 = track.synthesis().screw_mount_m;
+    let screw_origin = Isometry3::from_parts(
+        Translation3::new(b0.x, b0.y, 0.0),
+        UnitQuaternion::from_axis_angle(&Vector3::z_axis(), screw_stowed_direction_rad(track)),
+    );
+    robot.joints.push(joint(
+        &names.screw_joint,
+        JointType::Revolute,
+        (&names.station_link, &names.screw_link),
+        &screw_origin,
+        z,
+        Some((limits[1], velocities[1])),
+    ));
+    robot.joints.push(joint(
+        &names.nut_joint,
+        JointType::Prismatic,
+        (&names.screw_link, &names.nut_link),
+        &Isometry3::identity(),
+        Vector3::x(),
+        Some((limits[2], velocities[2])),
+    ));
+    let axis_ac = placement * z;
+    let to_array = |p: Point3<f64>| [p.x, p.y, p.z];
+    let a_stowed = track.synthesis().nut_pivot_stowed_m;
+    cut_joints.push(CutJoint {
+        station: station.name.clone(),
+        joint: "A".to_owned(),
+        kind: "revolute",
+        between: (names.nut_link.clone(), names.fitting_link.clone()),
+        location_stowed_ac_m: to_array(placement * Point3::new(a_stowed.x, a_stowed.y, 0.0)),
+        axis_ac: [axis_ac.x, axis_ac.y, axis_ac.z],
+    });
+    if station.owns_flap {
+        // The flap link frame = this station's frame with the flap stowed, so a mesh given
+        // in the aircraft frame needs the visual origin station_from_aircraft.
+        let mut flap = empty_link(&station.flap_name);
+        if let Some(filename) = &station.flap_mesh {
+            validate_mesh_path(filename)?;
+            flap.visual
+                .push(mesh_visual(&station.flap_name, filename, &placement.inverse())?);
+        }
+        robot.links.push(flap);
+        robot.joints.push(joint(
+            &names.flap_mount_joint,
+            JointType::Fixed,
+            (&names.fitting_link, &station.flap_name),
+            &Isometry3::identity(),
+            z,
+            None,
+        ));
+    } else {
+        cut_joints.push(CutJoint {
+            station: station.name.clone(),
+            joint: "flap_attachment".to_owned(),
+            kind: "fixed",
+            between: (names.fitting_link.clone(), station.flap_name.clone()),
+            location_stowed_ac_m: to_array(placement * Point3::origin()),
+            axis_ac: [axis_ac.x, axis_ac.y, axis_ac.z],
+        });
+    }
+    Ok(())
+}
+
+fn empty_link(name: &str) -> Link {
+    Link {
+        name: name.to_owned(),
+        inertial: Default::default(),
+        visual: Vec::new(),
+        collision: Vec::new(),
+    }
+}
+
+fn mesh_visual(name: &str, filename: &str, link_from_mesh: &Isometry3<f64>) -> Result<Visual> {
+    validate_name("mesh", name)?;
+    validate_mesh_path(filename)?;
+    let (xyz, rpy) = origin_from_isometry(link_from_mesh);
+    Ok(Visual {
+        name: Some(name.to_owned()),
+        origin: urdf_rs::Pose {
+            xyz: Vec3(xyz),
+            rpy: Vec3(rpy),
+        },
+        geometry: Geometry::Mesh {
+            filename: filename.to_owned(),
+            scale: None,
+        },
+        material: None,
+    })
+}
+
+fn joint(
+    name: &str,
+    joint_type: JointType,
+    (parent, child): (&str, &str),
+    parent_from_child: &Isometry3<f64>,
+    axis: Vector3<f64>,
+    limit: Option<((f64, f64), f64)>,
+) -> Joint {
+    let (xyz, rpy) = origin_from_isometry(parent_from_child);
+    let limit = limit.map_or_else(JointLimit::default, |((lower, upper), velocity)| {
+        JointLimit {
+            lower,
+            upper,
+            effort: 0.0,
+            velocity,
+            ..JointLimit::default()
+        }
+    });
+    Joint {
+        name: name.to_owned(),
+        joint_type,
+        origin: urdf_rs::Pose {
+            xyz: Vec3(xyz),
+            rpy: Vec3(rpy),
+        },
+        parent: LinkName {
+            link: parent.to_owned(),
+        },
+        child: LinkName {
+            link: child.to_owned(),
+        },
+        axis: Axis {
+            xyz: Vec3([axis.x, axis.y, axis.z]),
+        },
+        limit,
+        calibration: None,
+        dynamics: None,
+        mimic: None,
+        safety_controller: None,
+    }
+}

@@ -189,3 +189,49 @@ fn missing_scene_file() {
     assert_eq!(output.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&output.stderr).contains("absent.toml"));
 }
+
+#[test]
+fn gearbox_efficiency_above_one() {
+    let scene = format!(
+        "{}\n[sizing]\ngearbox_efficiency = 1.2\n",
+        default_scene_text()
+    );
+    assert_rejected(&scene, &["sizing.gearbox_efficiency", "[0, 1]"]);
+}
+
+#[test]
+fn custom_material_with_zero_allowable_stress_and_negative_density() {
+    let scene = format!(
+        "{}\n[sizing]\nscrew_material = \"brittle\"\n\n[[materials]]\nname = \"brittle\"\ndensity_kg_m3 = -10.0\nallowable_tensile_pa = 0.0\nallowable_shear_pa = 1e8\nyoungs_modulus_pa = 7e10\n",
+        default_scene_text()
+    );
+    assert_rejected(
+        &scene,
+        &[
+            "materials[0].density_kg_m3",
+            "materials[0].allowable_tensile_pa",
+            "must be > 0",
+        ],
+    );
+}
+
+#[test]
+fn unknown_material() {
+    let scene = format!(
+        "{}\n[sizing]\ntorque_tube_material = \"unobtainium\"\n",
+        default_scene_text()
+    );
+    assert_rejected(
+        &scene,
+        &["sizing.torque_tube_material", "unobtainium", "steel-4340"],
+    );
+}
+
+#[test]
+fn mechanism_that_cannot_be_synthesised() {
+    // a1 = 0.1 m <= a2 cos(beta3 / 2): the collinearity rule of thesis step 8 has no solution.
+    assert_rejected(
+        &default_with("base_distance_m = 0.275", "base_distance_m = 0.100"),
+        &["station[0].mechanism", "collinearity"],
+    );
+}

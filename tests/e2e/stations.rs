@@ -129,7 +129,7 @@ fn thesis_case_study_scene_reproduces_table_3() {
     let (_dir, report) = design("data/scenes/thesis-case-study.toml");
     assert_eq!(
         report["stages"],
-        serde_json::json!(["synthesis", "kinematics"]),
+        serde_json::json!(["synthesis", "kinematics", "sizing"]),
         "no 3D stage without a wing"
     );
     let mechanism = &report["stations"][0]["mechanism"];
@@ -185,6 +185,16 @@ fn thesis_case_study_scene_reproduces_table_3() {
         checked += 1;
     }
     assert!(checked >= 15, "checked {checked} Table 3 entries");
+
+    // Thesis 5.2: "required maximum motor torque is 4.7 N m ... with a safety factor of 1.5,
+    // 7.1 N m" (printed to one decimal: 1.5 x 4.70038 = 7.05057 rounds to 7.1).
+    let jack = &report["sizing"]["screw_jacks"][0];
+    let raise = jack["max_raise_torque_nm"].as_f64().unwrap();
+    let motor = jack["motor_torque_nm"].as_f64().unwrap();
+    assert_eq!(format!("{raise:.1}"), "4.7");
+    assert_eq!(format!("{motor:.1}"), "7.1");
+    assert!((motor - 1.5 * raise).abs() < 1e-12);
+    assert_eq!(jack["self_locking"], true);
 }
 
 /// How close the default scene's section cuts come to the thesis Fig. 45 boundaries.

@@ -13,6 +13,7 @@ use crate::scene::Scene;
 
 mod geometry;
 pub mod mechanisms;
+mod sizing;
 mod stations;
 
 /// What a design run reads.
@@ -79,6 +80,7 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
 
     let mechanisms = stages.run("synthesis", || mechanisms::synthesise_all(scene))?;
     let mut planes = vec![None; scene.station.len()];
+    let mut station_origins_ac = Vec::new();
     if let Some(wing) = &scene.wing {
         let model = stages.run("geometry", || {
             geometry::build_model(scene, wing, inputs.scene_dir)
@@ -92,6 +94,7 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
         let placed = stages.run("planes", || {
             stations::place_all(scene, &model, &meshed, &mechanisms)
         })?;
+        station_origins_ac = placed.iter().map(|p| p.station.frame.origin_ac()).collect();
         planes = placed
             .iter()
             .map(|p| {
@@ -112,6 +115,21 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
                 .map(|m| mechanisms::sweep_station(m, &cases, samples, &mut warnings).map(Some))
                 .collect::<Result<Vec<_>>>()
         })?;
+    }
+    let mut sizing_report = None;
+    if scene.outputs.sizing && scene.outputs.kinematics {
+        let reports: Vec<_> = mechanism_reports.iter().flatten().cloned().collect();
+        let motor_ac = scene
+            .structure
+            .torque_tube
+            .as_ref()
+            .and_then(|t| t.path_m.first())
+            .map(|p| nalgebra::Point3::new(p[0], p[1], p[2]));
+        let sized = stages.run("sizing", || {
+            sizing::size_all(scene, &mechanisms, &reports, &station_origins_ac, motor_ac)
+        })?;
+        warnings.extend(sized.warnings.iter().map(|w| w.to_string()));
+        sizing_report = Some(sized);
     }
     let station_reports: Vec<StationReport> = scene
         .station
@@ -137,6 +155,7 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
         stages: stages.names,
         parts,
         stations: station_reports,
+        sizing: sizing_report,
         warnings,
         timings: stages.timings,
     };

@@ -23,6 +23,8 @@ pub struct Report {
     pub parts: Vec<PartReport>,
     /// Per support station.
     pub stations: Vec<StationReport>,
+    /// Rods, screw jacks, torque tubes, drive and masses (when sizing ran).
+    pub sizing: Option<flapwright_sizing::SizingReport>,
     /// Warnings (near-toggle, self-locking lost, ...), each naming where.
     pub warnings: Vec<String>,
     /// Wall time per stage, s. The only part of the report that changes between runs.

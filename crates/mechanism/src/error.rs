@@ -166,7 +166,9 @@ pub enum Error {
     },
     /// A URDF name (station, flap, base link or mesh) is empty or uses characters outside
     /// ASCII letters, digits, `_` and `-` (or contains `--`, which XML comments forbid).
-    #[error("URDF {what} name `{name}` must be non-empty ASCII letters, digits, '_' or '-' (no \"--\")")]
+    #[error(
+        "URDF {what} name `{name}` must be non-empty ASCII letters, digits, '_' or '-' (no \"--\")"
+    )]
     InvalidUrdfName {
         /// What the name is for ("station", "flap", "base link", "mesh").
         what: &'static str,

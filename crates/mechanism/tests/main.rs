@@ -8,3 +8,4 @@ mod properties;
 mod thesis_appendix_c;
 mod thesis_tables;
 mod toggle;
+mod urdf;

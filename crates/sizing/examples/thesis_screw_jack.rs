@@ -4,7 +4,7 @@
 //!
 //! Run: `cargo run -p flapwright-sizing --example thesis_screw_jack`
 
-use flapwright_sizing::{size_screw_jack, ScrewJackInput, ScrewJack, CS25_SAFETY_FACTOR};
+use flapwright_sizing::{size_screw_jack, ScrewJack, ScrewJackInput, CS25_SAFETY_FACTOR};
 
 fn main() -> Result<(), flapwright_sizing::Error> {
     let thread = ScrewJack {

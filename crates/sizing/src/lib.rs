@@ -87,9 +87,7 @@ pub use rod::{
     axial_envelope_n, buckling_radius_m, euler_critical_load_n, size_rod, strength_radius_m,
     GoverningCase, RodInput, RodSizing,
 };
-pub use screw_jack::{
-    motor_torque_nm, size_screw_jack, ScrewJackInput, ScrewJackSizing,
-};
+pub use screw_jack::{motor_torque_nm, size_screw_jack, ScrewJackInput, ScrewJackSizing};
 pub use section::SectionShape;
 pub use torque_tube::{
     cumulative_torques_nm, ideal_motor_torque_nm, size_torque_tubes, torsion_radius_m,

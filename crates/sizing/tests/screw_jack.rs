@@ -2,7 +2,7 @@
 
 use crate::data::{number, rows};
 use approx::assert_relative_eq;
-use flapwright_sizing::{motor_torque_nm, size_screw_jack, ScrewJackInput, ScrewJack};
+use flapwright_sizing::{motor_torque_nm, size_screw_jack, ScrewJack, ScrewJackInput};
 
 fn thesis_thread() -> ScrewJack {
     // Thesis section 5.2: r = 16 mm, l = 8 mm, f = 0.1.

@@ -46,6 +46,78 @@ pub struct Scene {
     /// Mesh and sampling resolution.
     #[serde(default)]
     pub resolution: ResolutionScene,
+    /// Sizing choices: materials, gearbox efficiency, tube wall.
+    #[serde(default)]
+    pub sizing: SizingScene,
+    /// Custom materials, referred to by name from `[sizing]`.
+    #[serde(default)]
+    pub materials: Vec<MaterialScene>,
+}
+
+/// `[sizing]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SizingScene {
+    /// Material of the screws (sized as rods for strength and buckling): a preset
+    /// (`steel-4340`, `aluminium-7075-t6`, `titanium-ti-6al-4v`) or a `[[materials]]` name.
+    #[serde(default = "default_screw_material")]
+    pub screw_material: String,
+    /// Material of the torque tubes.
+    #[serde(default = "default_tube_material")]
+    pub torque_tube_material: String,
+    /// Efficiency of each station gearbox, (0, 1].
+    #[serde(default = "default_gearbox_efficiency")]
+    pub gearbox_efficiency: f64,
+    /// Torque tube inner / outer radius, [0, 1) (0: solid).
+    #[serde(default = "default_wall_ratio")]
+    pub torque_tube_inner_to_outer_ratio: f64,
+    /// Euler end-fixity factor K of the screws (1: pinned-pinned).
+    #[serde(default = "default_end_fixity")]
+    pub screw_end_fixity_factor: f64,
+}
+
+fn default_screw_material() -> String {
+    "steel-4340".into()
+}
+fn default_tube_material() -> String {
+    "aluminium-7075-t6".into()
+}
+fn default_gearbox_efficiency() -> f64 {
+    0.9
+}
+fn default_wall_ratio() -> f64 {
+    0.8
+}
+fn default_end_fixity() -> f64 {
+    1.0
+}
+
+impl Default for SizingScene {
+    fn default() -> Self {
+        Self {
+            screw_material: default_screw_material(),
+            torque_tube_material: default_tube_material(),
+            gearbox_efficiency: default_gearbox_efficiency(),
+            torque_tube_inner_to_outer_ratio: default_wall_ratio(),
+            screw_end_fixity_factor: default_end_fixity(),
+        }
+    }
+}
+
+/// `[[materials]]`: a custom material.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialScene {
+    /// Name used in `[sizing]`.
+    pub name: String,
+    /// Density, kg/m^3.
+    pub density_kg_m3: f64,
+    /// Allowable tensile (and compressive) stress, Pa.
+    pub allowable_tensile_pa: f64,
+    /// Allowable shear stress, Pa.
+    pub allowable_shear_pa: f64,
+    /// Young's modulus, Pa.
+    pub youngs_modulus_pa: f64,
 }
 
 /// Which reference line the panel sweep angles are measured on.
@@ -303,6 +375,9 @@ pub struct OutputsScene {
     /// Mechanism kinematics and forces.
     #[serde(default = "yes")]
     pub kinematics: bool,
+    /// Rods, screw jacks, torque tubes, drive power, masses (needs kinematics).
+    #[serde(default = "yes")]
+    pub sizing: bool,
 }
 
 fn yes() -> bool {
@@ -314,6 +389,7 @@ impl Default for OutputsScene {
         Self {
             stl: true,
             kinematics: true,
+            sizing: true,
         }
     }
 }

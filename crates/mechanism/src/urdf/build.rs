@@ -4,13 +4,11 @@ use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
-use urdf_rs::{
-    Axis, Geometry, Joint, JointLimit, JointType, Link, LinkName, Robot, Vec3, Visual,
-};
+use urdf_rs::{Axis, Geometry, Joint, JointLimit, JointType, Link, LinkName, Robot, Vec3, Visual};
 
 use super::layout::{
-    joint_limits, screw_stowed_direction_rad, validate_mesh_path, validate_name,
-    validate_stations, velocity_limits, StationNames,
+    joint_limits, screw_stowed_direction_rad, validate_mesh_path, validate_name, validate_stations,
+    velocity_limits, StationNames,
 };
 use super::rpy::origin_from_isometry;
 use super::{BaseLink, CutJoint, StationMechanism3d, UrdfModel};
@@ -43,9 +41,11 @@ pub fn build_robot(
     validate_stations(stations)?;
     let mut base_link = empty_link(&base.name);
     for mesh in &base.meshes {
-        base_link
-            .visual
-            .push(mesh_visual(mesh.name.as_str(), &mesh.filename, &Isometry3::identity())?);
+        base_link.visual.push(mesh_visual(
+            mesh.name.as_str(),
+            &mesh.filename,
+            &Isometry3::identity(),
+        )?);
     }
     let mut robot = Robot {
         name: robot_name.to_owned(),
@@ -187,8 +187,11 @@ fn add_station(
         let mut flap = empty_link(&station.flap_name);
         if let Some(filename) = &station.flap_mesh {
             validate_mesh_path(filename)?;
-            flap.visual
-                .push(mesh_visual(&station.flap_name, filename, &placement.inverse())?);
+            flap.visual.push(mesh_visual(
+                &station.flap_name,
+                filename,
+                &placement.inverse(),
+            )?);
         }
         robot.links.push(flap);
         robot.joints.push(joint(

@@ -176,14 +176,13 @@ pub(crate) fn key_points(station: &StationMechanism3d) -> Vec<KeyPointLayout> {
         ("F", synthesis.outer_pin_stowed_m, PosePoint::OuterPin),
         ("G", synthesis.inner_pin_stowed_m, PosePoint::InnerPin),
     ];
-    let point = |group: &str, label: &str, link: &str, local: Point3<f64>, follows| {
-        KeyPointLayout {
+    let point =
+        |group: &str, label: &str, link: &str, local: Point3<f64>, follows| KeyPointLayout {
             name: format!("{group}.{label}"),
             link: link.to_owned(),
             position_link_m: local,
             follows,
-        }
-    };
+        };
     let s = station.name.as_str();
     let mut points = vec![
         point(

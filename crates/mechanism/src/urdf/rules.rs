@@ -49,11 +49,15 @@ pub fn check_rules(robot: &Robot) -> Vec<String> {
         let (parent, child) = (joint.parent.link.as_str(), joint.child.link.as_str());
         for (role, link) in [("parent", parent), ("child", child)] {
             if !links.contains(link) {
-                violations.push(format!("joint `{name}`: {role} link `{link}` does not exist"));
+                violations.push(format!(
+                    "joint `{name}`: {role} link `{link}` does not exist"
+                ));
             }
         }
         if parent == child {
-            violations.push(format!("joint `{name}`: parent and child are both `{child}`"));
+            violations.push(format!(
+                "joint `{name}`: parent and child are both `{child}`"
+            ));
         }
         if let Some(previous) = parent_of.insert(child, name) {
             violations.push(format!(
@@ -149,8 +153,15 @@ fn check_geometry(link_name: &str, link: &urdf_rs::Link, violations: &mut Vec<St
         .map(|v| (&v.geometry, &v.origin))
         .chain(link.collision.iter().map(|c| (&c.geometry, &c.origin)));
     for (geometry, origin) in geometries {
-        if origin.xyz.iter().chain(origin.rpy.iter()).any(|v| !v.is_finite()) {
-            violations.push(format!("link `{link_name}`: a geometry origin is not finite"));
+        if origin
+            .xyz
+            .iter()
+            .chain(origin.rpy.iter())
+            .any(|v| !v.is_finite())
+        {
+            violations.push(format!(
+                "link `{link_name}`: a geometry origin is not finite"
+            ));
         }
         if let Geometry::Mesh { filename, scale } = geometry {
             if !is_relative_path(filename) {

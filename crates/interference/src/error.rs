@@ -32,7 +32,7 @@ pub enum Error {
         parameter: f64,
         /// The geometry error.
         #[source]
-        source: flapwright_geom::Error,
+        source: Box<flapwright_geom::Error>,
     },
     /// A part's speed bound is negative or not finite, so no certified bound can be given.
     #[error("part {part}: speed bound {value} m per unit deployment must be finite and >= 0")]

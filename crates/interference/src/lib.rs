@@ -5,6 +5,11 @@
 //!   over the deployment parameter `t` (pose and a certified speed bound).
 //! - [`sweep_pair`] → [`PairClearance`]: smallest clearance of a pair over the deployment,
 //!   where it occurs, the closest points, and a residual bound.
+//! - [`track_parts`]: a circular-arc-track station's screw, nut and fittings as parts
+//!   ([`ScrewAboutMount`], [`AboutAxis`] motions with certified speed bounds).
+//! - [`check_assembly`] → [`InterferenceReport`]: every moving part against the fixed
+//!   structure and the screws against the flap; joints are [`DeclaredContact`]s.
+//! - [`fairing_depth`]: how far the mechanism reaches below the lower wing/flap contour.
 //!
 //! # Units and frames
 //! Metres, aircraft frame (x aft, y outboard, z up). `t` is whatever the caller's motions
@@ -25,10 +30,18 @@
 //! A speed bound that is too small voids the guarantee silently; derive it from the
 //! mechanism's geometry (largest radius times largest angular rate), never from samples.
 
+mod check;
 mod error;
+mod fairing;
+mod motion;
 mod part;
 mod sweep;
+mod track;
 
+pub use check::{check_assembly, Assembly, InterferenceReport, PairResult};
 pub use error::{Error, Result};
+pub use fairing::{fairing_depth, FairingDepth, PlanarCapsule};
+pub use motion::{AboutAxis, ScrewAboutMount};
 pub use part::{Fixed, Motion, Part};
 pub use sweep::{sweep_pair, PairClearance, SweepSettings};
+pub use track::{screw_outer_radius_m, track_parts, DeclaredContact, LinkSizes, TrackParts};

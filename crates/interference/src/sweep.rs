@@ -159,7 +159,7 @@ pub fn sweep_pair(
             part_a: a.name.clone(),
             part_b: b.name.clone(),
             parameter: t,
-            source,
+            source: Box::new(source),
         })?;
         Ok(Sample {
             t,

@@ -31,6 +31,37 @@
 //! by the joint origins; origins carry URDF fixed-axis rpy, R = Rz(yaw) Ry(pitch) Rx(roll)
 //! ([`rpy_from_rotation`]).
 //!
+//! ```
+//! use flapwright_mechanism::urdf::{self, BaseLink, StationMechanism3d};
+//! use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec};
+//! use nalgebra::{Isometry3, Vector3};
+//!
+//! let track = CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study())?;
+//! let stations = [StationMechanism3d {
+//!     name: "inner".into(),
+//!     // Station x to the nose (-x_ac), y up (z_ac), z outboard (y_ac): a half turn
+//!     // about (0, 1, 1)/√2.
+//!     aircraft_from_station: Isometry3::new(
+//!         Vector3::new(3.2, 1.5, 0.4),
+//!         Vector3::new(0.0, 1.0, 1.0).normalize() * std::f64::consts::PI,
+//!     ),
+//!     track: &track,
+//!     flap_name: "flap".into(),
+//!     owns_flap: true,
+//!     flap_mesh: Some("meshes/flap.stl".into()),
+//! }];
+//! let base = BaseLink { name: "wing".into(), meshes: vec![] };
+//! let model = urdf::build_robot("right_wing", &base, &stations)?;
+//! assert!(urdf::check_rules(&model.robot).is_empty());
+//! let xml = urdf::to_xml(&model)?;
+//! assert!(xml.starts_with("<?xml"));
+//! let trajectory = urdf::trajectory(&stations, 11)?;
+//! assert_eq!(trajectory.joint_names[0], "inner_flap_hinge");
+//! let outboard = stations[0].aircraft_from_station * Vector3::z();
+//! assert!((outboard - Vector3::y()).norm() < 1e-15);
+//! # Ok::<(), flapwright_mechanism::Error>(())
+//! ```
+//!
 //! Limitations: links carry no inertia (mass 0: the file is for viewers and checks, not
 //! for dynamics); joint efforts are 0 (unknown here); velocity limits are the largest
 //! rates sampled at the spec's nominal nut speed.

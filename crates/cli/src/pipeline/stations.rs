@@ -78,7 +78,7 @@ pub fn place_all(
             })
             .to_vec();
             let deployment = FlapDeployment {
-                hinge: axis.clone(),
+                hinge: axis,
                 base_point_ac: a0_ac,
                 overlap_axis_ac: nalgebra::Vector3::z_axis(),
                 gap_axis_ac: nalgebra::Vector3::x_axis(),

@@ -10,7 +10,7 @@ pub fn rotation_from_rpy(rpy: [f64; 3]) -> Rotation3<f64> {
 }
 
 /// Roll, pitch, yaw (rad) of a rotation, with R = Rz(yaw) Ry(pitch) Rx(roll); pitch in
-/// [-π/2, π/2], roll and yaw in (-π, π].
+/// [-π/2, π/2], roll and yaw in [-π, π].
 ///
 /// Accurate everywhere, gimbal lock included: roll comes from atan2(r21, r22) (0 when
 /// both vanish); pitch and yaw are then read from M = R Rx(roll)ᵀ = Rz(yaw) Ry(pitch),
@@ -44,10 +44,12 @@ pub fn isometry_from_origin(xyz: [f64; 3], rpy: [f64; 3]) -> Isometry3<f64> {
 
 /// (xyz (m), rpy (rad)) of a URDF `<origin>` for the transform parent_from_child.
 pub fn origin_from_isometry(parent_from_child: &Isometry3<f64>) -> ([f64; 3], [f64; 3]) {
+    // `+ 0.0` turns -0 into 0, so files do not print "-0".
     let t = parent_from_child.translation.vector;
+    let rpy = rpy_from_rotation(&parent_from_child.rotation.to_rotation_matrix());
     (
-        [t.x, t.y, t.z],
-        rpy_from_rotation(&parent_from_child.rotation.to_rotation_matrix()),
+        [t.x + 0.0, t.y + 0.0, t.z + 0.0],
+        rpy.map(|angle| angle + 0.0),
     )
 }
 

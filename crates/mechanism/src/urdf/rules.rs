@@ -119,7 +119,7 @@ fn check_axis_and_limits(joint: &urdf_rs::Joint, violations: &mut Vec<String>) {
     if moving {
         let axis = joint.axis.xyz.0;
         let norm = axis.iter().map(|a| a * a).sum::<f64>().sqrt();
-        if !((norm - 1.0).abs() <= AXIS_UNIT_TOLERANCE) {
+        if norm.is_nan() || (norm - 1.0).abs() > AXIS_UNIT_TOLERANCE {
             violations.push(format!(
                 "joint `{name}`: axis {axis:?} has length {norm}, not 1"
             ));
@@ -139,7 +139,7 @@ fn check_axis_and_limits(joint: &urdf_rs::Joint, violations: &mut Vec<String>) {
             ));
         }
         for (what, value) in [("effort", limit.effort), ("velocity", limit.velocity)] {
-            if !(value >= 0.0) {
+            if value.is_nan() || value < 0.0 {
                 violations.push(format!("joint `{name}`: {what} limit {value} is negative"));
             }
         }

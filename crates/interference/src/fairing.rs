@@ -1,0 +1,131 @@
+//! Fairing depth (thesis `000`, Ch. 5: the figure of merit): how far below the local lower
+//! surface of wing and stowed flap the mechanism reaches over the deployment, measured in
+//! the station plane.
+
+use nalgebra::Point2;
+use serde::Serialize;
+
+/// A round solid of the mechanism in the station plane: a segment swept by a radius
+/// (a point when both ends coincide).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlanarCapsule {
+    /// Part name.
+    pub part: &'static str,
+    /// One end, station frame (m).
+    pub from: Point2<f64>,
+    /// Other end (m).
+    pub to: Point2<f64>,
+    /// Radius (m).
+    pub radius_m: f64,
+}
+
+/// Fairing depth of one station.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FairingDepth {
+    /// Largest depth below the lower surface (m); 0 when nothing protrudes.
+    pub depth_m: f64,
+    /// The same in % of the local flap chord.
+    pub depth_percent_flap_chord: f64,
+    /// Part that reaches deepest.
+    pub part: String,
+    /// Flap rotation where it does (rad).
+    pub at_parameter: f64,
+    /// The deepest point, station frame (m).
+    pub point_st: [f64; 2],
+}
+
+/// Lowest y of the contour at `x` (edges of all `polygons` that span x), if any.
+fn lower_surface_y(polygons: &[Vec<Point2<f64>>], x: f64) -> Option<f64> {
+    let mut lowest: Option<f64> = None;
+    for polygon in polygons {
+        for (i, a) in polygon.iter().enumerate() {
+            let b = polygon[(i + 1) % polygon.len()];
+            if (a.x - x) * (b.x - x) <= 0.0 && a.x != b.x {
+                let y = a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x);
+                lowest = Some(lowest.map_or(y, |l: f64| l.min(y)));
+            }
+        }
+    }
+    lowest
+}
+
+/// Fairing depth over `parameters` (flap rotations, rad) of the capsules `at(t)` gives,
+/// against the lower contour of `contour` (wing and stowed flap sections, station frame).
+/// Each capsule is sampled at `points_per_capsule` points (>= 2).
+pub fn fairing_depth(
+    contour: &[Vec<Point2<f64>>],
+    flap_chord_m: f64,
+    parameters: &[f64],
+    points_per_capsule: usize,
+    at: impl Fn(f64) -> Vec<PlanarCapsule>,
+) -> FairingDepth {
+    let mut deepest = FairingDepth {
+        depth_m: 0.0,
+        depth_percent_flap_chord: 0.0,
+        part: String::new(),
+        at_parameter: 0.0,
+        point_st: [0.0, 0.0],
+    };
+    let n = points_per_capsule.max(2);
+    for &t in parameters {
+        for capsule in at(t) {
+            for k in 0..n {
+                let p = capsule.from + (capsule.to - capsule.from) * (k as f64 / (n - 1) as f64);
+                let Some(surface) = lower_surface_y(contour, p.x) else {
+                    continue;
+                };
+                let depth = surface - (p.y - capsule.radius_m);
+                if depth > deepest.depth_m {
+                    deepest = FairingDepth {
+                        depth_m: depth,
+                        depth_percent_flap_chord: 0.0,
+                        part: capsule.part.to_string(),
+                        at_parameter: t,
+                        point_st: [p.x, p.y - capsule.radius_m],
+                    };
+                }
+            }
+        }
+    }
+    if flap_chord_m > 0.0 {
+        deepest.depth_percent_flap_chord = 100.0 * deepest.depth_m / flap_chord_m;
+    }
+    deepest
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn depth_below_a_flat_plate() {
+        // A 1 m plate from y = 0 to 0.1; a point capsule of radius 0.01 at y = -0.2.
+        let plate = vec![vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 0.0),
+            Point2::new(1.0, 0.1),
+            Point2::new(0.0, 0.1),
+        ]];
+        let depth = fairing_depth(&plate, 0.5, &[0.0, 1.0], 2, |t| {
+            vec![PlanarCapsule {
+                part: "pin",
+                from: Point2::new(0.5, -0.2 * t),
+                to: Point2::new(0.5, -0.2 * t),
+                radius_m: 0.01,
+            }]
+        });
+        assert!((depth.depth_m - 0.21).abs() < 1e-12);
+        assert!((depth.depth_percent_flap_chord - 42.0).abs() < 1e-9);
+        assert_eq!(depth.at_parameter, 1.0);
+        // Outside the contour's x range nothing is measured.
+        let outside = fairing_depth(&plate, 0.5, &[1.0], 2, |_| {
+            vec![PlanarCapsule {
+                part: "pin",
+                from: Point2::new(2.0, -1.0),
+                to: Point2::new(2.0, -1.0),
+                radius_m: 0.0,
+            }]
+        });
+        assert_eq!(outside.depth_m, 0.0);
+    }
+}

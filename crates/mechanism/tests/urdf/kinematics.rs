@@ -1,0 +1,179 @@
+//! Forward kinematics of the written URDF, walked in the test, against the trajectory.
+
+use super::*;
+
+/// Forward kinematics written in the test: walks the tree from the root, composing each
+/// joint's origin and motion (revolute: turn about the axis; prismatic: slide along it).
+fn forward_kinematics(
+    robot: &Robot,
+    values: &HashMap<&str, f64>,
+) -> HashMap<String, Isometry3<f64>> {
+    let children: Vec<&str> = robot.joints.iter().map(|j| j.child.link.as_str()).collect();
+    let root = robot
+        .links
+        .iter()
+        .find(|l| !children.contains(&l.name.as_str()))
+        .expect("a root link");
+    let mut poses = HashMap::from([(root.name.clone(), Isometry3::identity())]);
+    let mut changed = true;
+    while changed {
+        changed = false;
+        for joint in &robot.joints {
+            let Some(parent) = poses.get(&joint.parent.link).copied() else {
+                continue;
+            };
+            if poses.contains_key(&joint.child.link) {
+                continue;
+            }
+            let axis = Vector3::from(joint.axis.xyz.0);
+            let q = values.get(joint.name.as_str()).copied().unwrap_or(0.0);
+            let motion = match joint.joint_type {
+                JointType::Revolute | JointType::Continuous => Isometry3::rotation(axis * q),
+                JointType::Prismatic => Isometry3::translation(axis.x * q, axis.y * q, axis.z * q),
+                JointType::Fixed => Isometry3::identity(),
+                ref other => panic!("unexpected joint type {other:?}"),
+            };
+            poses.insert(
+                joint.child.link.clone(),
+                parent * pose_isometry(&joint.origin) * motion,
+            );
+            changed = true;
+        }
+    }
+    assert_eq!(poses.len(), robot.links.len(), "every link reached");
+    poses
+}
+
+/// Largest key-point error (m) of the URDF read back from XML, over all samples.
+fn key_point_error(robot: &Robot, trajectory: &Trajectory) -> f64 {
+    let mut worst = 0.0_f64;
+    for sample in &trajectory.samples {
+        let values: HashMap<&str, f64> = trajectory
+            .joint_names
+            .iter()
+            .map(String::as_str)
+            .zip(sample.joint_values.iter().copied())
+            .collect();
+        let poses = forward_kinematics(robot, &values);
+        for key in &trajectory.key_points {
+            let computed = poses[&key.link] * Point3::from(key.position_link_m);
+            let expected = Point3::from(sample.key_points_ac_m[&key.name]);
+            worst = worst.max((computed - expected).norm());
+        }
+    }
+    worst
+}
+
+#[test]
+fn forward_kinematics_of_the_file_reproduces_every_key_point() {
+    let (inner, outer) = (thesis_track(), scaled_track(0.8));
+    let stations = two_stations(&inner, &outer);
+    let model = build_robot("right_wing", &base_link(), &stations).unwrap();
+    let trajectory = trajectory(&stations, SAMPLES).unwrap();
+    assert_eq!(trajectory.samples.len(), SAMPLES);
+    assert_eq!(trajectory.key_points.len(), 2 * 8 + 3);
+    let robot = read_back(&model);
+    let error = key_point_error(&robot, &trajectory);
+    assert!(error <= KEY_POINT_TOLERANCE_M, "key point error {error} m");
+    // The check is sharp: a hinge value 1e-4 rad off moves the flap points by ~3e-5 m.
+    let mut wrong = trajectory.clone();
+    for sample in &mut wrong.samples {
+        sample.joint_values[0] += 1e-4;
+    }
+    assert!(key_point_error(&robot, &wrong) > 10.0 * KEY_POINT_TOLERANCE_M);
+    // In fact it is rounding: 1e-12 m holds with a wide margin.
+    assert!(error <= 1e-12, "key point error {error} m");
+}
+
+#[test]
+fn placements_at_gimbal_lock_survive_the_file() {
+    let track = thesis_track();
+    for pitch in [FRAC_PI_2, -FRAC_PI_2, FRAC_PI_2 - 1e-7] {
+        let rotation = UnitQuaternion::from_euler_angles(0.4, pitch, -2.1);
+        let station = StationMechanism3d {
+            name: "only".to_owned(),
+            aircraft_from_station: Isometry3::from_parts(
+                Translation3::new(1.0, -2.0, 0.5),
+                rotation,
+            ),
+            track: &track,
+            flap_name: "flap".to_owned(),
+            owns_flap: true,
+            flap_mesh: None,
+        };
+        let stations = [station];
+        let model = build_robot("gimbal", &base_link(), &stations).unwrap();
+        let error = key_point_error(&read_back(&model), &trajectory(&stations, 9).unwrap());
+        assert!(error <= 1e-12, "pitch {pitch}: key point error {error} m");
+    }
+}
+
+#[test]
+fn meshes_appear_where_they_are_given_at_stowed() {
+    let (inner, outer) = (thesis_track(), scaled_track(0.8));
+    let stations = two_stations(&inner, &outer);
+    let robot = read_back(&build_robot("right_wing", &base_link(), &stations).unwrap());
+    let trajectory = trajectory(&stations, 3).unwrap();
+    let stowed = &trajectory.samples[0];
+    let values = trajectory
+        .joint_names
+        .iter()
+        .map(String::as_str)
+        .zip(stowed.joint_values.iter().copied())
+        .collect();
+    let poses = forward_kinematics(&robot, &values);
+    let vertex_ac = Point3::new(3.05, 1.62, 0.37);
+    for link in &robot.links {
+        for visual in &link.visual {
+            let shown = poses[&link.name] * pose_isometry(&visual.origin) * vertex_ac;
+            assert_relative_eq!(shown, vertex_ac, epsilon = 1e-12);
+        }
+    }
+    assert_eq!(robot.links.iter().map(|l| l.visual.len()).sum::<usize>(), 3);
+}
+
+#[test]
+fn joint_values_start_stowed_and_stay_within_limits() {
+    let (inner, outer) = (thesis_track(), scaled_track(0.8));
+    let stations = two_stations(&inner, &outer);
+    let robot = build_robot("right_wing", &base_link(), &stations)
+        .unwrap()
+        .robot;
+    let trajectory = trajectory(&stations, SAMPLES).unwrap();
+    let synthesis = inner.synthesis();
+    let first = &trajectory.samples[0].joint_values;
+    assert!(
+        first[0].abs() <= 1e-15 && first[1].abs() <= 1e-15,
+        "stowed: {first:?}"
+    );
+    assert_relative_eq!(first[2], synthesis.stroke_start_m, max_relative = 1e-15);
+    let last = &trajectory.samples[SAMPLES - 1].joint_values;
+    assert_relative_eq!(last[0], 35f64.to_radians(), max_relative = 1e-12);
+    assert_relative_eq!(last[2], synthesis.stroke_end_m, max_relative = 1e-15);
+    let limit = |name: &str| {
+        let joint = robot.joints.iter().find(|j| j.name == name).unwrap();
+        (joint.limit.lower, joint.limit.upper)
+    };
+    let mut screw_range = (0.0_f64, 0.0_f64);
+    for sample in &trajectory.samples {
+        for (name, value) in trajectory.joint_names.iter().zip(&sample.joint_values) {
+            let (lower, upper) = limit(name);
+            assert!(
+                *value >= lower - 1e-12 && *value <= upper + 1e-12,
+                "{name} = {value} outside [{lower}, {upper}]"
+            );
+        }
+        screw_range.0 = screw_range.0.min(sample.joint_values[1]);
+        screw_range.1 = screw_range.1.max(sample.joint_values[1]);
+    }
+    // The analytic screw extreme (B0A tangent to A's circle) bounds the sampled one
+    // closely: 41 samples miss the peak by a second-order amount only.
+    let (lower, upper) = limit("inner_screw_pivot");
+    assert!(lower < 0.0 || upper > 0.0, "the screw swings");
+    let extreme = if upper > 0.0 {
+        (upper, screw_range.1)
+    } else {
+        (lower, screw_range.0)
+    };
+    assert_relative_eq!(extreme.0, extreme.1, max_relative = 1e-2);
+}

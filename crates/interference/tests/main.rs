@@ -9,6 +9,7 @@ use nalgebra::{Isometry3, Vector3};
 /// Rotation about the aircraft z axis through the origin by angle `t` (rad); points within
 /// `max_radius_m` of the axis move at most `max_radius_m` per radian.
 pub struct TurnAboutZ {
+    /// Largest distance of the part from the z axis (m).
     pub max_radius_m: f64,
 }
 

@@ -22,24 +22,14 @@ fn assert_rejected(scene: &str, expected_in_message: &[&str]) {
     );
     assert!(!stderr.contains("panicked"), "no panic:\n{stderr}");
     for expected in expected_in_message {
-        assert!(
-            stderr.contains(expected),
-            "message names `{expected}`:\n{stderr}"
-        );
+        assert!(stderr.contains(expected), "message names `{expected}`:\n{stderr}");
     }
-    assert!(
-        !dir.path().join("out").exists(),
-        "no output folder for a failed run"
-    );
+    assert!(!dir.path().join("out").exists(), "no output folder for a failed run");
     let leftovers: Vec<_> = std::fs::read_dir(dir.path())
         .unwrap()
         .map(|e| e.unwrap().file_name())
         .collect();
-    assert_eq!(
-        leftovers.len(),
-        1,
-        "only the scene file remains: {leftovers:?}"
-    );
+    assert_eq!(leftovers.len(), 1, "only the scene file remains: {leftovers:?}");
 }
 
 #[test]
@@ -153,10 +143,7 @@ fn station_on_a_missing_flap() {
 fn inner_slot_not_smaller_than_outer() {
     assert_rejected(
         &default_with("inner_slot_radius_m = 0.300", "inner_slot_radius_m = 0.400"),
-        &[
-            "station[0].mechanism.inner_slot_radius_m",
-            "outer_slot_radius_m",
-        ],
+        &["station[0].mechanism.inner_slot_radius_m", "outer_slot_radius_m"],
     );
 }
 
@@ -167,18 +154,10 @@ fn toml_syntax_error() {
 
 #[test]
 fn several_problems_reported_at_once() {
-    let scene = default_with("chord_m = 2.1", "chord_m = -1.0").replacen(
-        "sweep_deg = 3.0",
-        "sweep_deg = 95.0",
-        1,
-    );
+    let scene = default_with("chord_m = 2.1", "chord_m = -1.0").replacen("sweep_deg = 3.0", "sweep_deg = 95.0", 1);
     assert_rejected(
         &scene,
-        &[
-            "2 problem(s)",
-            "wing.sections[0].chord_m",
-            "wing.panels[0].sweep_deg",
-        ],
+        &["2 problem(s)", "wing.sections[0].chord_m", "wing.panels[0].sweep_deg"],
     );
 }
 
@@ -192,10 +171,7 @@ fn missing_scene_file() {
 
 #[test]
 fn gearbox_efficiency_above_one() {
-    let scene = format!(
-        "{}\n[sizing]\ngearbox_efficiency = 1.2\n",
-        default_scene_text()
-    );
+    let scene = format!("{}\n[sizing]\ngearbox_efficiency = 1.2\n", default_scene_text());
     assert_rejected(&scene, &["sizing.gearbox_efficiency", "[0, 1]"]);
 }
 
@@ -221,10 +197,7 @@ fn unknown_material() {
         "{}\n[sizing]\ntorque_tube_material = \"unobtainium\"\n",
         default_scene_text()
     );
-    assert_rejected(
-        &scene,
-        &["sizing.torque_tube_material", "unobtainium", "steel-4340"],
-    );
+    assert_rejected(&scene, &["sizing.torque_tube_material", "unobtainium", "steel-4340"]);
 }
 
 #[test]

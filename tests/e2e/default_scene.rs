@@ -42,21 +42,13 @@ fn no_arguments_designs_the_default_scene() {
         .iter()
         .map(|p| p["stl_file"].as_str().unwrap().to_string())
         .collect();
-    assert_eq!(
-        stl_files, reported,
-        "the STL files are exactly the reported parts"
-    );
+    assert_eq!(stl_files, reported, "the STL files are exactly the reported parts");
 
     for part in parts {
         let file = part["stl_file"].as_str().unwrap();
         let triangles = read_binary_stl(&std::fs::read(out.join(file)).unwrap());
-        assert_eq!(
-            triangles.len() as u64,
-            part["triangles"].as_u64().unwrap(),
-            "{file}"
-        );
-        let volume = check_closed_oriented(&triangles)
-            .unwrap_or_else(|e| panic!("{file} is not watertight: {e}"));
+        assert_eq!(triangles.len() as u64, part["triangles"].as_u64().unwrap(), "{file}");
+        let volume = check_closed_oriented(&triangles).unwrap_or_else(|e| panic!("{file} is not watertight: {e}"));
         assert!(volume > 0.0, "{file} has positive volume, got {volume}");
         let reported_volume = part["volume_m3"].as_f64().unwrap();
         // f32 storage in STL: relative agreement to ~1e-5 is all that survives.
@@ -71,10 +63,7 @@ fn no_arguments_designs_the_default_scene() {
     let again = run_flapwright(dir.path(), &[]);
     assert!(again.status.success());
     let second = std::fs::read_to_string(out.join("report.json")).unwrap();
-    assert_eq!(
-        report_without_timings(&report_text),
-        report_without_timings(&second)
-    );
+    assert_eq!(report_without_timings(&report_text), report_without_timings(&second));
 }
 
 #[test]

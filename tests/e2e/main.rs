@@ -2,6 +2,7 @@
 //! independent readers.
 
 mod bad_input;
+mod check;
 mod default_scene;
 mod stations;
 mod stl_reader;
@@ -16,8 +17,7 @@ pub fn repo_root() -> PathBuf {
 
 /// The default scene's text, as shipped in `data/scenes/`.
 pub fn default_scene_text() -> String {
-    std::fs::read_to_string(repo_root().join("data/scenes/small-aircraft.toml"))
-        .expect("default scene")
+    std::fs::read_to_string(repo_root().join("data/scenes/small-aircraft.toml")).expect("default scene")
 }
 
 /// Runs `flapwright` with `args` in `dir`.

@@ -13,10 +13,7 @@ use crate::{repo_root, run_flapwright};
 fn design(scene: &str) -> (tempfile::TempDir, Value) {
     let dir = tempfile::tempdir().unwrap();
     let scene_path = repo_root().join(scene);
-    let output = run_flapwright(
-        dir.path(),
-        &["design", scene_path.to_str().unwrap(), "--out", "out"],
-    );
+    let output = run_flapwright(dir.path(), &["design", scene_path.to_str().unwrap(), "--out", "out"]);
     assert!(
         output.status.success(),
         "stderr:\n{}",
@@ -65,10 +62,7 @@ fn default_scene_stations_have_frames_sections_and_sweeps() {
         }
         assert!(x.dot(&y).abs() < 1e-12 && y.dot(&z).abs() < 1e-12 && x.dot(&z).abs() < 1e-12);
         assert!((x.cross(&y) - z).norm() < 1e-12, "right-handed");
-        assert!(
-            x.z.abs() < 1e-12 && x.x < 0.0,
-            "x horizontal, towards the nose"
-        );
+        assert!(x.z.abs() < 1e-12 && x.x < 0.0, "x horizontal, towards the nose");
         assert!(z.y > 0.0, "z outboard");
         // The track turns the flap about the fixed hinge line: residual is rounding only.
         assert!(plane["out_of_plane_residual_m"].as_f64().unwrap() < 1e-12);
@@ -79,11 +73,7 @@ fn default_scene_stations_have_frames_sections_and_sweeps() {
             .map(|s| s["part_name"].as_str().unwrap())
             .collect();
         for part in ["wing", "flap", "rear-spar", "torque-tube"] {
-            assert!(
-                parts.contains(&part),
-                "{part} cut at {}: {parts:?}",
-                station["name"]
-            );
+            assert!(parts.contains(&part), "{part} cut at {}: {parts:?}", station["name"]);
         }
         let cases = station["mechanism"]["load_cases"].as_array().unwrap();
         assert_eq!(cases.len(), 2);
@@ -103,10 +93,7 @@ fn default_scene_stations_have_frames_sections_and_sweeps() {
                 assert!(samples[0][key].is_f64(), "sample field {key}");
             }
             for joint in ["A", "B0", "F", "G"] {
-                assert!(
-                    samples[0]["joint_reactions_n"][joint].is_f64(),
-                    "reaction at {joint}"
-                );
+                assert!(samples[0]["joint_reactions_n"][joint].is_f64(), "reaction at {joint}");
             }
             let last = samples.last().unwrap();
             assert!((last["deflection_deg"].as_f64().unwrap() - 35.0).abs() < 1e-9);
@@ -115,10 +102,7 @@ fn default_scene_stations_have_frames_sections_and_sweeps() {
     let mut nulls = Vec::new();
     null_paths(&report, String::new(), &mut nulls);
     nulls.retain(|p| !p.ends_with(".stopped"));
-    assert!(
-        nulls.is_empty(),
-        "no NaN escaped into the report: {nulls:?}"
-    );
+    assert!(nulls.is_empty(), "no NaN escaped into the report: {nulls:?}");
 }
 
 /// Table 3 of the thesis (`data/validation/thesis-table3.csv`) from the binary's report of
@@ -157,17 +141,12 @@ fn thesis_case_study_scene_reproduces_table_3() {
             })
             .collect()
     };
-    let table =
-        std::fs::read_to_string(repo_root().join("data/validation/thesis-table3.csv")).unwrap();
+    let table = std::fs::read_to_string(repo_root().join("data/validation/thesis-table3.csv")).unwrap();
     let mut checked = 0;
     for line in table.lines().filter(|l| !l.starts_with('#')).skip(1) {
         let fields: Vec<&str> = line.split(',').collect();
-        let (quantity, scenario, statistic, printed) = (
-            fields[0],
-            fields[1],
-            fields[2],
-            fields[3].parse::<f64>().unwrap(),
-        );
+        let (quantity, scenario, statistic, printed) =
+            (fields[0], fields[1], fields[2], fields[3].parse::<f64>().unwrap());
         if !["F_input", "G12G", "G12F", "T_R", "T_L"].contains(&quantity) {
             continue;
         }
@@ -209,8 +188,7 @@ fn thesis_case_study_scene_reproduces_table_3() {
 #[test]
 fn default_scene_cuts_come_close_to_thesis_figure_45() {
     let (_dir, report) = design("data/scenes/small-aircraft.toml");
-    let csv =
-        std::fs::read(repo_root().join("data/validation/thesis-fig45-boundaries.csv")).unwrap();
+    let csv = std::fs::read(repo_root().join("data/validation/thesis-fig45-boundaries.csv")).unwrap();
     let rows = parse_boundary_csv(csv.as_slice()).unwrap();
     // (thesis boundary, our part, bound on the max deviation in m: measured, rounded up to 5 mm)
     let checks = [
@@ -225,8 +203,7 @@ fn default_scene_cuts_come_close_to_thesis_figure_45() {
             .unwrap()
             .iter()
             .map(|s| {
-                let polygons: Vec<Vec<[f64; 2]>> =
-                    serde_json::from_value(s["polygons"].clone()).unwrap();
+                let polygons: Vec<Vec<[f64; 2]>> = serde_json::from_value(s["polygons"].clone()).unwrap();
                 (
                     s["part_name"].as_str().unwrap(),
                     polygons
@@ -245,10 +222,7 @@ fn default_scene_cuts_come_close_to_thesis_figure_45() {
                 deviation.max_m * 1e3,
                 deviation.mean_m * 1e3
             );
-            assert!(
-                deviation.max_m < bound_m,
-                "{plane} {boundary}: {deviation:?}"
-            );
+            assert!(deviation.max_m < bound_m, "{plane} {boundary}: {deviation:?}");
         }
         let tube = &sections["torque-tube"][0];
         let centre = tube
@@ -257,9 +231,6 @@ fn default_scene_cuts_come_close_to_thesis_figure_45() {
             / tube.len() as f64;
         let thesis = boundary_points_m(&rows, plane, "torque-tube-centre")[0];
         let offset = (Point2::new(centre.x, centre.y) - thesis).norm();
-        assert!(
-            offset < 0.002,
-            "{plane} torque tube centre {offset} m from Fig. 45"
-        );
+        assert!(offset < 0.002, "{plane} torque tube centre {offset} m from Fig. 45");
     }
 }

@@ -5,16 +5,9 @@ use std::collections::HashMap;
 
 /// Triangles of a binary STL file as `[[x, y, z]; 3]` (f32, as stored).
 pub fn read_binary_stl(bytes: &[u8]) -> Vec<[[f32; 3]; 3]> {
-    assert!(
-        bytes.len() >= 84,
-        "binary STL needs an 80-byte header and a count"
-    );
+    assert!(bytes.len() >= 84, "binary STL needs an 80-byte header and a count");
     let count = u32::from_le_bytes(bytes[80..84].try_into().unwrap()) as usize;
-    assert_eq!(
-        bytes.len(),
-        84 + 50 * count,
-        "file size matches the triangle count"
-    );
+    assert_eq!(bytes.len(), 84 + 50 * count, "file size matches the triangle count");
     (0..count)
         .map(|i| {
             let record = &bytes[84 + 50 * i..84 + 50 * (i + 1)];
@@ -56,7 +49,9 @@ pub fn check_closed_oriented(triangles: &[[[f32; 3]; 3]]) -> Result<f64, String>
     }
     for (&(a, b), &count) in &directed {
         if count != 1 {
-            return Err(format!("directed edge {a}->{b} used {count} times (inconsistent orientation or non-manifold)"));
+            return Err(format!(
+                "directed edge {a}->{b} used {count} times (inconsistent orientation or non-manifold)"
+            ));
         }
         if !directed.contains_key(&(b, a)) {
             return Err(format!("edge {a}->{b} has no twin (hole in the surface)"));

@@ -5,10 +5,12 @@
 //! - [`scene`]: the TOML scene format, parsed with serde and validated with paths.
 //! - [`pipeline`]: runs the stages (geometry, planes, mechanisms) and times them.
 //! - [`report`]: the `report.json` schema (documented in the README).
+//! - [`junit`]: JUnit XML of the interference check, for CI.
 //! - [`output`]: writes into a temporary folder and moves it into place only on success.
 //!
 //! Libraries below return typed errors; this crate alone decides wording and exit codes.
 
+pub mod junit;
 pub mod output;
 pub mod pipeline;
 pub mod report;

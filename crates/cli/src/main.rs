@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use anyhow::Context;
 use clap::{Parser, Subcommand};
 use flapwright::output::StagedDir;
-use flapwright::pipeline::{self, Inputs};
+use flapwright::pipeline::{self, Inputs, Mode};
 use flapwright::scene::{Scene, SceneError, DEFAULT_SCENE_TOML};
 
 /// Exit code for bad input (scene file, flags).
@@ -41,6 +41,18 @@ enum Command {
         #[arg(long, default_value = "flapwright-out")]
         out: PathBuf,
     },
+    /// Check clearances only: exit 0 when every clearance meets the scene's minimum, 1 when
+    /// any pair interferes or comes closer, 2 for bad input.
+    Check {
+        /// Scene file (TOML). Without it, the embedded default scene.
+        scene: Option<PathBuf>,
+        /// Output folder for report.json (replaced atomically on success).
+        #[arg(long, default_value = "flapwright-check")]
+        out: PathBuf,
+        /// Also write a JUnit XML file (one test case per station and part pair).
+        #[arg(long)]
+        junit: Option<PathBuf>,
+    },
 }
 
 /// A failure with the exit code it maps to.
@@ -73,9 +85,10 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: &Cli) -> Result<(), Failure> {
-    let (scene_path, out) = match &cli.command {
-        None => (None, PathBuf::from("flapwright-out")),
-        Some(Command::Design { scene, out }) => (scene.clone(), out.clone()),
+    let (scene_path, out, mode, junit) = match &cli.command {
+        None => (None, PathBuf::from("flapwright-out"), Mode::Design, None),
+        Some(Command::Design { scene, out }) => (scene.clone(), out.clone(), Mode::Design, None),
+        Some(Command::Check { scene, out, junit }) => (scene.clone(), out.clone(), Mode::Check, junit.clone()),
     };
     let (text, scene_dir) = read_scene_text(scene_path.as_deref())?;
     let scene = Scene::from_toml(&text, scene_dir.as_deref()).map_err(|e| Failure {
@@ -87,28 +100,57 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 .map_or("(embedded default)".into(), |p| p.display().to_string())
         )),
     })?;
-    let staged = StagedDir::create(&out)
-        .with_context(|| format!("preparing output folder {}", out.display()))?;
+    let staged = StagedDir::create(&out).with_context(|| format!("preparing output folder {}", out.display()))?;
     let inputs = Inputs {
         scene: &scene,
         scene_text: &text,
         scene_dir: scene_dir.as_deref(),
     };
-    let outcome = pipeline::design(&inputs, &staged)?;
+    if mode == Mode::Check && scene.wing.is_none() {
+        return Err(Failure {
+            code: EXIT_BAD_INPUT,
+            error: anyhow::anyhow!("`check` needs a scene with a [wing]: there is no 3D geometry to check"),
+        });
+    }
+    let outcome = pipeline::design(&inputs, mode, &staged)?;
     let written = staged
         .commit()
         .with_context(|| format!("moving results into {}", out.display()))?;
+    if let (Some(path), Some(report)) = (&junit, &outcome.report.interference) {
+        let xml = flapwright::junit::interference_junit(&scene.name, report)?;
+        std::fs::write(path, xml).with_context(|| format!("writing {}", path.display()))?;
+    }
     if cli.json {
         println!("{}", serde_json::to_string(&outcome.summary)?);
     } else if !cli.quiet {
+        let verdict = match outcome.summary.interference_passes {
+            Some(true) => ", clearances met",
+            Some(false) => ", INTERFERENCE",
+            None => "",
+        };
         println!(
-            "designed \"{}\": {} part(s), {} station(s), {} warning(s) -> {}",
+            "{} \"{}\": {} part(s), {} station(s), {} warning(s){verdict} -> {}",
+            if mode == Mode::Check { "checked" } else { "designed" },
             scene.name,
             outcome.summary.parts,
             outcome.summary.stations,
             outcome.summary.warnings,
             written.display()
         );
+    }
+    if mode == Mode::Check && outcome.summary.interference_passes == Some(false) {
+        if !cli.quiet {
+            for warning in outcome.report.warnings.iter().filter(|w| w.starts_with("interference")) {
+                eprintln!("{warning}");
+            }
+        }
+        return Err(Failure {
+            code: EXIT_FAILED,
+            error: anyhow::anyhow!(
+                "interference check failed: see {}",
+                written.join("report.json").display()
+            ),
+        });
     }
     Ok(())
 }
@@ -119,8 +161,7 @@ fn read_scene_text(path: Option<&Path>) -> Result<(String, Option<PathBuf>), Fai
         Some(path) => {
             let text = std::fs::read_to_string(path).map_err(|e| Failure {
                 code: EXIT_BAD_INPUT,
-                error: anyhow::Error::new(e)
-                    .context(format!("reading scene file {}", path.display())),
+                error: anyhow::Error::new(e).context(format!("reading scene file {}", path.display())),
             })?;
             let dir = path.parent().map(Path::to_path_buf);
             Ok((text, dir))

@@ -45,8 +45,8 @@ impl StagedDir {
     /// delete unrelated files.
     pub fn commit(self) -> io::Result<PathBuf> {
         if self.target.exists() {
-            let is_previous_run = self.target.join("report.json").is_file()
-                || fs::read_dir(&self.target)?.next().is_none();
+            let is_previous_run =
+                self.target.join("report.json").is_file() || fs::read_dir(&self.target)?.next().is_none();
             if !self.target.is_dir() || !is_previous_run {
                 return Err(io::Error::new(
                     io::ErrorKind::AlreadyExists,

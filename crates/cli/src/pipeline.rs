@@ -12,9 +12,10 @@ use crate::report::{PartReport, Report, SceneInfo, StageTiming, StationReport, S
 use crate::scene::Scene;
 
 mod geometry;
+mod interference;
 pub mod mechanisms;
 mod sizing;
-mod stations;
+pub mod stations;
 
 /// What a design run reads.
 #[derive(Debug, Clone, Copy)]
@@ -38,6 +39,8 @@ pub struct Summary {
     pub stations: usize,
     /// Warnings raised.
     pub warnings: usize,
+    /// Every clearance met (absent when no interference check ran).
+    pub interference_passes: Option<bool>,
 }
 
 /// What a run produced.
@@ -68,45 +71,70 @@ impl Stages {
     }
 }
 
+/// Which job a run does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mode {
+    /// Everything the scene's outputs ask for.
+    Design,
+    /// Only what the interference check needs (no STL, sweeps or sizing).
+    Check,
+}
+
 /// Designs the scene and writes `report.json` and the requested files into `out`.
-pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
+pub fn design(inputs: &Inputs<'_>, mode: Mode, out: &StagedDir) -> Result<Outcome> {
     let scene = inputs.scene;
+    let outputs = &scene.outputs;
+    let full = mode == Mode::Design;
     let mut stages = Stages {
         names: Vec::new(),
         timings: Vec::new(),
     };
     let mut parts: Vec<PartReport> = Vec::new();
     let mut warnings: Vec<String> = Vec::new();
+    let mut interference_report = None;
 
     let mechanisms = stages.run("synthesis", || mechanisms::synthesise_all(scene))?;
     let mut planes = vec![None; scene.station.len()];
+    let mut fairings = vec![None; scene.station.len()];
     let mut station_origins_ac = Vec::new();
     if let Some(wing) = &scene.wing {
-        let model = stages.run("geometry", || {
-            geometry::build_model(scene, wing, inputs.scene_dir)
-        })?;
-        let meshed = stages.run("meshing", || {
-            geometry::mesh_parts(&model, &scene.resolution)
-        })?;
-        parts = stages.run("stl", || {
-            geometry::write_parts(&meshed, scene.outputs.stl, out)
-        })?;
-        let placed = stages.run("planes", || {
-            stations::place_all(scene, &model, &meshed, &mechanisms)
-        })?;
+        let model = stages.run("geometry", || geometry::build_model(scene, wing, inputs.scene_dir))?;
+        let meshed = stages.run("meshing", || geometry::mesh_parts(&model, &scene.resolution))?;
+        let write_stl = full && outputs.stl;
+        let stage = if write_stl { "stl" } else { "part-statistics" };
+        parts = stages.run(stage, || geometry::write_parts(&meshed, write_stl, out))?;
+        let placed = stages.run("planes", || stations::place_all(scene, &model, &meshed, &mechanisms))?;
         station_origins_ac = placed.iter().map(|p| p.station.frame.origin_ac()).collect();
         planes = placed
             .iter()
-            .map(|p| {
-                Some(flapwright_planes::StationReport::new(
-                    &p.station,
-                    &p.sections,
-                ))
-            })
+            .map(|p| Some(flapwright_planes::StationReport::new(&p.station, &p.sections)))
             .collect();
+        if outputs.interference || !full {
+            let checked = stages.run("interference", || {
+                interference::check(scene, &model, &meshed, &mechanisms, &placed)
+            })?;
+            for pair in checked.pairs.iter().filter(|p| !p.passes) {
+                warnings.push(format!(
+                    "interference: {} and {} come within {:.4} m (required {:.4} m) at flap rotation {:.2} deg",
+                    pair.clearance.part_a,
+                    pair.clearance.part_b,
+                    pair.clearance.min_clearance_m,
+                    checked.required_clearance_m,
+                    pair.clearance.at_parameter.to_degrees()
+                ));
+            }
+            interference_report = Some(checked);
+            let flap_names: Vec<String> = scene.flap.iter().map(|f| f.name.clone()).collect();
+            fairings = stages.run("fairing", || {
+                Ok(interference::fairing_depths(&mechanisms, &placed, &flap_names)
+                    .into_iter()
+                    .map(Some)
+                    .collect())
+            })?;
+        }
     }
     let mut mechanism_reports = vec![None; scene.station.len()];
-    if scene.outputs.kinematics {
+    if full && outputs.kinematics {
         let cases = mechanisms::load_cases(scene);
         let samples = scene.resolution.deployment_samples;
         mechanism_reports = stages.run("kinematics", || {
@@ -117,7 +145,7 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
         })?;
     }
     let mut sizing_report = None;
-    if scene.outputs.sizing && scene.outputs.kinematics {
+    if full && outputs.sizing && outputs.kinematics {
         let reports: Vec<_> = mechanism_reports.iter().flatten().cloned().collect();
         let motor_ac = scene
             .structure
@@ -136,11 +164,13 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
         .iter()
         .zip(planes)
         .zip(mechanism_reports)
-        .map(|((station, plane), mechanism)| StationReport {
+        .zip(fairings)
+        .map(|(((station, plane), mechanism), fairing)| StationReport {
             name: station.name.clone(),
             flap: station.flap.clone(),
             plane,
             mechanism,
+            fairing,
         })
         .collect();
 
@@ -155,6 +185,7 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
         stages: stages.names,
         parts,
         stations: station_reports,
+        interference: interference_report,
         sizing: sizing_report,
         warnings,
         timings: stages.timings,
@@ -166,13 +197,11 @@ pub fn design(inputs: &Inputs<'_>, out: &StagedDir) -> Result<Outcome> {
         parts: report.parts.len(),
         stations: report.stations.len(),
         warnings: report.warnings.len(),
+        interference_passes: report.interference.as_ref().map(|i| i.passes),
     };
     Ok(Outcome { report, summary })
 }
 
 fn hex_sha256(bytes: &[u8]) -> String {
-    Sha256::digest(bytes)
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect()
+    Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
 }

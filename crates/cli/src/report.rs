@@ -23,6 +23,8 @@ pub struct Report {
     pub parts: Vec<PartReport>,
     /// Per support station.
     pub stations: Vec<StationReport>,
+    /// Clearance of every moving/fixed part pair over the deployment (when checked).
+    pub interference: Option<flapwright_interference::InterferenceReport>,
     /// Rods, screw jacks, torque tubes, drive and masses (when sizing ran).
     pub sizing: Option<flapwright_sizing::SizingReport>,
     /// Warnings (near-toggle, self-locking lost, ...), each naming where.
@@ -74,6 +76,8 @@ pub struct StationReport {
     pub plane: Option<flapwright_planes::StationReport>,
     /// Mechanism dimensions, synthesis and one sweep per load case.
     pub mechanism: Option<crate::pipeline::mechanisms::MechanismReport>,
+    /// Fairing depth: how far the mechanism reaches below the lower wing/flap contour.
+    pub fairing: Option<flapwright_interference::FairingDepth>,
 }
 
 /// Wall time of one stage.

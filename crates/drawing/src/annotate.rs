@@ -87,9 +87,7 @@ pub(crate) fn joints_layer(
         }
     }
     let mut markers = Group::new().set("id", "joints").set("class", "joints");
-    let mut labels = Group::new()
-        .set("id", "joint-labels")
-        .set("class", "labels");
+    let mut labels = Group::new().set("id", "joint-labels").set("class", "labels");
     for mark in &marks {
         if mark.fixed {
             markers = markers.add(ground_symbol(mark.x, mark.y));
@@ -107,8 +105,7 @@ pub(crate) fn joints_layer(
         let half_width = 0.5 * text_width(&mark.label, JOINT_FONT_PX);
         let half_height = 0.5 * JOINT_FONT_PX;
         let (cx, cy) = placer.place_near(mark.x, mark.y, half_width, half_height, 3.0);
-        let distance =
-            ((cx - mark.x).powi(2) + (cy - mark.y).powi(2)).sqrt() - half_width.max(half_height);
+        let distance = ((cx - mark.x).powi(2) + (cy - mark.y).powi(2)).sqrt() - half_width.max(half_height);
         let mut label = Group::new().set("class", format!("joint-label {}", mark.class));
         if distance > LEADER_MIN_PX {
             label = label.add(
@@ -123,15 +120,7 @@ pub(crate) fn joints_layer(
         }
         let baseline = cy + 0.36 * JOINT_FONT_PX;
         label = label.add(
-            text(
-                &mark.label,
-                cx,
-                baseline,
-                JOINT_FONT_PX,
-                Anchor::Middle,
-                mark.colour,
-            )
-            .set("font-weight", "bold"),
+            text(&mark.label, cx, baseline, JOINT_FONT_PX, Anchor::Middle, mark.colour).set("font-weight", "bold"),
         );
         labels = labels.add(label);
     }
@@ -143,10 +132,7 @@ fn ground_symbol(x: f64, y: f64) -> Group {
     let base = y + 12.0;
     let mut group = Group::new().set("class", "ground").add(
         Polygon::new()
-            .set(
-                "points",
-                points_attribute(&[(x, y), (x - 7.0, base), (x + 7.0, base)]),
-            )
+            .set("points", points_attribute(&[(x, y), (x - 7.0, base), (x + 7.0, base)]))
             .set("fill", "#f0f0f0")
             .set("stroke", INK)
             .set("stroke-width", "1.2"),
@@ -194,14 +180,8 @@ pub(crate) fn dimension_text(dimension: &Dimension) -> String {
 
 /// Dimension lines: offset to the side (and distance) where the text collides least,
 /// with extension lines, arrowheads at both ends and the value in mm along the line.
-pub(crate) fn dimensions_layer(
-    dimensions: &[Dimension],
-    map: &ScreenMap,
-    placer: &mut LabelPlacer,
-) -> Group {
-    let mut group = Group::new()
-        .set("id", "dimensions")
-        .set("class", "dimensions");
+pub(crate) fn dimensions_layer(dimensions: &[Dimension], map: &ScreenMap, placer: &mut LabelPlacer) -> Group {
+    let mut group = Group::new().set("id", "dimensions").set("class", "dimensions");
     for dimension in dimensions {
         let (x1, y1) = map.page_point(&dimension.from);
         let (x2, y2) = map.page_point(&dimension.to);
@@ -235,13 +215,9 @@ pub(crate) fn dimensions_layer(
         }
         let text_centre = |(offset, along): (f64, f64)| {
             let reach = offset + offset.signum() * (half_h + 2.0);
-            (
-                x1 + along * (x2 - x1) + nx * reach,
-                y1 + along * (y2 - y1) + ny * reach,
-            )
+            (x1 + along * (x2 - x1) + nx * reach, y1 + along * (y2 - y1) + ny * reach)
         };
-        let (chosen, (tx, ty)) =
-            placer.place_best(candidates.iter().map(|c| text_centre(*c)), box_hw, box_hh);
+        let (chosen, (tx, ty)) = placer.place_best(candidates.iter().map(|c| text_centre(*c)), box_hw, box_hh);
         let (offset, _) = candidates[chosen];
         let side = offset.signum();
         let (ax, ay) = (x1 + nx * offset, y1 + ny * offset);
@@ -280,10 +256,7 @@ pub(crate) fn dimensions_layer(
                 Anchor::Middle,
                 DIMENSION_COLOUR,
             )
-            .set(
-                "transform",
-                format!("rotate({} {} {})", num(angle), num(tx), num(ty)),
-            ),
+            .set("transform", format!("rotate({} {} {})", num(angle), num(tx), num(ty))),
         );
         group = group.add(item);
     }
@@ -304,17 +277,8 @@ pub(crate) fn slot_labels(slots: &[SlotArc], map: &ScreenMap, placer: &mut Label
         if distance > LEADER_MIN_PX {
             label = label.add(line(x, y, cx, cy, "#4d4d4d", 0.7));
         }
-        label = label.add(
-            text(
-                &slot.name,
-                cx,
-                cy + 0.36 * size,
-                size,
-                Anchor::Middle,
-                "#4d4d4d",
-            )
-            .set("font-style", "italic"),
-        );
+        label = label
+            .add(text(&slot.name, cx, cy + 0.36 * size, size, Anchor::Middle, "#4d4d4d").set("font-style", "italic"));
         group = group.add(label);
     }
     group

@@ -71,10 +71,7 @@ pub(crate) fn chart(index: usize, plot: &Plot, left: f64, top: f64) -> Group {
     let mut group = Group::new()
         .set("id", format!("plot-{index}-{}", css_name(&plot.title)))
         .set("class", "plot")
-        .add(
-            text(&plot.title, area_left, top + 20.0, 15.0, Anchor::Start, INK)
-                .set("font-weight", "bold"),
-        );
+        .add(text(&plot.title, area_left, top + 20.0, 15.0, Anchor::Start, INK).set("font-weight", "bold"));
     // Grid and ticks.
     for &value in &x_ticks.values {
         let (x, _) = to_page(value, y_ticks.axis_min);
@@ -131,19 +128,12 @@ pub(crate) fn chart(index: usize, plot: &Plot, left: f64, top: f64) -> Group {
             .set("class", "x-label"),
         )
         .add(
-            text(
-                &plot.y_label,
-                y_label_x,
-                y_label_y,
-                AXIS_FONT_PX,
-                Anchor::Middle,
-                INK,
-            )
-            .set("class", "y-label")
-            .set(
-                "transform",
-                format!("rotate(-90 {} {})", num(y_label_x), num(y_label_y)),
-            ),
+            text(&plot.y_label, y_label_x, y_label_y, AXIS_FONT_PX, Anchor::Middle, INK)
+                .set("class", "y-label")
+                .set(
+                    "transform",
+                    format!("rotate(-90 {} {})", num(y_label_x), num(y_label_y)),
+                ),
         );
     // Series.
     let mut page_points: Vec<(f64, f64)> = Vec::new();
@@ -197,20 +187,14 @@ fn legend(plot: &Plot, page_points: &[(f64, f64)], area: (f64, f64, f64, f64)) -
     let corners = [
         (area_right - inset - box_width, area_top + inset),
         (area_left + inset, area_top + inset),
-        (
-            area_right - inset - box_width,
-            area_bottom - inset - box_height,
-        ),
+        (area_right - inset - box_width, area_bottom - inset - box_height),
         (area_left + inset, area_bottom - inset - box_height),
     ];
     let crowding = |(x, y): (f64, f64)| {
         page_points
             .iter()
             .filter(|(px, py)| {
-                *px >= x - 4.0
-                    && *px <= x + box_width + 4.0
-                    && *py >= y - 4.0
-                    && *py <= y + box_height + 4.0
+                *px >= x - 4.0 && *px <= x + box_width + 4.0 && *py >= y - 4.0 && *py <= y + box_height + 4.0
             })
             .count()
     };
@@ -237,14 +221,9 @@ fn legend(plot: &Plot, page_points: &[(f64, f64)], area: (f64, f64, f64, f64)) -
         if let Some(dash) = dash {
             sample = sample.set("stroke-dasharray", dash);
         }
-        group = group.add(sample).add(text(
-            &series.name,
-            x + 44.0,
-            row_y,
-            LEGEND_FONT_PX,
-            Anchor::Start,
-            INK,
-        ));
+        group = group
+            .add(sample)
+            .add(text(&series.name, x + 44.0, row_y, LEGEND_FONT_PX, Anchor::Start, INK));
     }
     group
 }

@@ -77,11 +77,7 @@ impl LabelPlacer {
     /// Marks the page polyline `points` (closed when `closed`) as a light obstacle.
     pub fn block_line(&mut self, points: &[(f64, f64)], closed: bool) {
         let count = points.len();
-        let segments = if closed {
-            count
-        } else {
-            count.saturating_sub(1)
-        };
+        let segments = if closed { count } else { count.saturating_sub(1) };
         for i in 0..segments {
             let (x1, y1) = points[i];
             let (x2, y2) = points[(i + 1) % count];
@@ -98,24 +94,13 @@ impl LabelPlacer {
     /// Overlap of `candidate` with everything taken, plus a heavy charge for leaving
     /// the frame.
     pub fn cost(&self, candidate: &PageBox) -> f64 {
-        let overlap: f64 = self
-            .taken
-            .iter()
-            .map(|(b, weight)| weight * b.overlap(candidate))
-            .sum();
+        let overlap: f64 = self.taken.iter().map(|(b, weight)| weight * b.overlap(candidate)).sum();
         overlap + 100.0 * candidate.outside(&self.frame)
     }
 
     /// Places a box of half-size (`half_width`, `half_height`) near (`x`, `y`): tries
     /// the 8 compass directions at growing distances and returns the centre chosen.
-    pub fn place_near(
-        &mut self,
-        x: f64,
-        y: f64,
-        half_width: f64,
-        half_height: f64,
-        gap: f64,
-    ) -> (f64, f64) {
+    pub fn place_near(&mut self, x: f64, y: f64, half_width: f64, half_height: f64, gap: f64) -> (f64, f64) {
         // Preferred order: upper right, right, upper left, left, up, down, lower right, lower left.
         const DIRECTIONS: [(f64, f64); 8] = [
             (1.0, -1.0),
@@ -130,10 +115,7 @@ impl LabelPlacer {
         let candidates = [1.0, 2.0, 3.5, 5.0, 7.0, 10.0].iter().flat_map(|ring| {
             DIRECTIONS.iter().map(move |(dx, dy)| {
                 let distance = gap * ring;
-                (
-                    x + dx * (half_width + distance),
-                    y + dy * (half_height + distance),
-                )
+                (x + dx * (half_width + distance), y + dy * (half_height + distance))
             })
         });
         self.place_best(candidates, half_width, half_height).1
@@ -161,10 +143,8 @@ impl LabelPlacer {
             }
         }
         let (index, (cx, cy), _) = best.unwrap_or((0, (self.frame.left, self.frame.top), 0.0));
-        self.taken.push((
-            PageBox::centred(cx, cy, half_width, half_height),
-            SOLID_WEIGHT,
-        ));
+        self.taken
+            .push((PageBox::centred(cx, cy, half_width, half_height), SOLID_WEIGHT));
         (index, (cx, cy))
     }
 }

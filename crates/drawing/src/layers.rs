@@ -147,14 +147,8 @@ pub(crate) fn setting_layer(index: usize, setting: &MechanismSnapshot, map: &Scr
     let style = setting_style(index);
     let mut group = Group::new()
         .set("id", setting_id(index, setting))
-        .set(
-            "class",
-            format!("setting setting-{}", css_name(&setting.label)),
-        )
-        .add(title(&format!(
-            "{} ({:.1} deg)",
-            setting.label, setting.deflection_deg
-        )));
+        .set("class", format!("setting setting-{}", css_name(&setting.label)))
+        .add(title(&format!("{} ({:.1} deg)", setting.label, setting.deflection_deg)));
     let dashed = |element: Polyline| match style.dash {
         Some(dash) => element.set("stroke-dasharray", dash),
         None => element,

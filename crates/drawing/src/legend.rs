@@ -68,10 +68,7 @@ fn part_entries(drawing: &StationDrawing) -> Vec<(&'static str, Swatch)> {
             entries.push((name, Swatch::Part(kind)));
         }
     }
-    let has_fixed = drawing
-        .settings
-        .iter()
-        .any(|s| s.joints.iter().any(|j| j.fixed));
+    let has_fixed = drawing.settings.iter().any(|s| s.joints.iter().any(|j| j.fixed));
     if has_fixed {
         entries.push(("fixed pivot", Swatch::Ground));
     }
@@ -92,13 +89,12 @@ enum Swatch {
 /// columns starting at (x, y), `column_px` apart.
 pub(crate) fn legend(drawing: &StationDrawing, x: f64, y: f64, column_px: f64) -> Group {
     let mut group = Group::new().set("id", "legend").set("class", "legend");
-    group = group
-        .add(text("Flap settings", x, y, FONT_PX, Anchor::Start, INK).set("font-weight", "bold"));
+    group = group.add(text("Flap settings", x, y, FONT_PX, Anchor::Start, INK).set("font-weight", "bold"));
     for (index, setting) in drawing.settings.iter().enumerate() {
         let style = setting_style(index);
         let row_y = y + ROW_PX * (index as f64 + 1.0);
-        let mut sample = stroke(x, row_y - 4.0, x + 44.0, row_y - 4.0, style.colour, 3.2)
-            .set("stroke-linecap", "round");
+        let mut sample =
+            stroke(x, row_y - 4.0, x + 44.0, row_y - 4.0, style.colour, 3.2).set("stroke-linecap", "round");
         if let Some(dash) = style.dash {
             sample = sample.set("stroke-dasharray", dash);
         }
@@ -120,14 +116,7 @@ pub(crate) fn legend(drawing: &StationDrawing, x: f64, y: f64, column_px: f64) -
         );
         group = group
             .add(sample.set("class", format!("legend-setting setting-{index}")))
-            .add(text(
-                &words,
-                x + 54.0,
-                row_y,
-                FONT_PX,
-                Anchor::Start,
-                style.colour,
-            ));
+            .add(text(&words, x + 54.0, row_y, FONT_PX, Anchor::Start, style.colour));
     }
     let px = x + column_px;
     group = group.add(text("Parts", px, y, FONT_PX, Anchor::Start, INK).set("font-weight", "bold"));
@@ -139,19 +128,11 @@ pub(crate) fn legend(drawing: &StationDrawing, x: f64, y: f64, column_px: f64) -
                     .set("fill-opacity", "0.3")
                     .set("stroke-dasharray", "4 3"),
             ),
-            Swatch::Fairing => Group::new().add(
-                stroke(px, row_y, px + 44.0, row_y, FAIRING_COLOUR, 2.2)
-                    .set("stroke-dasharray", FAIRING_DASH),
-            ),
+            Swatch::Fairing => Group::new()
+                .add(stroke(px, row_y, px + 44.0, row_y, FAIRING_COLOUR, 2.2).set("stroke-dasharray", FAIRING_DASH)),
             Swatch::Slot => Group::new()
-                .add(
-                    stroke(px + 6.0, row_y, px + 38.0, row_y, "#4d4d4d", 12.0)
-                        .set("stroke-linecap", "round"),
-                )
-                .add(
-                    stroke(px + 6.0, row_y, px + 38.0, row_y, "#f7f7f7", 9.0)
-                        .set("stroke-linecap", "round"),
-                ),
+                .add(stroke(px + 6.0, row_y, px + 38.0, row_y, "#4d4d4d", 12.0).set("stroke-linecap", "round"))
+                .add(stroke(px + 6.0, row_y, px + 38.0, row_y, "#f7f7f7", 9.0).set("stroke-linecap", "round")),
             Swatch::Part(kind) => {
                 let (fill, outline) = match kind {
                     PartStyle::WingSkin => ("#d4d4d4", INK),
@@ -160,12 +141,9 @@ pub(crate) fn legend(drawing: &StationDrawing, x: f64, y: f64, column_px: f64) -
                     PartStyle::TorqueTube => ("#111111", "#111111"),
                     PartStyle::Other => ("none", "#777777"),
                 };
-                Group::new().set("class", part_class(kind)).add(swatch(
-                    px + 4.0,
-                    row_y,
-                    fill,
-                    outline,
-                ))
+                Group::new()
+                    .set("class", part_class(kind))
+                    .add(swatch(px + 4.0, row_y, fill, outline))
             }
             Swatch::Ground => Group::new()
                 .add(
@@ -186,23 +164,11 @@ pub(crate) fn legend(drawing: &StationDrawing, x: f64, y: f64, column_px: f64) -
                         .set("stroke", INK)
                         .set("stroke-width", "1.2"),
                 )
-                .add(stroke(
-                    px + 12.0,
-                    row_y + 5.0,
-                    px + 32.0,
-                    row_y + 5.0,
-                    INK,
-                    1.4,
-                )),
+                .add(stroke(px + 12.0, row_y + 5.0, px + 32.0, row_y + 5.0, INK, 1.4)),
         };
-        group = group.add(sample).add(text(
-            label,
-            px + 54.0,
-            row_y + 4.0,
-            FONT_PX,
-            Anchor::Start,
-            INK,
-        ));
+        group = group
+            .add(sample)
+            .add(text(label, px + 54.0, row_y + 4.0, FONT_PX, Anchor::Start, INK));
     }
     group
 }
@@ -219,19 +185,16 @@ pub(crate) fn scale_bar_length_mm(max_mm: f64) -> f64 {
 
 /// Note block at (x, y): view direction, frame, units, axis triad and scale bar.
 pub(crate) fn note_block(x: f64, y: f64, px_per_m: f64) -> Group {
-    let mut group = Group::new()
-        .set("id", "title-block")
-        .set("class", "title-block")
-        .add(
-            Rectangle::new()
-                .set("x", num(x))
-                .set("y", num(y))
-                .set("width", num(NOTE_WIDTH_PX))
-                .set("height", num(NOTE_HEIGHT_PX))
-                .set("fill", "white")
-                .set("stroke", INK)
-                .set("stroke-width", "1.2"),
-        );
+    let mut group = Group::new().set("id", "title-block").set("class", "title-block").add(
+        Rectangle::new()
+            .set("x", num(x))
+            .set("y", num(y))
+            .set("width", num(NOTE_WIDTH_PX))
+            .set("height", num(NOTE_HEIGHT_PX))
+            .set("fill", "white")
+            .set("stroke", INK)
+            .set("stroke-width", "1.2"),
+    );
     let lines = [
         "Station frame, seen from outboard (+z towards you):",
         "nose (+x) to the right, y up, origin A0 = hinge point.",
@@ -284,14 +247,7 @@ pub(crate) fn note_block(x: f64, y: f64, px_per_m: f64) -> Group {
                 )
                 .set("fill", INK),
         )
-        .add(text(
-            "x (nose)",
-            ox + 12.0,
-            oy + 15.0,
-            11.0,
-            Anchor::Start,
-            INK,
-        ))
+        .add(text("x (nose)", ox + 12.0, oy + 15.0, 11.0, Anchor::Start, INK))
         .add(text("y", ox + 7.0, oy - 36.0, 11.0, Anchor::Start, INK));
     // Scale bar at the lower left: four alternating segments.
     let px_per_mm = px_per_m / 1000.0;
@@ -317,14 +273,7 @@ pub(crate) fn note_block(x: f64, y: f64, px_per_m: f64) -> Group {
     group
         .set("data-scale-bar-mm", num(length_mm))
         .add(text("0", sx, sy + 22.0, 11.0, Anchor::Middle, INK))
-        .add(text(
-            &half,
-            sx + 0.5 * length_px,
-            sy + 22.0,
-            11.0,
-            Anchor::Middle,
-            INK,
-        ))
+        .add(text(&half, sx + 0.5 * length_px, sy + 22.0, 11.0, Anchor::Middle, INK))
         .add(text(
             &format!("{full} mm"),
             sx + length_px,

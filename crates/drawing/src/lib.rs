@@ -64,9 +64,7 @@ mod validate;
 mod view;
 
 pub use error::{Error, Result};
-pub use model::{
-    Dimension, Joint, Link, MechanismSnapshot, PartStyle, SectionOutline, SlotArc, StationDrawing,
-};
+pub use model::{Dimension, Joint, Link, MechanismSnapshot, PartStyle, SectionOutline, SlotArc, StationDrawing};
 pub use plot::{plots_page_size_px, render_plots_svg, Plot, Series, PLOT_COLUMNS};
 pub use station::{render_station_svg, STATION_PAGE_WIDTH_PX};
 pub use ticks::{format_tick, nice_step, nice_ticks, padded_ticks, Ticks};

@@ -74,9 +74,7 @@ fn validate_plot(plot: &Plot) -> Result<()> {
 /// Page size (width, height) in px of a grid of `count` charts.
 pub fn plots_page_size_px(count: usize) -> (f64, f64) {
     let rows = count.div_ceil(PLOT_COLUMNS).max(1) as f64;
-    let width = 2.0 * MARGIN_PX
-        + PLOT_COLUMNS as f64 * CHART_WIDTH_PX
-        + (PLOT_COLUMNS as f64 - 1.0) * GAP_PX;
+    let width = 2.0 * MARGIN_PX + PLOT_COLUMNS as f64 * CHART_WIDTH_PX + (PLOT_COLUMNS as f64 - 1.0) * GAP_PX;
     let height = HEADER_PX + rows * CHART_HEIGHT_PX + (rows - 1.0) * GAP_PX + MARGIN_PX;
     (width, height)
 }
@@ -163,15 +161,9 @@ mod tests {
         let plot = plot_with(vec![(0.0, 0.0), (1.0, 1.0), (2.0, f64::NAN)]);
         match render_plots_svg("t", &[plot]) {
             Err(Error::NonFiniteSample {
-                plot,
-                series,
-                index,
-                ..
+                plot, series, index, ..
             }) => {
-                assert_eq!(
-                    (plot.as_str(), series.as_str(), index),
-                    ("deflection", "flap", 2)
-                );
+                assert_eq!((plot.as_str(), series.as_str(), index), ("deflection", "flap", 2));
             }
             other => panic!("expected NonFiniteSample, got {other:?}"),
         }
@@ -186,10 +178,7 @@ mod tests {
             Err(Error::EmptySeries { .. })
         ));
         plot.series.clear();
-        assert!(matches!(
-            render_plots_svg("t", &[plot]),
-            Err(Error::NoSeries { .. })
-        ));
+        assert!(matches!(render_plots_svg("t", &[plot]), Err(Error::NoSeries { .. })));
     }
 
     #[test]

@@ -126,13 +126,7 @@ pub fn render_station_svg(drawing: &StationDrawing) -> Result<String> {
     let area_left = MARGIN_PX + LABEL_ROOM_PX;
     let area_top = HEADER_PX + LABEL_ROOM_PX;
     let area_width = STATION_PAGE_WIDTH_PX - 2.0 * area_left;
-    let map = ScreenMap::fit(
-        bounds,
-        area_left,
-        area_top,
-        area_width,
-        MAX_DRAWING_HEIGHT_PX,
-    );
+    let map = ScreenMap::fit(bounds, area_left, area_top, area_width, MAX_DRAWING_HEIGHT_PX);
     let drawing_bottom = area_top + map.height_px() + LABEL_ROOM_PX;
 
     let rows = legend_rows(drawing) as f64;
@@ -169,17 +163,7 @@ pub fn render_station_svg(drawing: &StationDrawing) -> Result<String> {
                 .set("font-weight", "bold")
                 .set("id", "title"),
         )
-        .add(
-            text(
-                &drawing.subtitle,
-                MARGIN_PX,
-                60.0,
-                14.0,
-                Anchor::Start,
-                "#444444",
-            )
-            .set("id", "subtitle"),
-        )
+        .add(text(&drawing.subtitle, MARGIN_PX, 60.0, 14.0, Anchor::Start, "#444444").set("id", "subtitle"))
         .add(
             Rectangle::new()
                 .set("x", num(MARGIN_PX))
@@ -208,11 +192,7 @@ pub fn render_station_svg(drawing: &StationDrawing) -> Result<String> {
     let (markers, joint_labels) = joints_layer(&drawing.settings, &map, &mut placer);
     let dimensions = dimensions_layer(&drawing.dimensions, &map, &mut placer);
     let slot_names = slot_labels(&drawing.slots, &map, &mut placer);
-    document = document
-        .add(dimensions)
-        .add(markers)
-        .add(joint_labels)
-        .add(slot_names);
+    document = document.add(dimensions).add(markers).add(joint_labels).add(slot_names);
 
     let footer_top = drawing_bottom + 30.0;
     let legend_width = STATION_PAGE_WIDTH_PX - 2.0 * MARGIN_PX - NOTE_WIDTH_PX - 20.0;

@@ -63,9 +63,7 @@ pub(crate) fn setting_style(index: usize) -> SettingStyle {
 }
 
 /// Colours of plot series, in order (Okabe-Ito, colour-blind safe).
-const SERIES_COLOURS: [&str; 6] = [
-    "#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9",
-];
+const SERIES_COLOURS: [&str; 6] = ["#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9"];
 /// Dash patterns of plot series, in order, so series differ without colour too.
 const SERIES_DASHES: [Option<&str>; 4] = [None, Some("8 4"), Some("2 3"), Some("10 3 2 3")];
 

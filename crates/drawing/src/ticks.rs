@@ -58,11 +58,7 @@ pub fn nice_ticks(min: f64, max: f64, target_count: usize) -> Ticks {
         (0.0, 1.0)
     };
     if high - low <= f64::EPSILON * high.abs().max(low.abs()).max(1.0) {
-        let pad = if low.abs() > 0.0 {
-            0.1 * low.abs()
-        } else {
-            1.0
-        };
+        let pad = if low.abs() > 0.0 { 0.1 * low.abs() } else { 1.0 };
         low -= pad;
         high += pad;
     }
@@ -168,11 +164,7 @@ pub fn format_tick(value: f64, step: f64) -> String {
     };
     let text = format!("{value:.decimals$}");
     // "-0" / "-0.0" after rounding reads as a typo.
-    if text
-        .trim_start_matches('-')
-        .chars()
-        .all(|c| c == '0' || c == '.')
-    {
+    if text.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
         text.trim_start_matches('-').to_owned()
     } else {
         text
@@ -233,10 +225,7 @@ mod tests {
     #[test]
     fn multiples_of_the_step_are_axis_ends() {
         let ticks = nice_ticks(0.0, 35.0, 5);
-        assert_eq!(
-            (ticks.axis_min, ticks.axis_max, ticks.step),
-            (0.0, 40.0, 10.0)
-        );
+        assert_eq!((ticks.axis_min, ticks.axis_max, ticks.step), (0.0, 40.0, 10.0));
         let exact = nice_ticks(0.0, 30.000000000001, 5);
         assert_eq!(exact.axis_max, 30.0);
     }

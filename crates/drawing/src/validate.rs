@@ -72,11 +72,7 @@ pub(crate) fn validate_station(drawing: &StationDrawing) -> Result<()> {
         }
     }
     for (i, outline) in drawing.envelope.iter().enumerate() {
-        check_points(
-            &format!("envelope outline {i}"),
-            outline,
-            POLYGON_MIN_POINTS,
-        )?;
+        check_points(&format!("envelope outline {i}"), outline, POLYGON_MIN_POINTS)?;
     }
     if let Some(line) = &drawing.fairing_line {
         check_points("fairing line", line, POLYLINE_MIN_POINTS)?;
@@ -102,10 +98,7 @@ fn check_points(what: &str, points: &[Point2<f64>], minimum: usize) -> Result<()
             minimum,
         });
     }
-    match points
-        .iter()
-        .position(|p| !(p.x.is_finite() && p.y.is_finite()))
-    {
+    match points.iter().position(|p| !(p.x.is_finite() && p.y.is_finite())) {
         Some(index) => Err(Error::NonFinitePoint {
             what: what.to_owned(),
             index,
@@ -121,10 +114,7 @@ mod tests {
 
     #[test]
     fn empty_drawing_is_refused() {
-        assert_eq!(
-            validate_station(&StationDrawing::default()),
-            Err(Error::EmptyDrawing)
-        );
+        assert_eq!(validate_station(&StationDrawing::default()), Err(Error::EmptyDrawing));
     }
 
     #[test]

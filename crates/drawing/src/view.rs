@@ -77,13 +77,7 @@ pub(crate) struct ScreenMap {
 impl ScreenMap {
     /// The largest equal-axis scale that fits `bounds` into `width_px` x `max_height_px`,
     /// centred horizontally, with its top at `top_px`.
-    pub fn fit(
-        bounds: Bounds,
-        left_px: f64,
-        top_px: f64,
-        width_px: f64,
-        max_height_px: f64,
-    ) -> Self {
+    pub fn fit(bounds: Bounds, left_px: f64, top_px: f64, width_px: f64, max_height_px: f64) -> Self {
         let px_per_m = (width_px / bounds.width()).min(max_height_px / bounds.height());
         let used_width = bounds.width() * px_per_m;
         ScreenMap {

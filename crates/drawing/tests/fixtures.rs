@@ -1,8 +1,7 @@
 //! Shared inputs: a small circular-slot station at three settings, and a plot set.
 
 use flapwright_drawing::{
-    Dimension, Joint, Link, MechanismSnapshot, PartStyle, Plot, SectionOutline, Series, SlotArc,
-    StationDrawing,
+    Dimension, Joint, Link, MechanismSnapshot, PartStyle, Plot, SectionOutline, Series, SlotArc, StationDrawing,
 };
 use nalgebra::{Point2, Rotation2};
 
@@ -152,9 +151,7 @@ pub fn plots() -> Vec<Plot> {
             title: "Clearance".into(),
             x_label: "nut travel s34 [mm]".into(),
             y_label: "clearance [mm]".into(),
-            series: vec![series("flap vs wing", &|x| {
-                0.02 * (x - 150.0).powi(2) + 5.0
-            })],
+            series: vec![series("flap vs wing", &|x| 0.02 * (x - 150.0).powi(2) + 5.0)],
         },
     ]
 }

@@ -11,11 +11,7 @@ pub fn render(svg: &str, fonts: bool) -> Pixmap {
     let tree = resvg::usvg::Tree::from_str(svg, &options).expect("the SVG parses with usvg");
     let size = tree.size().to_int_size();
     let mut pixmap = Pixmap::new(size.width(), size.height()).expect("non-empty page");
-    resvg::render(
-        &tree,
-        resvg::tiny_skia::Transform::identity(),
-        &mut pixmap.as_mut(),
-    );
+    resvg::render(&tree, resvg::tiny_skia::Transform::identity(), &mut pixmap.as_mut());
     pixmap
 }
 
@@ -37,9 +33,7 @@ pub fn of_colour(pixmap: &Pixmap, hex: &str, tolerance: u8) -> usize {
         .iter()
         .filter(|p| {
             let c = p.demultiply();
-            c.red().abs_diff(r) <= tolerance
-                && c.green().abs_diff(g) <= tolerance
-                && c.blue().abs_diff(b) <= tolerance
+            c.red().abs_diff(r) <= tolerance && c.green().abs_diff(g) <= tolerance && c.blue().abs_diff(b) <= tolerance
         })
         .count()
 }

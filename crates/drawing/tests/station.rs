@@ -17,10 +17,7 @@ fn renders_to_a_non_blank_page_of_the_declared_size() {
     let inked = inked(&pixmap);
     let total = (width * height) as usize;
     assert!(inked > total / 50, "only {inked} of {total} pixels inked");
-    assert!(
-        inked < total / 2,
-        "{inked} of {total} pixels inked: page looks flooded"
-    );
+    assert!(inked < total / 2, "{inked} of {total} pixels inked: page looks flooded");
 }
 
 #[test]
@@ -29,14 +26,8 @@ fn renders_without_fonts_too() {
     let svg = render_station_svg(&station()).expect("renders");
     let without = inked(&render(&svg, false));
     let with = inked(&render(&svg, true));
-    assert!(
-        without > 10_000,
-        "geometry missing without fonts: {without} px"
-    );
-    assert!(
-        with >= without,
-        "fonts should only add ink ({with} < {without})"
-    );
+    assert!(without > 10_000, "geometry missing without fonts: {without} px");
+    assert!(with >= without, "fonts should only add ink ({with} < {without})");
 }
 
 #[test]
@@ -48,10 +39,7 @@ fn every_setting_is_tagged_and_visible() {
     let pixmap = render(&svg, false);
     for colour in SETTING_COLOURS {
         let count = of_colour(&pixmap, colour, 12);
-        assert!(
-            count > 200,
-            "setting colour {colour} covers only {count} px"
-        );
+        assert!(count > 200, "setting colour {colour} covers only {count} px");
     }
 }
 
@@ -62,10 +50,7 @@ fn removing_a_setting_removes_it_from_the_rendering() {
     let svg = render_station_svg(&drawing).expect("renders");
     assert!(!svg.contains("setting-landing"));
     let pixmap = render(&svg, false);
-    assert!(
-        of_colour(&pixmap, SETTING_COLOURS[1], 12) > 200,
-        "takeoff still drawn"
-    );
+    assert!(of_colour(&pixmap, SETTING_COLOURS[1], 12) > 200, "takeoff still drawn");
     assert_eq!(
         of_colour(&pixmap, SETTING_COLOURS[2], 12),
         0,
@@ -95,16 +80,12 @@ fn nan_coordinate_gives_the_typed_error() {
 #[test]
 fn degenerate_inputs_are_refused() {
     let mut drawing = station();
-    drawing.dimensions.push(flapwright_drawing::Dimension::new(
-        "zero",
-        mm(1.0, 1.0),
-        mm(1.0, 1.0),
-    ));
+    drawing
+        .dimensions
+        .push(flapwright_drawing::Dimension::new("zero", mm(1.0, 1.0), mm(1.0, 1.0)));
     assert_eq!(
         render_station_svg(&drawing),
-        Err(Error::ZeroLengthDimension {
-            label: "zero".into()
-        })
+        Err(Error::ZeroLengthDimension { label: "zero".into() })
     );
     let mut drawing = station();
     drawing.slots[0].radius_m = -0.1;
@@ -122,10 +103,7 @@ fn degenerate_inputs_are_refused() {
             ..
         })
     ));
-    assert_eq!(
-        render_station_svg(&Default::default()),
-        Err(Error::EmptyDrawing)
-    );
+    assert_eq!(render_station_svg(&Default::default()), Err(Error::EmptyDrawing));
 }
 
 #[test]
@@ -152,9 +130,7 @@ fn joint_labels(svg: &str) -> Vec<(f64, f64, String)> {
                 .parse()
                 .expect("number")
         };
-        let content = element[element.find('>').expect("tag end") + 1..]
-            .trim()
-            .to_owned();
+        let content = element[element.find('>').expect("tag end") + 1..].trim().to_owned();
         labels.push((attribute("x"), attribute("y"), content));
         rest = &rest[text_start + 5..];
     }

@@ -17,13 +17,9 @@ fn build_parts(c: &mut Criterion) {
             spanwise_stations_per_m: 4.0,
             tube_segments: 24,
         };
-        group.bench_with_input(
-            BenchmarkId::from_parameter(points_per_side),
-            &resolution,
-            |b, r| {
-                b.iter(|| model.compute_parts(*r).unwrap());
-            },
-        );
+        group.bench_with_input(BenchmarkId::from_parameter(points_per_side), &resolution, |b, r| {
+            b.iter(|| model.compute_parts(*r).unwrap());
+        });
     }
     group.finish();
     let parts = model.compute_parts(MeshResolution::default()).unwrap();

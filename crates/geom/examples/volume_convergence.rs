@@ -7,8 +7,7 @@
 use std::time::Instant;
 
 use flapwright_geom::{
-    Airfoil, MeshResolution, PanelSpec, SweepReference, TrailingEdge, WingModel, WingSectionSpec,
-    WingSpec,
+    Airfoil, MeshResolution, PanelSpec, SweepReference, TrailingEdge, WingModel, WingSectionSpec, WingSpec,
 };
 use nalgebra::Point3;
 
@@ -73,10 +72,7 @@ fn main() -> Result<(), flapwright_geom::Error> {
         previous = Some(error);
     }
     for order in &orders[1..] {
-        assert!(
-            (1.8..2.3).contains(order),
-            "observed order {order} is not 2"
-        );
+        assert!((1.8..2.3).contains(order), "observed order {order} is not 2");
     }
     println!("second-order convergence confirmed");
     Ok(())

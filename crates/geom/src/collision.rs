@@ -65,15 +65,11 @@ impl CollisionShape {
     /// oriented for [`Self::contains_point`] to be meaningful.
     pub fn from_mesh(mesh: &TriMesh) -> Result<CollisionShape> {
         let vertices: Vec<DVec3> = mesh.vertices.iter().map(to_glam).collect();
-        let shape = SharedShape::trimesh_with_flags(
-            vertices.clone(),
-            mesh.triangles.clone(),
-            TriMeshFlags::ORIENTED,
-        )
-        .or_else(|_| SharedShape::trimesh(vertices, mesh.triangles.clone()))
-        .map_err(|e| Error::Collision {
-            reason: format!("triangle mesh rejected: {e:?}"),
-        })?;
+        let shape = SharedShape::trimesh_with_flags(vertices.clone(), mesh.triangles.clone(), TriMeshFlags::ORIENTED)
+            .or_else(|_| SharedShape::trimesh(vertices, mesh.triangles.clone()))
+            .map_err(|e| Error::Collision {
+                reason: format!("triangle mesh rejected: {e:?}"),
+            })?;
         Ok(CollisionShape { shape })
     }
 
@@ -87,11 +83,7 @@ impl CollisionShape {
     /// A capsule: segment `a`-`b` (local frame, m) swept by a sphere of `radius_m`.
     pub fn capsule(a: Point3<f64>, b: Point3<f64>, radius_m: f64) -> Result<CollisionShape> {
         Ok(CollisionShape {
-            shape: SharedShape::capsule(
-                to_glam(&a),
-                to_glam(&b),
-                positive("capsule radius_m", radius_m)?,
-            ),
+            shape: SharedShape::capsule(to_glam(&a), to_glam(&b), positive("capsule radius_m", radius_m)?),
         })
     }
 
@@ -161,8 +153,7 @@ pub fn compute_distance(
     if distance > 0.0 {
         let margin = distance * (1.0 + 1e-9) + 1e-12;
         if let ClosestPoints::WithinMargin(p, q) =
-            query::closest_points(&pa, &*a.shape, &pb, &*b.shape, margin)
-                .map_err(|_| unsupported("closest points"))?
+            query::closest_points(&pa, &*a.shape, &pb, &*b.shape, margin).map_err(|_| unsupported("closest points"))?
         {
             return Ok(Proximity {
                 distance_m: distance,
@@ -171,8 +162,7 @@ pub fn compute_distance(
             });
         }
     }
-    let contact =
-        query::contact(&pa, &*a.shape, &pb, &*b.shape, 0.0).map_err(|_| unsupported("contact"))?;
+    let contact = query::contact(&pa, &*a.shape, &pb, &*b.shape, 0.0).map_err(|_| unsupported("contact"))?;
     let (p, q) = contact.map_or((pa.translation, pb.translation), |c| (c.point1, c.point2));
     Ok(Proximity {
         distance_m: distance.max(0.0),

@@ -121,9 +121,7 @@ pub enum Error {
         spanwise_m: f64,
     },
     /// Two flaps overlapping in span, or a flap of zero span.
-    #[error(
-        "flap {flap:?}: span [{y_inboard_m}, {y_outboard_m}] m is empty or overlaps flap {other:?}"
-    )]
+    #[error("flap {flap:?}: span [{y_inboard_m}, {y_outboard_m}] m is empty or overlaps flap {other:?}")]
     FlapSpanConflict {
         /// Flap name.
         flap: String,
@@ -196,12 +194,7 @@ pub(crate) fn require_finite(what: &'static str, value: f64) -> Result<f64> {
 }
 
 /// Returns `Err(OutOfRange)` unless `minimum <= value <= maximum` (and finite).
-pub(crate) fn require_range(
-    what: &'static str,
-    value: f64,
-    minimum: f64,
-    maximum: f64,
-) -> Result<f64> {
+pub(crate) fn require_range(what: &'static str, value: f64, minimum: f64, maximum: f64) -> Result<f64> {
     require_finite(what, value)?;
     if value >= minimum && value <= maximum {
         Ok(value)

@@ -73,6 +73,10 @@ pub struct FlapSpec {
     pub hinge: HingeSpec,
     /// Section shape.
     pub section: FlapSectionSpec,
+    /// Spanwise gap between each flap side and its cut-out (m); `None`:
+    /// [`SIDE_GAP_CHORD_FRACTION`] of the local chord. A flap turning about a hinge line that
+    /// is not perpendicular to its streamwise sides moves spanwise and needs more.
+    pub side_gap_m: Option<f64>,
 }
 
 /// A validated flap on a wing.
@@ -88,6 +92,10 @@ impl Flap {
     pub fn try_new(spec: FlapSpec, wing: &Wing) -> Result<Flap> {
         require_finite("flap y_inboard_m", spec.y_inboard_m)?;
         require_finite("flap y_outboard_m", spec.y_outboard_m)?;
+        if let Some(gap) = spec.side_gap_m {
+            let quarter_span = 0.25 * (spec.y_outboard_m - spec.y_inboard_m).abs();
+            require_range("flap side_gap_m", gap, 0.0, quarter_span)?;
+        }
         if spec.y_outboard_m <= spec.y_inboard_m {
             return Err(Error::FlapSpanConflict {
                 flap: spec.name.clone(),
@@ -96,30 +104,14 @@ impl Flap {
                 y_outboard_m: spec.y_outboard_m,
             });
         }
-        wing.locate(
-            spec.y_inboard_m,
-            &format!("flap {:?} inboard end", spec.name),
-        )?;
-        wing.locate(
-            spec.y_outboard_m,
-            &format!("flap {:?} outboard end", spec.name),
-        )?;
+        wing.locate(spec.y_inboard_m, &format!("flap {:?} inboard end", spec.name))?;
+        wing.locate(spec.y_outboard_m, &format!("flap {:?} outboard end", spec.name))?;
         if let FlapSectionSpec::OwnSection { airfoil } = &spec.section {
             airfoil.validate()?;
         }
         let (lo, hi) = FLAP_CHORD_FRACTION_RANGE;
-        require_range(
-            "flap chord_fraction_inboard",
-            spec.chord_fraction_inboard,
-            lo,
-            hi,
-        )?;
-        require_range(
-            "flap chord_fraction_outboard",
-            spec.chord_fraction_outboard,
-            lo,
-            hi,
-        )?;
+        require_range("flap chord_fraction_inboard", spec.chord_fraction_inboard, lo, hi)?;
+        require_range("flap chord_fraction_outboard", spec.chord_fraction_outboard, lo, hi)?;
         let (inboard_ac, outboard_ac) = match &spec.hinge {
             HingeSpec::Points {
                 inboard_ac,
@@ -143,10 +135,7 @@ impl Flap {
                 )?;
                 let at = |y: f64| -> Result<Point3<f64>> {
                     let section = wing.section_at(y)?;
-                    Ok(wing.section_point_ac(
-                        &section,
-                        Point2::new(*chord_fraction, -depth_below_chord_fraction),
-                    ))
+                    Ok(wing.section_point_ac(&section, Point2::new(*chord_fraction, -depth_below_chord_fraction)))
                 };
                 (at(spec.y_inboard_m)?, at(spec.y_outboard_m)?)
             }
@@ -189,22 +178,18 @@ impl Flap {
     pub fn body_span_m(&self, wing: &Wing) -> Result<(f64, f64)> {
         let (_, chord_in, _) = wing.planform_at(self.spec.y_inboard_m)?;
         let (_, chord_out, _) = wing.planform_at(self.spec.y_outboard_m)?;
-        Ok((
-            self.spec.y_inboard_m + SIDE_GAP_CHORD_FRACTION * chord_in,
-            self.spec.y_outboard_m - SIDE_GAP_CHORD_FRACTION * chord_out,
-        ))
+        let (gap_in, gap_out) = match self.spec.side_gap_m {
+            Some(gap) => (gap, gap),
+            None => (SIDE_GAP_CHORD_FRACTION * chord_in, SIDE_GAP_CHORD_FRACTION * chord_out),
+        };
+        Ok((self.spec.y_inboard_m + gap_in, self.spec.y_outboard_m - gap_out))
     }
 
     /// Stowed flap section outline at `y_m` as a closed polygon in wing-section unit-chord
     /// coordinates (u aft, v up), from the trailing edge along the upper side to the front
     /// and back along the lower side. `wing_airfoil` is the local wing section (already
     /// resampled to `points_per_side`).
-    pub fn stowed_outline(
-        &self,
-        y_m: f64,
-        wing_airfoil: &Airfoil,
-        points_per_side: usize,
-    ) -> Result<Vec<Point2<f64>>> {
+    pub fn stowed_outline(&self, y_m: f64, wing_airfoil: &Airfoil, points_per_side: usize) -> Result<Vec<Point2<f64>>> {
         let chord_fraction = self.chord_fraction_at(y_m);
         let front_u = 1.0 - chord_fraction;
         match &self.spec.section {
@@ -235,9 +220,7 @@ impl Flap {
                 Ok(flap
                     .points
                     .iter()
-                    .map(|p| {
-                        trailing_edge + rotation * (Vector2::new(p.x - 1.0, p.y) * chord_fraction)
-                    })
+                    .map(|p| trailing_edge + rotation * (Vector2::new(p.x - 1.0, p.y) * chord_fraction))
                     .collect())
             }
         }

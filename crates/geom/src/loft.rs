@@ -9,10 +9,7 @@ use crate::mesh::TriMesh;
 /// (largest `2 area / longest edge^2`), so that runs of nearly collinear points (flat parts
 /// of resampled airfoils) are fanned from the opposite side instead of being left as a
 /// sliver at the end. Triangles have the polygon's orientation. O(n^2).
-pub(crate) fn triangulate_polygon(
-    polygon: &[Point2<f64>],
-    what: &'static str,
-) -> Result<Vec<[usize; 3]>> {
+pub(crate) fn triangulate_polygon(polygon: &[Point2<f64>], what: &'static str) -> Result<Vec<[usize; 3]>> {
     let n = polygon.len();
     let fail = || Error::Triangulation { what, count: n };
     if n < 3 {
@@ -130,12 +127,7 @@ pub(crate) fn loft_closed(rings: &[Vec<Point3<f64>>], what: &'static str) -> Res
     let index = |ring: usize, i: usize| (ring * m + i % m) as u32;
     for k in 0..rings.len() - 1 {
         for i in 0..m {
-            let (a, b, c, d) = (
-                index(k, i),
-                index(k, i + 1),
-                index(k + 1, i + 1),
-                index(k + 1, i),
-            );
+            let (a, b, c, d) = (index(k, i), index(k, i + 1), index(k + 1, i + 1), index(k + 1, i));
             // Split the quad along its shorter diagonal.
             let ac = (mesh.vertices[c as usize] - mesh.vertices[a as usize]).norm_squared();
             let bd = (mesh.vertices[d as usize] - mesh.vertices[b as usize]).norm_squared();
@@ -160,11 +152,7 @@ pub(crate) fn loft_closed(rings: &[Vec<Point3<f64>>], what: &'static str) -> Res
         mesh.triangles.push(orient(&mesh, tri, -first_area));
     }
     for t in last {
-        let tri = [
-            index(last_ring, t[0]),
-            index(last_ring, t[1]),
-            index(last_ring, t[2]),
-        ];
+        let tri = [index(last_ring, t[0]), index(last_ring, t[1]), index(last_ring, t[2])];
         mesh.triangles.push(orient(&mesh, tri, last_area));
     }
     if mesh.compute_signed_volume() < 0.0 {
@@ -213,15 +201,8 @@ mod tests {
 
     #[test]
     fn concave_polygon_triangulates() {
-        let l_shape = [
-            (0.0, 0.0),
-            (2.0, 0.0),
-            (2.0, 1.0),
-            (1.0, 1.0),
-            (1.0, 2.0),
-            (0.0, 2.0),
-        ]
-        .map(|(x, y)| Point2::new(x, y));
+        let l_shape =
+            [(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0), (1.0, 2.0), (0.0, 2.0)].map(|(x, y)| Point2::new(x, y));
         let triangles = triangulate_polygon(&l_shape, "L").unwrap();
         let area: f64 = triangles
             .iter()

@@ -55,13 +55,10 @@ impl TriMesh {
     pub fn compute_topology_check(&self) -> MeshCheck {
         let mut check = MeshCheck::default();
         // (min, max) -> (count of min->max uses, count of max->min uses)
-        let mut edges: HashMap<(u32, u32), (u32, u32)> =
-            HashMap::with_capacity(self.triangles.len() * 2);
+        let mut edges: HashMap<(u32, u32), (u32, u32)> = HashMap::with_capacity(self.triangles.len() * 2);
         let count = self.vertices.len();
         for triangle in &self.triangles {
-            if triangle.iter().any(|&i| i as usize >= count)
-                || self.triangle_is_degenerate(triangle)
-            {
+            if triangle.iter().any(|&i| i as usize >= count) || self.triangle_is_degenerate(triangle) {
                 check.degenerate_triangles += 1;
                 continue;
             }
@@ -96,8 +93,7 @@ impl TriMesh {
             .max((c - b).norm_squared())
             .max((a - c).norm_squared());
         let doubled_area = (b - a).cross(&(c - a)).norm();
-        doubled_area.partial_cmp(&(DEGENERATE_RELATIVE_TOL * longest))
-            != Some(std::cmp::Ordering::Greater)
+        doubled_area.partial_cmp(&(DEGENERATE_RELATIVE_TOL * longest)) != Some(std::cmp::Ordering::Greater)
     }
 
     /// Signed enclosed volume (m^3) by the divergence theorem, sum of `a . (b x c) / 6`
@@ -107,11 +103,7 @@ impl TriMesh {
         if self.vertices.is_empty() {
             return 0.0;
         }
-        let centre = self
-            .vertices
-            .iter()
-            .fold(Vector3::zeros(), |s, p| s + p.coords)
-            / self.vertices.len() as f64;
+        let centre = self.vertices.iter().fold(Vector3::zeros(), |s, p| s + p.coords) / self.vertices.len() as f64;
         self.triangles
             .iter()
             .map(|t| {
@@ -125,16 +117,10 @@ impl TriMesh {
     /// Axis-aligned bounding box of the vertices, `None` for an empty mesh.
     pub fn compute_aabb(&self) -> Option<Aabb> {
         let first = *self.vertices.first()?;
-        Some(self.vertices.iter().fold(
-            Aabb {
-                min: first,
-                max: first,
-            },
-            |b, p| Aabb {
-                min: b.min.inf(p),
-                max: b.max.sup(p),
-            },
-        ))
+        Some(self.vertices.iter().fold(Aabb { min: first, max: first }, |b, p| Aabb {
+            min: b.min.inf(p),
+            max: b.max.sup(p),
+        }))
     }
 
     /// Total surface area (m^2).
@@ -202,11 +188,7 @@ mod tests {
     fn tetrahedron_is_watertight_with_volume_one_sixth() {
         let mesh = tetrahedron();
         assert!(mesh.compute_topology_check().is_watertight());
-        approx::assert_relative_eq!(
-            mesh.compute_signed_volume(),
-            1.0 / 6.0,
-            max_relative = 1e-14
-        );
+        approx::assert_relative_eq!(mesh.compute_signed_volume(), 1.0 / 6.0, max_relative = 1e-14);
     }
 
     #[test]

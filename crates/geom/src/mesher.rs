@@ -113,11 +113,7 @@ impl<'a> Mesher<'a> {
                 let outline = match flap {
                     None => section.airfoil.points.clone(),
                     Some(flap) => {
-                        let flap_outline = flap.stowed_outline(
-                            y,
-                            &section.airfoil,
-                            self.resolution.points_per_side,
-                        )?;
+                        let flap_outline = flap.stowed_outline(y, &section.airfoil, self.resolution.points_per_side)?;
                         truncated_outline(
                             &section.airfoil,
                             cove_chord_fraction(&flap_outline),
@@ -133,11 +129,7 @@ impl<'a> Mesher<'a> {
             } else {
                 outlines
             };
-            let rings: Vec<_> = sections
-                .iter()
-                .zip(&outlines)
-                .map(|(s, o)| self.to_ac(s, o))
-                .collect();
+            let rings: Vec<_> = sections.iter().zip(&outlines).map(|(s, o)| self.to_ac(s, o)).collect();
             mesh.append(&loft_closed(&rings, "wing skin")?);
         }
         Ok(mesh)
@@ -150,11 +142,7 @@ impl<'a> Mesher<'a> {
         let mut outlines = Vec::with_capacity(stations.len());
         for &y in &stations {
             let section = self.section(y)?;
-            outlines.push(flap.stowed_outline(
-                y,
-                &section.airfoil,
-                self.resolution.points_per_side,
-            )?);
+            outlines.push(flap.stowed_outline(y, &section.airfoil, self.resolution.points_per_side)?);
             sections.push(section);
         }
         let rings: Vec<_> = sections
@@ -168,11 +156,7 @@ impl<'a> Mesher<'a> {
 
 /// Wing outline cut at chord fraction `cove_u` with a straight cove wall: upper side from
 /// the wall to the leading edge, lower side back to the wall, `2 n - 1` points.
-pub(crate) fn truncated_outline(
-    airfoil: &Airfoil,
-    cove_u: f64,
-    points_per_side: usize,
-) -> Result<Vec<Point2<f64>>> {
+pub(crate) fn truncated_outline(airfoil: &Airfoil, cove_u: f64, points_per_side: usize) -> Result<Vec<Point2<f64>>> {
     let upper = airfoil.surface_line(Surface::Upper);
     let lower = airfoil.surface_line(Surface::Lower);
     let bad = || Error::BadAirfoil {
@@ -186,23 +170,15 @@ pub(crate) fn truncated_outline(
         .into_iter()
         .rev()
         .collect();
-    outline.extend(
-        lower
-            .sample_cosine(0.0, s_lower, points_per_side)
-            .into_iter()
-            .skip(1),
-    );
+    outline.extend(lower.sample_cosine(0.0, s_lower, points_per_side).into_iter().skip(1));
     Ok(outline)
 }
 
 /// Makes the trailing edges of a set of outlines (first point = upper TE, last = lower TE)
 /// agree: all sharp -> the repeated last point is dropped; all open -> kept; mixed -> the
 /// sharp ones are opened by [`MIN_TRAILING_EDGE_GAP_CHORD_FRACTION`].
-pub(crate) fn consistent_trailing_edges(
-    mut outlines: Vec<Vec<Point2<f64>>>,
-) -> Vec<Vec<Point2<f64>>> {
-    let is_closed =
-        |o: &Vec<Point2<f64>>| (o[0] - o[o.len() - 1]).norm() <= TRAILING_EDGE_CLOSED_TOL;
+pub(crate) fn consistent_trailing_edges(mut outlines: Vec<Vec<Point2<f64>>>) -> Vec<Vec<Point2<f64>>> {
+    let is_closed = |o: &Vec<Point2<f64>>| (o[0] - o[o.len() - 1]).norm() <= TRAILING_EDGE_CLOSED_TOL;
     let closed_count = outlines.iter().filter(|o| is_closed(o)).count();
     if closed_count == outlines.len() {
         for o in &mut outlines {

@@ -106,10 +106,7 @@ impl WingModel {
             wing.locate(spar.y_end_m, &format!("spar {:?} end", spar.name))?;
             for flap in &flaps {
                 let f = flap.spec();
-                let (a, b) = (
-                    spar.y_start_m.max(f.y_inboard_m),
-                    spar.y_end_m.min(f.y_outboard_m),
-                );
+                let (a, b) = (spar.y_start_m.max(f.y_inboard_m), spar.y_end_m.min(f.y_outboard_m));
                 if a > b {
                     continue;
                 }
@@ -168,12 +165,7 @@ impl WingModel {
                 minimum: 3,
             });
         }
-        require_range(
-            "spanwise_stations_per_m",
-            resolution.spanwise_stations_per_m,
-            1e-9,
-            1e9,
-        )?;
+        require_range("spanwise_stations_per_m", resolution.spanwise_stations_per_m, 1e-9, 1e9)?;
         let mesher = Mesher::new(self, resolution)?;
         let mut parts = vec![Part {
             name: "wing".to_owned(),
@@ -213,8 +205,7 @@ impl WingModel {
         for part in &parts {
             let check = part.mesh.compute_topology_check();
             if !check.is_watertight()
-                || part.mesh.compute_signed_volume().partial_cmp(&0.0)
-                    != Some(std::cmp::Ordering::Greater)
+                || part.mesh.compute_signed_volume().partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater)
             {
                 return Err(Error::MeshNotWatertight {
                     part: part.name.clone(),
@@ -245,11 +236,7 @@ impl WingModel {
     /// Outlines of the wing skin, each stowed flap and each spar cut by the plane y = `y_m`
     /// (the torque tube is not included), with `points_per_side` airfoil points per side:
     /// the same polygons the meshes are lofted through at that station.
-    pub fn compute_section_outlines(
-        &self,
-        y_m: f64,
-        points_per_side: usize,
-    ) -> Result<Vec<SectionOutline>> {
+    pub fn compute_section_outlines(&self, y_m: f64, points_per_side: usize) -> Result<Vec<SectionOutline>> {
         let resolution = MeshResolution {
             points_per_side,
             ..MeshResolution::default()
@@ -270,11 +257,7 @@ impl WingModel {
         let wing_outline = match cut_by {
             Some(flap) => {
                 let flap_outline = flap.stowed_outline(y_m, &section.airfoil, points_per_side)?;
-                truncated_outline(
-                    &section.airfoil,
-                    cove_chord_fraction(&flap_outline),
-                    points_per_side,
-                )?
+                truncated_outline(&section.airfoil, cove_chord_fraction(&flap_outline), points_per_side)?
             }
             None => consistent_trailing_edges(vec![section.airfoil.points.clone()]).remove(0),
         };
@@ -286,12 +269,9 @@ impl WingModel {
         for flap in &self.flaps {
             let (a, b) = flap.body_span_m(&self.wing)?;
             if y_m >= a && y_m <= b {
-                let outline = consistent_trailing_edges(vec![flap.stowed_outline(
-                    y_m,
-                    &section.airfoil,
-                    points_per_side,
-                )?])
-                .remove(0);
+                let outline =
+                    consistent_trailing_edges(vec![flap.stowed_outline(y_m, &section.airfoil, points_per_side)?])
+                        .remove(0);
                 outlines.push(SectionOutline {
                     name: flap.spec().name.clone(),
                     kind: PartKind::Flap,

@@ -39,12 +39,7 @@ impl SparSpec {
     /// [`crate::WingModel::try_new`]).
     pub fn validate(&self) -> Result<()> {
         require_range("spar chord_fraction", self.chord_fraction, 0.0, 1.0)?;
-        require_range(
-            "spar thickness_m",
-            self.thickness_m,
-            f64::MIN_POSITIVE,
-            f64::MAX,
-        )?;
+        require_range("spar thickness_m", self.thickness_m, f64::MIN_POSITIVE, f64::MAX)?;
         require_finite("spar y_start_m", self.y_start_m)?;
         require_finite("spar y_end_m", self.y_end_m)?;
         if self.y_end_m <= self.y_start_m {
@@ -63,18 +58,8 @@ impl SparSpec {
     pub(crate) fn outline(&self, airfoil: &Airfoil, chord_m: f64) -> Result<Vec<Point2<f64>>> {
         let half = 0.5 * self.thickness_m / chord_m;
         let (fore, aft) = (self.chord_fraction - half, self.chord_fraction + half);
-        require_range(
-            "spar plate chordwise extent (chord fraction)",
-            fore,
-            0.0,
-            1.0,
-        )?;
-        require_range(
-            "spar plate chordwise extent (chord fraction)",
-            aft,
-            0.0,
-            1.0,
-        )?;
+        require_range("spar plate chordwise extent (chord fraction)", fore, 0.0, 1.0)?;
+        require_range("spar plate chordwise extent (chord fraction)", aft, 0.0, 1.0)?;
         Ok(vec![
             Point2::new(fore, airfoil.surface_y(fore, Surface::Lower)?),
             Point2::new(aft, airfoil.surface_y(aft, Surface::Lower)?),
@@ -99,12 +84,7 @@ impl TorqueTubeSpec {
                 require_finite("torque tube path coordinate (m)", *v)?;
             }
         }
-        require_range(
-            "torque tube radius_m",
-            self.radius_m,
-            f64::MIN_POSITIVE,
-            f64::MAX,
-        )?;
+        require_range("torque tube radius_m", self.radius_m, f64::MIN_POSITIVE, f64::MAX)?;
         let directions = self.directions()?;
         for (i, w) in directions.windows(2).enumerate() {
             let bend_deg = w[0].dot(&w[1]).clamp(-1.0, 1.0).acos().to_degrees();
@@ -124,13 +104,11 @@ impl TorqueTubeSpec {
             .windows(2)
             .enumerate()
             .map(|(i, w)| {
-                Unit::try_new(w[1] - w[0], 1e-12 * (1.0 + w[0].coords.norm())).ok_or(
-                    Error::TubePath {
-                        index: i + 1,
-                        bend_deg: 0.0,
-                        max_bend_deg: MAX_TUBE_BEND_DEG,
-                    },
-                )
+                Unit::try_new(w[1] - w[0], 1e-12 * (1.0 + w[0].coords.norm())).ok_or(Error::TubePath {
+                    index: i + 1,
+                    bend_deg: 0.0,
+                    max_bend_deg: MAX_TUBE_BEND_DEG,
+                })
             })
             .collect()
     }

@@ -110,18 +110,8 @@ impl Wing {
         }
         for (i, s) in spec.sections.iter().enumerate() {
             require_finite("wing section y_m", s.y_m)?;
-            require_range(
-                "wing section chord_m",
-                s.chord_m,
-                f64::MIN_POSITIVE,
-                f64::MAX,
-            )?;
-            require_range(
-                "wing section twist_deg",
-                s.twist_deg,
-                -MAX_TWIST_DEG,
-                MAX_TWIST_DEG,
-            )?;
+            require_range("wing section chord_m", s.chord_m, f64::MIN_POSITIVE, f64::MAX)?;
+            require_range("wing section twist_deg", s.twist_deg, -MAX_TWIST_DEG, MAX_TWIST_DEG)?;
             if i > 0 && s.y_m <= spec.sections[i - 1].y_m {
                 return Err(Error::SectionsOutOfOrder {
                     index: i,
@@ -184,10 +174,7 @@ impl Wing {
         for s in &spec.sections {
             s.airfoil.validate()?;
         }
-        Ok(Wing {
-            spec,
-            leading_edges_ac,
-        })
+        Ok(Wing { spec, leading_edges_ac })
     }
 
     /// The validated spec.
@@ -220,10 +207,7 @@ impl Wing {
             });
         }
         let sections = &self.spec.sections;
-        let k = sections
-            .partition_point(|s| s.y_m <= y_m)
-            .clamp(1, sections.len() - 1)
-            - 1;
+        let k = sections.partition_point(|s| s.y_m <= y_m).clamp(1, sections.len() - 1) - 1;
         let t = ((y_m - sections[k].y_m) / (sections[k + 1].y_m - sections[k].y_m)).clamp(0.0, 1.0);
         Ok((k, t))
     }
@@ -232,8 +216,7 @@ impl Wing {
     pub fn planform_at(&self, y_m: f64) -> Result<(Point3<f64>, f64, f64)> {
         let (k, t) = self.locate(y_m, "wing section")?;
         let (a, b) = (&self.spec.sections[k], &self.spec.sections[k + 1]);
-        let le = self.leading_edges_ac[k]
-            + (self.leading_edges_ac[k + 1] - self.leading_edges_ac[k]) * t;
+        let le = self.leading_edges_ac[k] + (self.leading_edges_ac[k + 1] - self.leading_edges_ac[k]) * t;
         let le = Point3::new(le.x, y_m, le.z);
         let chord = a.chord_m + (b.chord_m - a.chord_m) * t;
         let twist = (a.twist_deg + (b.twist_deg - a.twist_deg) * t).to_radians();
@@ -245,10 +228,7 @@ impl Wing {
     pub fn section_at_with(&self, y_m: f64, points_per_side: Option<usize>) -> Result<SectionAt> {
         let (k, t) = self.locate(y_m, "wing section")?;
         let (leading_edge_ac, chord_m, twist_rad) = self.planform_at(y_m)?;
-        let (a, b) = (
-            &self.spec.sections[k].airfoil,
-            &self.spec.sections[k + 1].airfoil,
-        );
+        let (a, b) = (&self.spec.sections[k].airfoil, &self.spec.sections[k + 1].airfoil);
         let airfoil = match points_per_side {
             Some(n) => Airfoil::blended(&a.resampled(n)?, &b.resampled(n)?, t)?,
             None if t == 0.0 => a.clone(),

@@ -16,16 +16,8 @@ fn sphere_sphere_distance_is_analytic() {
     let d = (cb - ca).norm();
     let proximity = compute_distance(&a, &at(ca.x, ca.y, ca.z), &b, &at(cb.x, cb.y, cb.z)).unwrap();
     assert_relative_eq!(proximity.distance_m, d - 0.75, max_relative = 1e-12);
-    assert_relative_eq!(
-        proximity.point_a_ac,
-        ca + (cb - ca) * (0.5 / d),
-        epsilon = 1e-12
-    );
-    assert_relative_eq!(
-        proximity.point_b_ac,
-        cb - (cb - ca) * (0.25 / d),
-        epsilon = 1e-12
-    );
+    assert_relative_eq!(proximity.point_a_ac, ca + (cb - ca) * (0.5 / d), epsilon = 1e-12);
+    assert_relative_eq!(proximity.point_b_ac, cb - (cb - ca) * (0.25 / d), epsilon = 1e-12);
     assert!(!compute_intersects(&a, &at(ca.x, ca.y, ca.z), &b, &at(cb.x, cb.y, cb.z)).unwrap());
     assert!(compute_intersects(&a, &at(0.0, 0.0, 0.0), &b, &at(0.7, 0.0, 0.0)).unwrap());
     assert_eq!(
@@ -48,29 +40,15 @@ fn box_box_distance_is_analytic_including_a_rotated_corner() {
         UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_4),
     );
     let proximity = compute_distance(&a, &at(0.0, 0.0, 0.0), &b, &turned).unwrap();
-    assert_relative_eq!(
-        proximity.distance_m,
-        1.5 - 0.25 * 2f64.sqrt(),
-        max_relative = 1e-9
-    );
-    assert_relative_eq!(
-        proximity.point_b_ac.x,
-        2.0 - 0.25 * 2f64.sqrt(),
-        max_relative = 1e-9
-    );
+    assert_relative_eq!(proximity.distance_m, 1.5 - 0.25 * 2f64.sqrt(), max_relative = 1e-9);
+    assert_relative_eq!(proximity.point_b_ac.x, 2.0 - 0.25 * 2f64.sqrt(), max_relative = 1e-9);
 }
 
 #[test]
 fn mesh_cube_against_ball_and_containment() {
     // Unit cube as a mesh (12 triangles, outward).
     let vertices = (0..8)
-        .map(|i| {
-            Point3::new(
-                f64::from(i & 1),
-                f64::from((i >> 1) & 1),
-                f64::from((i >> 2) & 1),
-            )
-        })
+        .map(|i| Point3::new(f64::from(i & 1), f64::from((i >> 1) & 1), f64::from((i >> 2) & 1)))
         .collect();
     let triangles = vec![
         [0, 2, 1],
@@ -86,10 +64,7 @@ fn mesh_cube_against_ball_and_containment() {
         [1, 3, 5],
         [3, 7, 5],
     ];
-    let mesh = TriMesh {
-        vertices,
-        triangles,
-    };
+    let mesh = TriMesh { vertices, triangles };
     assert!(mesh.compute_topology_check().is_watertight());
     assert_relative_eq!(mesh.compute_signed_volume(), 1.0, max_relative = 1e-14);
     let cube = CollisionShape::from_mesh(&mesh).unwrap();

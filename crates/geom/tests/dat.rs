@@ -24,20 +24,10 @@ fn lednicer_round_trip_is_exact() {
 
 #[test]
 fn handwritten_lednicer_file_reads_in_selig_order() {
-    let text =
-        "TEST LEDNICER\n3. 3.\n\n0.0 0.0\n0.5 0.06\n1.0 0.0\n\n0.0 0.0\n0.5 -0.04\n1.0 0.0\n";
+    let text = "TEST LEDNICER\n3. 3.\n\n0.0 0.0\n0.5 0.06\n1.0 0.0\n\n0.0 0.0\n0.5 -0.04\n1.0 0.0\n";
     let airfoil = Airfoil::from_dat(text.as_bytes()).unwrap();
     let xy: Vec<(f64, f64)> = airfoil.points.iter().map(|p| (p.x, p.y)).collect();
-    assert_eq!(
-        xy,
-        vec![
-            (1.0, 0.0),
-            (0.5, 0.06),
-            (0.0, 0.0),
-            (0.5, -0.04),
-            (1.0, 0.0)
-        ]
-    );
+    assert_eq!(xy, vec![(1.0, 0.0), (0.5, 0.06), (0.0, 0.0), (0.5, -0.04), (1.0, 0.0)]);
     approx::assert_relative_eq!(airfoil.compute_area(), 0.5 * 0.1, max_relative = 1e-12);
 }
 

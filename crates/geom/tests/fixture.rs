@@ -5,8 +5,8 @@
 #![allow(dead_code)] // each user of the fixture uses part of it
 
 use flapwright_geom::{
-    Airfoil, FlapSectionSpec, FlapSpec, HingeSpec, PanelSpec, SparSpec, SweepReference,
-    TorqueTubeSpec, TrailingEdge, Wing, WingModel, WingSectionSpec, WingSpec,
+    Airfoil, FlapSectionSpec, FlapSpec, HingeSpec, PanelSpec, SparSpec, SweepReference, TorqueTubeSpec, TrailingEdge,
+    Wing, WingModel, WingSectionSpec, WingSpec,
 };
 use nalgebra::Point3;
 
@@ -33,24 +33,9 @@ pub fn wing_spec() -> WingSpec {
     WingSpec {
         root_leading_edge_ac: Point3::new(0.0, 0.0, 0.0),
         sections: vec![
-            section(
-                0.0,
-                2.0,
-                2.0,
-                Airfoil::naca("4415", 50, TrailingEdge::Open).unwrap(),
-            ),
-            section(
-                2.5,
-                1.6,
-                0.0,
-                Airfoil::naca("23012", 50, TrailingEdge::Closed).unwrap(),
-            ),
-            section(
-                6.0,
-                0.9,
-                -3.0,
-                Airfoil::naca("2412", 50, TrailingEdge::Closed).unwrap(),
-            ),
+            section(0.0, 2.0, 2.0, Airfoil::naca("4415", 50, TrailingEdge::Open).unwrap()),
+            section(2.5, 1.6, 0.0, Airfoil::naca("23012", 50, TrailingEdge::Closed).unwrap()),
+            section(6.0, 0.9, -3.0, Airfoil::naca("2412", 50, TrailingEdge::Closed).unwrap()),
         ],
         panels: vec![
             PanelSpec {
@@ -71,13 +56,9 @@ pub fn wing_spec() -> WingSpec {
 pub fn model() -> WingModel {
     let spec = wing_spec();
     let wing = Wing::try_new(spec.clone()).unwrap();
-    let tube_path = [0.3, 2.5, 4.5]
-        .map(|y| wing.chord_point_ac(y, 0.66).unwrap())
-        .to_vec();
-    let inboard_hinge =
-        wing.chord_point_ac(0.4, 0.75).unwrap() + nalgebra::Vector3::new(0.0, 0.0, -0.12);
-    let outboard_hinge =
-        wing.chord_point_ac(2.5, 0.75).unwrap() + nalgebra::Vector3::new(0.0, 0.0, -0.10);
+    let tube_path = [0.3, 2.5, 4.5].map(|y| wing.chord_point_ac(y, 0.66).unwrap()).to_vec();
+    let inboard_hinge = wing.chord_point_ac(0.4, 0.75).unwrap() + nalgebra::Vector3::new(0.0, 0.0, -0.12);
+    let outboard_hinge = wing.chord_point_ac(2.5, 0.75).unwrap() + nalgebra::Vector3::new(0.0, 0.0, -0.10);
     let flaps = vec![
         FlapSpec {
             name: "inboard-flap".into(),
@@ -90,6 +71,7 @@ pub fn model() -> WingModel {
                 outboard_ac: outboard_hinge,
             },
             section: FlapSectionSpec::OwnSection { airfoil: n63212() },
+            side_gap_m: None,
         },
         FlapSpec {
             name: "outboard-flap".into(),
@@ -102,6 +84,7 @@ pub fn model() -> WingModel {
                 depth_below_chord_fraction: 0.06,
             },
             section: FlapSectionSpec::CutOut,
+            side_gap_m: None,
         },
     ];
     let spars = vec![

@@ -9,9 +9,7 @@ const STATIONS: [f64; 9] = [0.0, 0.0125, 0.05, 0.1, 0.25, 0.3, 0.5, 0.8, 1.0];
 
 /// Abbott & von Doenhoff eq. 6.2, open trailing edge.
 fn thickness(t: f64, x: f64) -> f64 {
-    5.0 * t
-        * (0.2969 * x.sqrt() - 0.1260 * x - 0.3516 * x.powi(2) + 0.2843 * x.powi(3)
-            - 0.1015 * x.powi(4))
+    5.0 * t * (0.2969 * x.sqrt() - 0.1260 * x - 0.3516 * x.powi(2) + 0.2843 * x.powi(3) - 0.1015 * x.powi(4))
 }
 
 /// 4-digit mean line (Abbott & von Doenhoff section 6.4).
@@ -35,8 +33,7 @@ struct FiveDigitLine {
 }
 
 fn five_digit_table() -> Vec<FiveDigitLine> {
-    let text =
-        std::fs::read_to_string(data_path("validation/naca_five_digit_mean_lines.csv")).unwrap();
+    let text = std::fs::read_to_string(data_path("validation/naca_five_digit_mean_lines.csv")).unwrap();
     text.lines()
         .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
         .map(|l| {
@@ -81,12 +78,7 @@ fn four_digit_thickness_and_camber_match_the_definition() {
     ] {
         let naca = Naca::parse(designation, TrailingEdge::Open).unwrap();
         for x in STATIONS {
-            assert_relative_eq!(
-                naca.thickness(x),
-                thickness(t, x),
-                epsilon = 1e-12,
-                max_relative = 1e-9
-            );
+            assert_relative_eq!(naca.thickness(x), thickness(t, x), epsilon = 1e-12, max_relative = 1e-9);
             assert_relative_eq!(
                 naca.camber(x),
                 camber_four(m, p, x),
@@ -102,10 +94,7 @@ fn five_digit_thickness_and_camber_match_the_definition() {
     let table = five_digit_table();
     assert_eq!(table.len(), 9, "all table rows read");
     for designation in ["23012", "23112", "24012", "21015", "25112"] {
-        let d: Vec<u32> = designation
-            .chars()
-            .map(|c| c.to_digit(10).unwrap())
-            .collect();
+        let d: Vec<u32> = designation.chars().map(|c| c.to_digit(10).unwrap()).collect();
         let line = table
             .iter()
             .find(|l| l.p_digit == d[1] && l.reflexed == (d[2] == 1))
@@ -113,12 +102,7 @@ fn five_digit_thickness_and_camber_match_the_definition() {
         let naca = Naca::parse(designation, TrailingEdge::Open).unwrap();
         let t = f64::from(10 * d[3] + d[4]) / 100.0;
         for x in STATIONS {
-            assert_relative_eq!(
-                naca.thickness(x),
-                thickness(t, x),
-                epsilon = 1e-12,
-                max_relative = 1e-9
-            );
+            assert_relative_eq!(naca.thickness(x), thickness(t, x), epsilon = 1e-12, max_relative = 1e-9);
             assert_relative_eq!(
                 naca.camber(x),
                 camber_five(line, d[0], x),
@@ -153,12 +137,7 @@ fn camber_slope_matches_finite_differences() {
         for x in [0.03, 0.1, 0.2, 0.35, 0.6, 0.9] {
             let h = 1e-6;
             let fd = (naca.camber(x + h) - naca.camber(x - h)) / (2.0 * h);
-            assert_relative_eq!(
-                naca.camber_slope(x),
-                fd,
-                epsilon = 1e-8,
-                max_relative = 1e-6
-            );
+            assert_relative_eq!(naca.camber_slope(x), fd, epsilon = 1e-8, max_relative = 1e-6);
         }
     }
 }
@@ -175,11 +154,7 @@ fn generated_points_apply_thickness_normal_to_the_mean_line() {
         let theta = naca.camber_slope(x).atan();
         let upper = airfoil.points[n - 1 - i];
         let lower = airfoil.points[n - 1 + i];
-        assert_relative_eq!(
-            upper.x,
-            x - naca.thickness(x) * theta.sin(),
-            max_relative = 1e-12
-        );
+        assert_relative_eq!(upper.x, x - naca.thickness(x) * theta.sin(), max_relative = 1e-12);
         assert_relative_eq!(
             upper.y,
             naca.camber(x) + naca.thickness(x) * theta.cos(),
@@ -195,16 +170,7 @@ fn generated_points_apply_thickness_normal_to_the_mean_line() {
 
 #[test]
 fn bad_designations_are_errors() {
-    for bad in [
-        "",
-        "12",
-        "0000",
-        "40012",
-        "23212",
-        "2a12",
-        "123456",
-        "NACA 63-212",
-    ] {
+    for bad in ["", "12", "0000", "40012", "23212", "2a12", "123456", "NACA 63-212"] {
         assert!(Naca::parse(bad, TrailingEdge::Open).is_err(), "{bad:?}");
     }
     assert!(Airfoil::naca("0012", 2, TrailingEdge::Open).is_err());

@@ -2,8 +2,8 @@
 
 use approx::assert_relative_eq;
 use flapwright_geom::{
-    compute_distance, io::stl, CollisionShape, Error, FlapSectionSpec, FlapSpec, HingeSpec,
-    MeshResolution, PartKind, SparSpec, WingModel,
+    compute_distance, io::stl, CollisionShape, Error, FlapSectionSpec, FlapSpec, HingeSpec, MeshResolution, PartKind,
+    SparSpec, WingModel,
 };
 use nalgebra::{Isometry3, Point3};
 
@@ -72,11 +72,7 @@ fn stowed_flaps_do_not_overlap_the_wing() {
         }
         let flap = CollisionShape::from_mesh(&flap_part.mesh).unwrap();
         let proximity = compute_distance(&wing, &identity, &flap, &identity).unwrap();
-        assert!(
-            proximity.distance_m > 1e-3,
-            "{}: {proximity:?}",
-            flap_part.name
-        );
+        assert!(proximity.distance_m > 1e-3, "{}: {proximity:?}", flap_part.name);
     }
     // The flap centroid region is outside the wing, a point ahead of the rear spar is inside.
     let inside = model.wing().chord_point_ac(1.0, 0.4).unwrap();
@@ -118,6 +114,7 @@ fn flap(y_inboard_m: f64, y_outboard_m: f64) -> FlapSpec {
             depth_below_chord_fraction: 0.05,
         },
         section: FlapSectionSpec::CutOut,
+        side_gap_m: None,
     }
 }
 
@@ -179,8 +176,8 @@ fn bad_models_are_errors() {
 
 mod random_wings {
     use flapwright_geom::{
-        Airfoil, FlapSectionSpec, FlapSpec, HingeSpec, MeshResolution, PanelSpec, SparSpec,
-        SweepReference, TrailingEdge, WingModel, WingSectionSpec, WingSpec,
+        Airfoil, FlapSectionSpec, FlapSpec, HingeSpec, MeshResolution, PanelSpec, SparSpec, SweepReference,
+        TrailingEdge, WingModel, WingSectionSpec, WingSpec,
     };
     use nalgebra::Point3;
     use proptest::prelude::*;
@@ -221,6 +218,7 @@ mod random_wings {
                 chord_fraction_outboard: chord_fraction * 0.9,
                 hinge: HingeSpec::ChordFraction { chord_fraction: 0.8, depth_below_chord_fraction: 0.05 },
                 section: if own_section { FlapSectionSpec::OwnSection { airfoil: tip } } else { FlapSectionSpec::CutOut },
+                side_gap_m: None,
             };
             let spar = SparSpec { name: "spar".into(), chord_fraction: 0.2, thickness_m: 0.01 * scale * taper, y_start_m: 0.2 * scale, y_end_m: 4.0 * scale };
             let model = WingModel::try_new(spec, vec![flap], vec![spar], None).unwrap();
@@ -244,24 +242,11 @@ fn section_outlines_match_the_meshes_and_keep_the_flap_clear() {
         assert!(outline.points_ac.iter().all(|p| (p.y - 1.5).abs() < 1e-12));
     }
     // In the cut, the flap lies wholly behind the wing's cove wall (along the local chord).
-    let chord_direction = (model.wing().chord_point_ac(1.5, 1.0).unwrap()
-        - model.wing().chord_point_ac(1.5, 0.0).unwrap())
-    .normalize();
+    let chord_direction =
+        (model.wing().chord_point_ac(1.5, 1.0).unwrap() - model.wing().chord_point_ac(1.5, 0.0).unwrap()).normalize();
     let along = |p: &Point3<f64>| p.coords.dot(&chord_direction);
-    let wing_aft = outlines[0]
-        .points_ac
-        .iter()
-        .map(along)
-        .fold(f64::MIN, f64::max);
-    let flap_fore = outlines[1]
-        .points_ac
-        .iter()
-        .map(along)
-        .fold(f64::MAX, f64::min);
-    assert!(
-        flap_fore - wing_aft > 0.009 * 1.75,
-        "gap {}",
-        flap_fore - wing_aft
-    );
+    let wing_aft = outlines[0].points_ac.iter().map(along).fold(f64::MIN, f64::max);
+    let flap_fore = outlines[1].points_ac.iter().map(along).fold(f64::MAX, f64::min);
+    assert!(flap_fore - wing_aft > 0.009 * 1.75, "gap {}", flap_fore - wing_aft);
     assert!(model.compute_section_outlines(7.0, 30).is_err());
 }

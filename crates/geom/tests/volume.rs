@@ -3,19 +3,12 @@
 
 use approx::assert_relative_eq;
 use flapwright_geom::{
-    Airfoil, MeshResolution, PanelSpec, SweepReference, TrailingEdge, WingModel, WingSectionSpec,
-    WingSpec,
+    Airfoil, MeshResolution, PanelSpec, SweepReference, TrailingEdge, WingModel, WingSectionSpec, WingSpec,
 };
 use nalgebra::{Isometry3, Point3, Vector3};
 use proptest::prelude::*;
 
-fn straight_wing(
-    airfoil: Airfoil,
-    chord_m: f64,
-    span_m: f64,
-    twist_deg: f64,
-    panel: PanelSpec,
-) -> WingSpec {
+fn straight_wing(airfoil: Airfoil, chord_m: f64, span_m: f64, twist_deg: f64, panel: PanelSpec) -> WingSpec {
     WingSpec {
         root_leading_edge_ac: Point3::new(0.2, 0.0, 0.1),
         sections: vec![
@@ -98,20 +91,11 @@ fn section_area_converges_at_second_order() {
     let exact = analytic_area(0.12);
     let errors: Vec<f64> = [20, 40, 80, 160]
         .iter()
-        .map(|&n| {
-            (Airfoil::naca("0012", n, TrailingEdge::Closed)
-                .unwrap()
-                .compute_area()
-                - exact)
-                .abs()
-        })
+        .map(|&n| (Airfoil::naca("0012", n, TrailingEdge::Closed).unwrap().compute_area() - exact).abs())
         .collect();
     for w in errors.windows(2) {
         let order = (w[0] / w[1]).log2();
-        assert!(
-            (1.8..2.3).contains(&order),
-            "observed order {order}, errors {errors:?}"
-        );
+        assert!((1.8..2.3).contains(&order), "observed order {order}, errors {errors:?}");
     }
     // And the wing volume follows the section area.
     let volume = wing_volume(

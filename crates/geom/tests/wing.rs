@@ -2,8 +2,7 @@
 
 use approx::assert_relative_eq;
 use flapwright_geom::{
-    Airfoil, Error, PanelSpec, Surface, SweepReference, TrailingEdge, Wing, WingSectionSpec,
-    WingSpec,
+    Airfoil, Error, PanelSpec, Surface, SweepReference, TrailingEdge, Wing, WingSectionSpec, WingSpec,
 };
 use nalgebra::{Point3, Rotation3, Vector3};
 
@@ -52,16 +51,8 @@ fn leading_edge_sweep_and_dihedral_move_the_leading_edge() {
     for y in [0.5, 1.7, 4.5] {
         let le = wing.chord_point_ac(y, 0.0).unwrap();
         let dy = y - 0.5;
-        assert_relative_eq!(
-            le.x,
-            0.3 + dy * 30f64.to_radians().tan(),
-            max_relative = 1e-12
-        );
-        assert_relative_eq!(
-            le.z,
-            -0.1 + dy * (-7f64).to_radians().tan(),
-            max_relative = 1e-12
-        );
+        assert_relative_eq!(le.x, 0.3 + dy * 30f64.to_radians().tan(), max_relative = 1e-12);
+        assert_relative_eq!(le.z, -0.1 + dy * (-7f64).to_radians().tan(), max_relative = 1e-12);
         assert_relative_eq!(le.y, y, max_relative = 1e-15);
     }
 }
@@ -160,16 +151,8 @@ fn kinked_wing_places_the_second_panel_from_the_kink() {
     let kink = wing.section_leading_edges_ac()[1];
     let tip = wing.section_leading_edges_ac()[2];
     assert_relative_eq!(kink.x, 2.5 * 2f64.to_radians().tan(), max_relative = 1e-12);
-    assert_relative_eq!(
-        tip.x - kink.x,
-        3.5 * 15f64.to_radians().tan(),
-        max_relative = 1e-12
-    );
-    assert_relative_eq!(
-        tip.z - kink.z,
-        3.5 * 5f64.to_radians().tan(),
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(tip.x - kink.x, 3.5 * 15f64.to_radians().tan(), max_relative = 1e-12);
+    assert_relative_eq!(tip.z - kink.z, 3.5 * 5f64.to_radians().tan(), max_relative = 1e-12);
     // Blending: half way along the outer panel the section is the mean of its neighbours.
     let section = wing.section_at(4.25).unwrap();
     let a = Airfoil::naca("23012", 50, TrailingEdge::Closed).unwrap();
@@ -182,11 +165,7 @@ fn kinked_wing_places_the_second_panel_from_the_kink() {
         );
     }
     assert_relative_eq!(section.chord_m, 1.25, max_relative = 1e-12);
-    assert_relative_eq!(
-        section.twist_rad,
-        (-1.5f64).to_radians(),
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(section.twist_rad, (-1.5f64).to_radians(), max_relative = 1e-12);
 }
 
 #[test]
@@ -220,14 +199,8 @@ fn invalid_wings_are_errors() {
     assert!(matches!(Wing::try_new(s), Err(Error::PanelCount { .. })));
     let mut s = good.clone();
     s.root_leading_edge_ac.y = 0.0;
-    assert!(matches!(
-        Wing::try_new(s),
-        Err(Error::RootLeadingEdgeMismatch { .. })
-    ));
+    assert!(matches!(Wing::try_new(s), Err(Error::RootLeadingEdgeMismatch { .. })));
     let wing = Wing::try_new(good).unwrap();
-    assert!(matches!(
-        wing.section_at(5.0),
-        Err(Error::OutsideSpan { .. })
-    ));
+    assert!(matches!(wing.section_at(5.0), Err(Error::OutsideSpan { .. })));
     assert!(wing.point_ac(1.0, 1.5, Surface::Upper).is_err());
 }

@@ -26,6 +26,7 @@ pub struct Assembly {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PairResult {
     /// Station of the moving part (absent for the flap).
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub station: Option<String>,
     /// Clearance over the deployment.
     #[serde(flatten)]
@@ -67,11 +68,7 @@ pub fn check_assembly(
         let name = Some(station.station.as_str());
         let links = std::iter::once(&station.screw).chain(&station.flap_rigid);
         for link in links {
-            for fixed in assembly
-                .fixed
-                .iter()
-                .filter(|f| !assembly.skins.contains(&f.name))
-            {
+            for fixed in assembly.fixed.iter().filter(|f| !assembly.skins.contains(&f.name)) {
                 jobs.push((name, link, fixed));
             }
         }
@@ -83,8 +80,7 @@ pub fn check_assembly(
         .into_iter()
         .map(|(station, a, b)| {
             let clearance = sweep_pair(a, b, 0.0, end_rad, settings)?;
-            let passes =
-                clearance.min_clearance_m - clearance.residual_bound_m >= required_clearance_m;
+            let passes = clearance.min_clearance_m - clearance.residual_bound_m >= required_clearance_m;
             Ok(PairResult {
                 station: station.map(str::to_string),
                 clearance,
@@ -96,11 +92,7 @@ pub fn check_assembly(
     Ok(InterferenceReport {
         deployment_range_rad: [0.0, end_rad],
         required_clearance_m,
-        declared_contacts: assembly
-            .stations
-            .iter()
-            .flat_map(|s| s.declared.clone())
-            .collect(),
+        declared_contacts: assembly.stations.iter().flat_map(|s| s.declared.clone()).collect(),
         pairs,
         passes,
     })

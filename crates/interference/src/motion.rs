@@ -21,17 +21,11 @@ impl AboutAxis {
     /// The pose at angle `t` (rad).
     pub fn pose_at(&self, t: f64) -> Isometry3<f64> {
         let p = self.point_ac.coords;
-        Translation3::from(p)
-            * UnitQuaternion::from_axis_angle(&self.direction_ac, t)
-            * Translation3::from(-p)
+        Translation3::from(p) * UnitQuaternion::from_axis_angle(&self.direction_ac, t) * Translation3::from(-p)
     }
 
     /// Largest distance from the axis (m) of `points` (aircraft frame).
-    pub fn radius_of(
-        point_ac: &Point3<f64>,
-        direction_ac: &Unit<Vector3<f64>>,
-        points: &[Point3<f64>],
-    ) -> f64 {
+    pub fn radius_of(point_ac: &Point3<f64>, direction_ac: &Unit<Vector3<f64>>, points: &[Point3<f64>]) -> f64 {
         points
             .iter()
             .map(|q| {

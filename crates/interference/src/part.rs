@@ -58,11 +58,7 @@ impl Part {
     }
 
     /// A moving part.
-    pub fn moving(
-        name: impl Into<String>,
-        shape: CollisionShape,
-        motion: impl Motion + 'static,
-    ) -> Self {
+    pub fn moving(name: impl Into<String>, shape: CollisionShape, motion: impl Motion + 'static) -> Self {
         Self {
             name: name.into(),
             shape,

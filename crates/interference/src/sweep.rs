@@ -126,13 +126,7 @@ struct Sample {
 }
 
 /// Sweeps the clearance between `a` and `b` for deployment `t` in `[start, end]`.
-pub fn sweep_pair(
-    a: &Part,
-    b: &Part,
-    start: f64,
-    end: f64,
-    settings: &SweepSettings,
-) -> Result<PairClearance> {
+pub fn sweep_pair(a: &Part, b: &Part, start: f64, end: f64, settings: &SweepSettings) -> Result<PairClearance> {
     settings.validate()?;
     if !(start.is_finite() && end.is_finite() && start < end) {
         return Err(Error::BadRange { start, end });
@@ -149,18 +143,15 @@ pub fn sweep_pair(
         speed += bound;
     }
     let evaluate = |t: f64| -> Result<Sample> {
-        let proximity = compute_distance(
-            &a.shape,
-            &a.motion.pose_ac(t),
-            &b.shape,
-            &b.motion.pose_ac(t),
-        )
-        .map_err(|source| Error::Query {
-            part_a: a.name.clone(),
-            part_b: b.name.clone(),
-            parameter: t,
-            source: Box::new(source),
-        })?;
+        let proximity =
+            compute_distance(&a.shape, &a.motion.pose_ac(t), &b.shape, &b.motion.pose_ac(t)).map_err(|source| {
+                Error::Query {
+                    part_a: a.name.clone(),
+                    part_b: b.name.clone(),
+                    parameter: t,
+                    source: Box::new(source),
+                }
+            })?;
         Ok(Sample {
             t,
             distance_m: proximity.distance_m,
@@ -181,15 +172,10 @@ pub fn sweep_pair(
     let mut evaluations = n;
     let mut best = samples
         .iter()
-        .min_by(|x, y| {
-            x.distance_m
-                .total_cmp(&y.distance_m)
-                .then(x.t.total_cmp(&y.t))
-        })
+        .min_by(|x, y| x.distance_m.total_cmp(&y.distance_m).then(x.t.total_cmp(&y.t)))
         .map(|s| Sample { ..*s })
         .ok_or(Error::BadRange { start, end })?;
-    let mut heap: BinaryHeap<Interval> =
-        samples.windows(2).map(|w| interval(&w[0], &w[1])).collect();
+    let mut heap: BinaryHeap<Interval> = samples.windows(2).map(|w| interval(&w[0], &w[1])).collect();
 
     if speed > 0.0 {
         while let Some(worst) = heap.peek() {

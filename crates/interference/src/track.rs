@@ -72,8 +72,7 @@ pub fn track_parts(
 ) -> Result<TrackParts> {
     let synthesis = track.synthesis();
     let spec = track.spec();
-    let to_ac =
-        |p: &Point2<f64>| aircraft_from_station.transform_point(&Point3::new(p.x, p.y, 0.0));
+    let to_ac = |p: &Point2<f64>| aircraft_from_station.transform_point(&Point3::new(p.x, p.y, 0.0));
     let query = |source| Error::Query {
         part_a: format!("{station}.parts"),
         part_b: String::new(),
@@ -97,8 +96,7 @@ pub fn track_parts(
         },
     );
     let axis_point = aircraft_from_station.transform_point(&Point3::origin());
-    let axis: Unit<Vector3<f64>> =
-        Unit::new_normalize(aircraft_from_station.transform_vector(&Vector3::z()));
+    let axis: Unit<Vector3<f64>> = Unit::new_normalize(aircraft_from_station.transform_vector(&Vector3::z()));
     let flap_motion = |points: &[Point2<f64>], radius: f64| AboutAxis {
         point_ac: axis_point,
         direction_ac: axis,
@@ -120,8 +118,7 @@ pub fn track_parts(
     ] {
         flap_rigid.push(Part::moving(
             format!("{station}.{name}"),
-            CollisionShape::capsule(to_ac(&pin), to_ac(&d), sizes.fitting_radius_m)
-                .map_err(query)?,
+            CollisionShape::capsule(to_ac(&pin), to_ac(&d), sizes.fitting_radius_m).map_err(query)?,
             flap_motion(&[pin, d], sizes.fitting_radius_m),
         ));
     }
@@ -152,8 +149,7 @@ struct NutMotion {
 
 impl crate::part::Motion for NutMotion {
     fn pose_ac(&self, t: f64) -> Isometry3<f64> {
-        self.rotation.pose_at(t)
-            * Isometry3::translation(self.centre_ac.x, self.centre_ac.y, self.centre_ac.z)
+        self.rotation.pose_at(t) * Isometry3::translation(self.centre_ac.x, self.centre_ac.y, self.centre_ac.z)
     }
 
     fn speed_bound(&self) -> f64 {

@@ -10,12 +10,7 @@ use nalgebra::{Isometry3, Point3, UnitQuaternion, Vector3};
 
 use crate::TurnAboutZ;
 
-fn closest_point_on_triangle(
-    p: &Point3<f64>,
-    a: &Point3<f64>,
-    b: &Point3<f64>,
-    c: &Point3<f64>,
-) -> Point3<f64> {
+fn closest_point_on_triangle(p: &Point3<f64>, a: &Point3<f64>, b: &Point3<f64>, c: &Point3<f64>) -> Point3<f64> {
     let (ab, ac, ap) = (b - a, c - a, p - a);
     let (d1, d2) = (ab.dot(&ap), ac.dot(&ap));
     if d1 <= 0.0 && d2 <= 0.0 {
@@ -102,10 +97,8 @@ fn sweep_clearance_matches_brute_force_on_meshes() {
     // A 0.2 m cube, turned 45 deg so a corner leads, orbiting the z axis at radius 0.7 m,
     // against a slab whose face is at x = 1.0.
     let turn = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_4);
-    let cube_local =
-        box_mesh(Point3::new(-0.1, -0.1, -0.1), Point3::new(0.1, 0.1, 0.1)).transformed(
-            &Isometry3::from_parts(nalgebra::Translation3::new(0.7, 0.0, 0.0), turn),
-        );
+    let cube_local = box_mesh(Point3::new(-0.1, -0.1, -0.1), Point3::new(0.1, 0.1, 0.1))
+        .transformed(&Isometry3::from_parts(nalgebra::Translation3::new(0.7, 0.0, 0.0), turn));
     let slab = box_mesh(Point3::new(1.0, -1.0, -1.0), Point3::new(1.2, 1.0, 1.0));
     let motion = TurnAboutZ { max_radius_m: 0.85 };
     let moving = Part::moving(
@@ -121,11 +114,7 @@ fn sweep_clearance_matches_brute_force_on_meshes() {
     let brute = brute_force_distance(&posed, &slab);
     assert_relative_eq!(result.min_clearance_m, brute, epsilon = 1e-9);
     // The corner at radius 0.7 + 0.1 sqrt(2) reaches x = 0.8414 at t = 0: clearance 0.1586.
-    assert_relative_eq!(
-        result.min_clearance_m,
-        1.0 - (0.7 + 0.1 * 2f64.sqrt()),
-        epsilon = 1e-3
-    );
+    assert_relative_eq!(result.min_clearance_m, 1.0 - (0.7 + 0.1 * 2f64.sqrt()), epsilon = 1e-3);
 
     // Dense brute-force sampling never undercuts the certified lower bound.
     let certified_floor = result.min_clearance_m - result.residual_bound_m;

@@ -15,11 +15,7 @@ fn rod_and_thin_plate() -> (Part, Part) {
     let rod = CollisionShape::capsule(Point3::origin(), Point3::new(2.0, 0.0, 0.0), 0.002).unwrap();
     let plate = CollisionShape::cuboid(Vector3::new(0.05, 0.0005, 0.05)).unwrap();
     let plate_pose_at_angle = Isometry3::from_parts(
-        Translation3::new(
-            1.5 * PLATE_ANGLE_RAD.cos(),
-            1.5 * PLATE_ANGLE_RAD.sin(),
-            0.0,
-        ),
+        Translation3::new(1.5 * PLATE_ANGLE_RAD.cos(), 1.5 * PLATE_ANGLE_RAD.sin(), 0.0),
         UnitQuaternion::from_axis_angle(&Vector3::z_axis(), PLATE_ANGLE_RAD),
     );
     struct Placed(Isometry3<f64>);
@@ -32,13 +28,7 @@ fn rod_and_thin_plate() -> (Part, Part) {
         }
     }
     (
-        Part::moving(
-            "rod",
-            rod,
-            TurnAboutZ {
-                max_radius_m: 2.002,
-            },
-        ),
+        Part::moving("rod", rod, TurnAboutZ { max_radius_m: 2.002 }),
         Part::moving("plate", plate, Placed(plate_pose_at_angle)),
     )
 }
@@ -79,10 +69,7 @@ fn plain_sampling_misses_it_and_says_so() {
         "three samples see a clear rod: {missed:?}"
     );
     // ... but the residual bound admits that a collision cannot be excluded.
-    assert!(
-        missed.residual_bound_m >= missed.min_clearance_m,
-        "{missed:?}"
-    );
+    assert!(missed.residual_bound_m >= missed.min_clearance_m, "{missed:?}");
 }
 
 #[test]

@@ -9,8 +9,8 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec, LoadCase};
 
 fn pose_and_sweep(c: &mut Criterion) {
-    let track = CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study())
-        .expect("thesis case synthesises");
+    let track =
+        CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study()).expect("thesis case synthesises");
     let landing = LoadCase::thesis_landing();
     let input = 0.5 * (track.synthesis().stroke_start_m + track.synthesis().stroke_end_m);
     c.bench_function("pose_with_forces", |b| {

@@ -70,9 +70,7 @@ pub enum Error {
         max_input_m: f64,
     },
     /// The loop cannot close: the triangle A0 B0 A does not exist for this input.
-    #[error(
-        "cannot assemble at input {input_m} m: reachable range is [{min_input_m}, {max_input_m}] m"
-    )]
+    #[error("cannot assemble at input {input_m} m: reachable range is [{min_input_m}, {max_input_m}] m")]
     CannotAssemble {
         /// Requested input (m).
         input_m: f64,
@@ -83,7 +81,9 @@ pub enum Error {
     },
     /// The mechanism is at (or within the tolerance of) a toggle (dead-centre) position:
     /// the transmission angle vanishes and the velocity Jacobian is singular.
-    #[error("toggle at input {input_m} m: transmission angle {transmission_angle_rad} rad is below {tolerance_rad} rad")]
+    #[error(
+        "toggle at input {input_m} m: transmission angle {transmission_angle_rad} rad is below {tolerance_rad} rad"
+    )]
     Toggle {
         /// Input value at which the toggle was met (m).
         input_m: f64,
@@ -166,9 +166,7 @@ pub enum Error {
     },
     /// A URDF name (station, flap, base link or mesh) is empty or uses characters outside
     /// ASCII letters, digits, `_` and `-` (or contains `--`, which XML comments forbid).
-    #[error(
-        "URDF {what} name `{name}` must be non-empty ASCII letters, digits, '_' or '-' (no \"--\")"
-    )]
+    #[error("URDF {what} name `{name}` must be non-empty ASCII letters, digits, '_' or '-' (no \"--\")")]
     InvalidUrdfName {
         /// What the name is for ("station", "flap", "base link", "mesh").
         what: &'static str,

@@ -32,10 +32,9 @@ impl ExternalMoment {
     pub fn at(&self, stroke_fraction: f64) -> f64 {
         match *self {
             Self::Constant(moment) => moment,
-            Self::Linear {
-                stowed_nm,
-                deployed_nm,
-            } => stowed_nm + (deployed_nm - stowed_nm) * stroke_fraction.clamp(0.0, 1.0),
+            Self::Linear { stowed_nm, deployed_nm } => {
+                stowed_nm + (deployed_nm - stowed_nm) * stroke_fraction.clamp(0.0, 1.0)
+            }
         }
     }
 }
@@ -120,8 +119,7 @@ impl CircularArcTrack {
             let a_d = pose.centre_of_mass_d.acceleration_mps2 * spec.flap_mass_kg;
             (
                 a_d,
-                spec.flap_moment_of_inertia_kgm2 * pose.linkage.crank_accel_radps2
-                    + d.coords.perp(&a_d),
+                spec.flap_moment_of_inertia_kgm2 * pose.linkage.crank_accel_radps2 + d.coords.perp(&a_d),
             )
         } else {
             (nalgebra::Vector2::zeros(), 0.0)
@@ -139,9 +137,7 @@ impl CircularArcTrack {
         let velocity_d = pose.centre_of_mass_d.velocity_mps;
         let inertia_power = inertia_force.dot(&velocity_d)
             + if load.include_inertia {
-                spec.flap_moment_of_inertia_kgm2
-                    * pose.linkage.crank_accel_radps2
-                    * pose.linkage.crank_rate_radps
+                spec.flap_moment_of_inertia_kgm2 * pose.linkage.crank_accel_radps2 * pose.linkage.crank_rate_radps
             } else {
                 0.0
             };
@@ -151,9 +147,7 @@ impl CircularArcTrack {
             let virtual_d = nalgebra::Vector2::new(-d.y, d.x) * rate_per_input;
             let inertia_virtual = inertia_force.dot(&virtual_d)
                 + if load.include_inertia {
-                    spec.flap_moment_of_inertia_kgm2
-                        * pose.linkage.crank_accel_radps2
-                        * rate_per_input
+                    spec.flap_moment_of_inertia_kgm2 * pose.linkage.crank_accel_radps2 * rate_per_input
                 } else {
                     0.0
                 };
@@ -187,10 +181,7 @@ impl CircularArcTrack {
         };
         for (quantity, value) in [
             ("actuator_force_n", forces.actuator_force_n),
-            (
-                "actuator_force_virtual_work_n",
-                forces.actuator_force_virtual_work_n,
-            ),
+            ("actuator_force_virtual_work_n", forces.actuator_force_virtual_work_n),
             ("inner_slot_reaction_n", forces.inner_slot_reaction_n),
             ("outer_slot_reaction_n", forces.outer_slot_reaction_n),
             ("raise_torque_nm", forces.screw.raise_torque_nm),

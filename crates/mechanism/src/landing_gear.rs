@@ -114,10 +114,7 @@ impl LandingGearSpec {
     /// (0, π), l3 >= l_{O1O2}, or an end position beyond a toggle).
     pub fn synthesise(&self) -> Result<LandingGearSynthesis> {
         self.validate()?;
-        let mu = guarded_acos(
-            self.crank_length_m / self.pivot_distance_m,
-            "tangent_crank_angle",
-        )?;
+        let mu = guarded_acos(self.crank_length_m / self.pivot_distance_m, "tangent_crank_angle")?;
         self.synthesis_from_start(mu, mu - 0.5 * self.rotation_rad)
     }
 
@@ -127,14 +124,10 @@ impl LandingGearSpec {
     /// (step 8), so it reproduces s34,i and Δs.
     pub fn synthesise_equal_pressure_angles(&self) -> Result<LandingGearSynthesis> {
         self.validate()?;
-        let mu = guarded_acos(
-            self.crank_length_m / self.pivot_distance_m,
-            "tangent_crank_angle",
-        )?;
+        let mu = guarded_acos(self.crank_length_m / self.pivot_distance_m, "tangent_crank_angle")?;
         let theta = self.rotation_rad;
         let (a1, a2) = (self.pivot_distance_m, self.crank_length_m);
-        let excess =
-            |x: f64| angle_at_crank_end(a1, a2, x) + angle_at_crank_end(a1, a2, x + theta) - PI;
+        let excess = |x: f64| angle_at_crank_end(a1, a2, x) + angle_at_crank_end(a1, a2, x + theta) - PI;
         // excess(0) = δ(θ) > 0 and excess(π - θ) = δ(π - θ) - π < 0 for a1 > a2.
         let (mut low, mut high) = (0.0, PI - theta);
         while high - low > BISECTION_TOLERANCE_RAD {

@@ -43,13 +43,7 @@ struct Assembled {
 }
 
 /// Adds `sign * weight · ∂P/∂q` of a body point to a Jacobian row.
-fn add_point(
-    row: &mut [f64],
-    weight: Vector2<f64>,
-    point: &BodyPoint,
-    rotated: Vector2<f64>,
-    sign: f64,
-) {
+fn add_point(row: &mut [f64], weight: Vector2<f64>, point: &BodyPoint, rotated: Vector2<f64>, sign: f64) {
     if point.body == 0 {
         return;
     }
@@ -73,10 +67,7 @@ impl PlanarModel {
             if p.body < bodies {
                 Ok(())
             } else {
-                Err(Error::UnknownBody {
-                    body: p.body,
-                    bodies,
-                })
+                Err(Error::UnknownBody { body: p.body, bodies })
             }
         };
         for joint in &self.joints {
@@ -89,9 +80,7 @@ impl PlanarModel {
                     check(pin)?;
                     check(centre)?;
                 }
-                Joint::PinInStraightSlot {
-                    pin, slot_point, ..
-                } => {
+                Joint::PinInStraightSlot { pin, slot_point, .. } => {
                     check(pin)?;
                     check(slot_point)?;
                 }
@@ -138,24 +127,21 @@ impl PlanarModel {
         // Quadratic-velocity part of a point's acceleration: -R p ω².
         let centripetal = |rotated: Vector2<f64>, rate: f64| -rotated * (rate * rate);
         // n · (P_b - P_a) with n on `guide`'s body: value, Jacobian, γ.
-        let normal_distance =
-            |row: &mut Vec<f64>, a: &BodyPoint, axis: Vector2<f64>, b: &BodyPoint| {
-                let normal = frames.direction(a.body, perp(axis));
-                let (ra, pa, wa) = frames.point(a);
-                let (rb, pb, wb) = frames.point(b);
-                let d = pb - pa;
-                add_point(row, normal, b, rb, 1.0);
-                add_point(row, normal, a, ra, -1.0);
-                if a.body != 0 {
-                    row[3 * (a.body - 1) + 2] += perp(normal).dot(&d);
-                }
-                let d_rate = frames.velocity(b) - frames.velocity(a);
-                let quad = centripetal(rb, wb) - centripetal(ra, wa);
-                let gamma = -(-normal.dot(&d) * wa * wa
-                    + 2.0 * wa * perp(normal).dot(&d_rate)
-                    + normal.dot(&quad));
-                (normal.dot(&d), gamma)
-            };
+        let normal_distance = |row: &mut Vec<f64>, a: &BodyPoint, axis: Vector2<f64>, b: &BodyPoint| {
+            let normal = frames.direction(a.body, perp(axis));
+            let (ra, pa, wa) = frames.point(a);
+            let (rb, pb, wb) = frames.point(b);
+            let d = pb - pa;
+            add_point(row, normal, b, rb, 1.0);
+            add_point(row, normal, a, ra, -1.0);
+            if a.body != 0 {
+                row[3 * (a.body - 1) + 2] += perp(normal).dot(&d);
+            }
+            let d_rate = frames.velocity(b) - frames.velocity(a);
+            let quad = centripetal(rb, wb) - centripetal(ra, wa);
+            let gamma = -(-normal.dot(&d) * wa * wa + 2.0 * wa * perp(normal).dot(&d_rate) + normal.dot(&quad));
+            (normal.dot(&d), gamma)
+        };
         // ½(|P_a - P_b|² - ρ²): value, Jacobian, γ.
         let half_square = |row: &mut Vec<f64>, a: &BodyPoint, b: &BodyPoint, radius: f64| {
             let (ra, pa, wa) = frames.point(a);
@@ -177,11 +163,7 @@ impl PlanarModel {
                     let (rb, pb, wb) = frames.point(b);
                     let gamma = -(centripetal(ra, wa) - centripetal(rb, wb));
                     for axis in 0..2 {
-                        let unit = if axis == 0 {
-                            Vector2::x()
-                        } else {
-                            Vector2::y()
-                        };
+                        let unit = if axis == 0 { Vector2::x() } else { Vector2::y() };
                         add_point(&mut row, unit, a, ra, 1.0);
                         add_point(&mut row, unit, b, rb, -1.0);
                         push(&mut k, pa[axis] - pb[axis], &mut row, 0.0, gamma[axis]);
@@ -213,10 +195,7 @@ impl PlanarModel {
                     push(&mut k, value, &mut row, 0.0, gamma);
                 }
                 Joint::PinInCircularSlot {
-                    pin,
-                    centre,
-                    radius_m,
-                    ..
+                    pin, centre, radius_m, ..
                 } => {
                     let (value, gamma) = half_square(&mut row, pin, centre, *radius_m);
                     push(&mut k, value, &mut row, 0.0, gamma);
@@ -276,13 +255,7 @@ impl PlanarModel {
     ///
     /// Errors: [`Error::NotConverged`] (cannot assemble), [`Error::SingularJacobian`]
     /// (toggle), plus [`PlanarModel::validate`]'s.
-    pub fn solve(
-        &self,
-        input: f64,
-        input_rate: f64,
-        input_accel: f64,
-        guess: &[f64],
-    ) -> Result<PlanarSolution> {
+    pub fn solve(&self, input: f64, input_rate: f64, input_accel: f64, guess: &[f64]) -> Result<PlanarSolution> {
         self.validate()?;
         let n = self.coordinate_count();
         let mut q = DVector::from_column_slice(&guess[..n.min(guess.len())]);
@@ -304,15 +277,16 @@ impl PlanarModel {
                     iterations,
                 });
             }
-            let step = system.jacobian.clone().lu().solve(&system.residual).ok_or(
-                Error::SingularJacobian {
+            let step = system
+                .jacobian
+                .clone()
+                .lu()
+                .solve(&system.residual)
+                .ok_or(Error::SingularJacobian {
                     input,
                     condition_number: f64::INFINITY,
-                },
-            )?;
-            let largest_turn = (0..n / 3)
-                .map(|b| step[3 * b + 2].abs())
-                .fold(0.0, f64::max);
+                })?;
+            let largest_turn = (0..n / 3).map(|b| step[3 * b + 2].abs()).fold(0.0, f64::max);
             let scale = if largest_turn > NEWTON_MAX_ANGLE_STEP_RAD {
                 NEWTON_MAX_ANGLE_STEP_RAD / largest_turn
             } else {
@@ -338,19 +312,15 @@ impl PlanarModel {
             });
         }
         let lu = system.jacobian.clone().lu();
-        let rates = lu
-            .solve(&system.velocity_rhs)
-            .ok_or(Error::SingularJacobian {
-                input,
-                condition_number,
-            })?;
+        let rates = lu.solve(&system.velocity_rhs).ok_or(Error::SingularJacobian {
+            input,
+            condition_number,
+        })?;
         let with_rates = self.assemble(q.as_slice(), rates.as_slice(), drive);
-        let accelerations =
-            lu.solve(&with_rates.acceleration_rhs)
-                .ok_or(Error::SingularJacobian {
-                    input,
-                    condition_number,
-                })?;
+        let accelerations = lu.solve(&with_rates.acceleration_rhs).ok_or(Error::SingularJacobian {
+            input,
+            condition_number,
+        })?;
         Ok(PlanarSolution {
             input,
             coordinates: q.as_slice().to_vec(),
@@ -375,9 +345,7 @@ impl PlanarModel {
     ) -> (Vec<PlanarSolution>, Option<Error>) {
         let mut solutions: Vec<PlanarSolution> = Vec::with_capacity(inputs.len());
         for &input in inputs {
-            let guess = solutions
-                .last()
-                .map_or(stowed, |s| s.coordinates.as_slice());
+            let guess = solutions.last().map_or(stowed, |s| s.coordinates.as_slice());
             match self.solve(input, input_rate, input_accel, guess) {
                 Ok(solution) => solutions.push(solution),
                 Err(error) => return (solutions, Some(error)),

@@ -29,10 +29,7 @@ impl ScrewJack {
     /// Checks lead and radius (finite, > 0), friction (finite, >= 0) and that the screw can
     /// raise at all (2πr - f l > 0, else [`Error::ScrewJammed`]).
     pub fn validate(&self) -> Result<()> {
-        for (name, value) in [
-            ("lead_m", self.lead_m),
-            ("mean_radius_m", self.mean_radius_m),
-        ] {
+        for (name, value) in [("lead_m", self.lead_m), ("mean_radius_m", self.mean_radius_m)] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(Error::InvalidDimension { name, value });
             }
@@ -45,8 +42,7 @@ impl ScrewJack {
                 max: f64::INFINITY,
             });
         }
-        let denominator_m = 2.0 * std::f64::consts::PI * self.mean_radius_m
-            - self.friction_coefficient * self.lead_m;
+        let denominator_m = 2.0 * std::f64::consts::PI * self.mean_radius_m - self.friction_coefficient * self.lead_m;
         if denominator_m <= 0.0 {
             return Err(Error::ScrewJammed { denominator_m });
         }
@@ -101,10 +97,7 @@ mod tests {
         assert!((torques.raise_torque_nm - raise).abs() < 1e-12 * raise);
         assert!((torques.lower_torque_nm - lower).abs() < 1e-12 * lower);
         assert!(screw.is_self_locking());
-        let steep = ScrewJack {
-            lead_m: 0.05,
-            ..screw
-        };
+        let steep = ScrewJack { lead_m: 0.05, ..screw };
         assert!(!steep.is_self_locking());
         assert!(steep.torques(load).lower_torque_nm < 0.0);
     }

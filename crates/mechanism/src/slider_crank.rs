@@ -92,8 +92,7 @@ impl InvertedSliderCrank {
     /// which is equivalent to thesis eqs. 3.1.1/3.1.2 but keeps full accuracy near the
     /// toggles where `acos` loses half the digits.
     pub fn angles(&self, input_m: f64) -> Result<(f64, f64)> {
-        self.triangle(input_m)
-            .map(|(_, crank, slider)| (crank, slider))
+        self.triangle(input_m).map(|(_, crank, slider)| (crank, slider))
     }
 
     /// (4 × area of A0 B0 A (m²), θ12 (rad), θ13 (rad)) at input `input_m` (m).
@@ -108,8 +107,7 @@ impl InvertedSliderCrank {
         if !s.is_finite() || s <= 0.0 {
             return Err(cannot);
         }
-        let four_area =
-            four_times_triangle_area(a1, a2, s, TRIANGLE_ROUNDING_TOLERANCE).ok_or(cannot)?;
+        let four_area = four_times_triangle_area(a1, a2, s, TRIANGLE_ROUNDING_TOLERANCE).ok_or(cannot)?;
         let crank = four_area.atan2(a1 * a1 + a2 * a2 - s * s);
         let at_base = four_area.atan2(a1 * a1 + s * s - a2 * a2);
         Ok((four_area, crank, std::f64::consts::PI - at_base))
@@ -123,12 +121,7 @@ impl InvertedSliderCrank {
     /// α13 = (a2 α12 cos δ + a2 ω12² sin δ - 2 ṡ ω13) / s, with δ = θ13 - θ12.
     /// Errors: [`Error::CannotAssemble`] outside the assembly range, [`Error::Toggle`] when
     /// the transmission angle is below `toggle_tolerance_rad`.
-    pub fn state(
-        &self,
-        input_m: f64,
-        input_speed_mps: f64,
-        input_accel_mps2: f64,
-    ) -> Result<SliderCrankState> {
+    pub fn state(&self, input_m: f64, input_speed_mps: f64, input_accel_mps2: f64) -> Result<SliderCrankState> {
         let (four_area, crank, slider) = self.triangle(input_m)?;
         let (a1, a2, s) = (self.base_distance_m, self.crank_length_m, input_m);
         let delta = slider - crank;
@@ -146,12 +139,10 @@ impl InvertedSliderCrank {
         let rate_per_input = 1.0 / (a2 * sin_d);
         let crank_rate = input_speed_mps * rate_per_input;
         let slider_rate = input_speed_mps * cos_d / (s * sin_d);
-        let crank_accel = (input_accel_mps2 - s * slider_rate * slider_rate
-            + a2 * crank_rate * crank_rate * cos_d)
-            / (a2 * sin_d);
-        let slider_accel = (a2 * crank_accel * cos_d + a2 * crank_rate * crank_rate * sin_d
-            - 2.0 * input_speed_mps * slider_rate)
-            / s;
+        let crank_accel =
+            (input_accel_mps2 - s * slider_rate * slider_rate + a2 * crank_rate * crank_rate * cos_d) / (a2 * sin_d);
+        let slider_accel =
+            (a2 * crank_accel * cos_d + a2 * crank_rate * crank_rate * sin_d - 2.0 * input_speed_mps * slider_rate) / s;
 
         // Loop residual in the frame turned by α0 (its length does not depend on α0).
         let (sin12, cos12) = crank.sin_cos();

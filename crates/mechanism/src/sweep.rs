@@ -146,8 +146,7 @@ impl CircularArcTrack {
             closure_residual_m: pose.diagnostics.closure_residual_m,
             jacobian_condition_number: pose.diagnostics.jacobian_condition_number,
             distance_to_toggle_deg: pose.diagnostics.distance_to_toggle_rad.to_degrees(),
-            force_cross_check_relative: (forces.actuator_force_virtual_work_n - force).abs()
-                / force.abs().max(1.0),
+            force_cross_check_relative: (forces.actuator_force_virtual_work_n - force).abs() / force.abs().max(1.0),
         })
     }
 }

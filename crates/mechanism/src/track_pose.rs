@@ -78,18 +78,14 @@ impl CircularArcTrack {
     pub fn pose(&self, input_m: f64, input_speed_mps: f64, input_accel_mps2: f64) -> Result<Pose> {
         let synthesis = &self.synthesis;
         let slack = SLOT_END_TOLERANCE * synthesis.stroke_end_m;
-        if !(input_m >= synthesis.stroke_start_m - slack
-            && input_m <= synthesis.stroke_end_m + slack)
-        {
+        if !(input_m >= synthesis.stroke_start_m - slack && input_m <= synthesis.stroke_end_m + slack) {
             return Err(Error::OutOfSlot {
                 input_m,
                 min_input_m: synthesis.stroke_start_m,
                 max_input_m: synthesis.stroke_end_m,
             });
         }
-        let linkage = self
-            .linkage
-            .state(input_m, input_speed_mps, input_accel_mps2)?;
+        let linkage = self.linkage.state(input_m, input_speed_mps, input_accel_mps2)?;
         Ok(self.pose_from_state(linkage))
     }
 
@@ -97,9 +93,7 @@ impl CircularArcTrack {
         let spec = &self.spec;
         let synthesis = &self.synthesis;
         // Unit vectors by complex products, to keep trigonometry to two sin_cos calls.
-        let turn = |cos: f64, sin: f64, v: Vector2<f64>| {
-            Vector2::new(cos * v.x - sin * v.y, sin * v.x + cos * v.y)
-        };
+        let turn = |cos: f64, sin: f64, v: Vector2<f64>| Vector2::new(cos * v.x - sin * v.y, sin * v.x + cos * v.y);
         let base = synthesis.screw_mount_m.coords / spec.base_distance_m;
         let (sin12, cos12) = linkage.crank_angle_rad.sin_cos();
         let (sin13, cos13) = linkage.slider_angle_rad.sin_cos();
@@ -111,22 +105,12 @@ impl CircularArcTrack {
         let (rate, accel) = (linkage.crank_rate_radps, linkage.crank_accel_radps2);
         let hinge = Point2::origin();
         let flap_point = |stowed: Point2<f64>| {
-            PointKinematics::on_rotating_body(
-                hinge,
-                turn(cos_defl, sin_defl, stowed.coords),
-                rate,
-                accel,
-            )
+            PointKinematics::on_rotating_body(hinge, turn(cos_defl, sin_defl, stowed.coords), rate, accel)
         };
         Pose {
             linkage,
             deflection_rad: linkage.crank_angle_rad - synthesis.stowed_crank_angle_rad,
-            nut_pivot_a: PointKinematics::on_rotating_body(
-                hinge,
-                crank_dir * spec.crank_length_m,
-                rate,
-                accel,
-            ),
+            nut_pivot_a: PointKinematics::on_rotating_body(hinge, crank_dir * spec.crank_length_m, rate, accel),
             screw_end_b: PointKinematics::on_rotating_body(
                 synthesis.screw_mount_m,
                 screw_dir * spec.screw_length_m,

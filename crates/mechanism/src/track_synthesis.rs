@@ -104,11 +104,7 @@ impl CircularArcTrack {
     /// [`Error::ScrewJammed`]. Red cell 1 (s34 outside the slots) is checked per pose.
     pub fn synthesise(spec: CircularArcTrackSpec) -> Result<Self> {
         validate(&spec)?;
-        let mut linkage = InvertedSliderCrank::try_new(
-            spec.base_distance_m,
-            spec.crank_length_m,
-            spec.base_angle_rad,
-        )?;
+        let mut linkage = InvertedSliderCrank::try_new(spec.base_distance_m, spec.crank_length_m, spec.base_angle_rad)?;
         linkage.toggle_tolerance_rad = spec.toggle_tolerance_rad;
         let (a1, a2) = (spec.base_distance_m, spec.crank_length_m);
         let half = 0.5 * spec.rotation_range_rad;
@@ -141,8 +137,7 @@ impl CircularArcTrack {
         let (crank_i, slider_i) = linkage.angles(stroke_start_m)?;
         let (crank_f, _) = linkage.angles(stroke_end_m)?;
         let alpha0 = spec.base_angle_rad;
-        let polar =
-            |radius: f64, angle: f64| Point2::new(radius * angle.cos(), radius * angle.sin());
+        let polar = |radius: f64, angle: f64| Point2::new(radius * angle.cos(), radius * angle.sin());
         let nut_pivot_stowed_m = polar(a2, alpha0 + crank_i);
         let nut_pivot_deployed_m = polar(a2, alpha0 + crank_f);
 
@@ -308,12 +303,7 @@ fn validate(spec: &CircularArcTrackSpec) -> Result<()> {
     for (name, value, min, max) in ranged {
         // `!(a <= b)` also rejects NaN.
         if !(value >= min && value <= max) || (name == "rotation_range_rad" && value == 0.0) {
-            return Err(Error::ParameterOutOfRange {
-                name,
-                value,
-                min,
-                max,
-            });
+            return Err(Error::ParameterOutOfRange { name, value, min, max });
         }
     }
     if spec.inner_slot_radius_m >= spec.outer_slot_radius_m {

@@ -10,8 +10,7 @@ pub const MM: f64 = 1000.0;
 
 /// The synthesised thesis case study.
 pub fn thesis_track() -> CircularArcTrack {
-    CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study())
-        .expect("thesis case synthesises")
+    CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study()).expect("thesis case synthesises")
 }
 
 /// A validation CSV (comment lines start with '#'): header and rows of raw cell strings.
@@ -48,10 +47,7 @@ impl Table {
 
     /// Rows keyed by the first column.
     pub fn by_key(&self) -> HashMap<String, Vec<String>> {
-        self.rows
-            .iter()
-            .map(|row| (row[0].clone(), row.clone()))
-            .collect()
+        self.rows.iter().map(|row| (row[0].clone(), row.clone())).collect()
     }
 }
 
@@ -65,11 +61,7 @@ pub fn load_table(name: &str) -> Table {
         .lines()
         .map(str::trim)
         .filter(|line| !line.is_empty() && !line.starts_with('#'));
-    let split = |line: &str| {
-        line.split(',')
-            .map(|c| c.trim().to_owned())
-            .collect::<Vec<_>>()
-    };
+    let split = |line: &str| line.split(',').map(|c| c.trim().to_owned()).collect::<Vec<_>>();
     let header = split(lines.next().expect("header"));
     let rows = lines.map(split).collect();
     Table { header, rows }

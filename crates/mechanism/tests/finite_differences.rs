@@ -44,16 +44,14 @@ fn rates_match_finite_differences_at_every_sample() {
     let margin = 1e-3;
     let samples = 41;
     for i in 0..samples {
-        let start = synthesis.stroke_start_m
-            + margin
-            + (synthesis.stroke_m - 2.0 * margin) * i as f64 / (samples - 1) as f64;
+        let start =
+            synthesis.stroke_start_m + margin + (synthesis.stroke_m - 2.0 * margin) * i as f64 / (samples - 1) as f64;
         let poses: Vec<Pose> = (-2..=2)
             .map(|k| pose_at_time(&track, start, k as f64 * STEP_S))
             .collect();
         let centre = &poses[2];
         let l = centre.linkage;
-        let angle =
-            |f: fn(&Pose) -> f64| derivatives([0, 1, 2, 3, 4].map(|k| f(&poses[k])), STEP_S);
+        let angle = |f: fn(&Pose) -> f64| derivatives([0, 1, 2, 3, 4].map(|k| f(&poses[k])), STEP_S);
         let (w12, a12) = angle(|p| p.linkage.crank_angle_rad);
         let (w13, a13) = angle(|p| p.linkage.slider_angle_rad);
         assert_relative_eq!(l.crank_rate_radps, w12, max_relative = 1e-6);
@@ -78,10 +76,7 @@ fn rates_match_finite_differences_at_every_sample() {
                 // passing through zero is still held to 1e-6.
                 let v_scale = kinematics.velocity_mps.norm();
                 let a_scale = kinematics.acceleration_mps2.norm();
-                assert!(
-                    (v.x - velocity).abs() <= 1e-6 * v_scale,
-                    "point {index} axis {axis} v"
-                );
+                assert!((v.x - velocity).abs() <= 1e-6 * v_scale, "point {index} axis {axis} v");
                 assert!(
                     (a.x - acceleration).abs() <= 1e-6 * a_scale,
                     "point {index} axis {axis} a"
@@ -119,11 +114,7 @@ fn slot_reactions_balance_the_flap() {
     let track = thesis_track();
     let spec = *track.spec();
     let weight = spec.flap_mass_kg * spec.gravity_mps2;
-    for sample in track
-        .sweep(25, &LoadCase::thesis_landing())
-        .unwrap()
-        .samples
-    {
+    for sample in track.sweep(25, &LoadCase::thesis_landing()).unwrap().samples {
         let pose = track.pose(sample.input_m, 0.0, 0.0).unwrap();
         let forces = track.forces(&pose, &LoadCase::thesis_landing()).unwrap();
         let radial = |p: Point2<f64>| p.coords.normalize();
@@ -133,18 +124,11 @@ fn slot_reactions_balance_the_flap() {
             + radial(pose.outer_pin_f.position_m) * forces.outer_slot_reaction_n
             + along_screw
             + Vector2::new(0.0, -weight);
-        assert!(
-            total.norm() <= 1e-9 * forces.outer_slot_reaction_n.abs(),
-            "{total}"
-        );
+        assert!(total.norm() <= 1e-9 * forces.outer_slot_reaction_n.abs(), "{total}");
         let a = pose.nut_pivot_a.position_m.coords;
         let d = pose.centre_of_mass_d.position_m.coords;
-        let moment =
-            a.perp(&along_screw) + d.perp(&Vector2::new(0.0, -weight)) - forces.external_moment_nm;
-        assert!(
-            moment.abs() <= 1e-9 * forces.external_moment_nm.abs(),
-            "{moment}"
-        );
+        let moment = a.perp(&along_screw) + d.perp(&Vector2::new(0.0, -weight)) - forces.external_moment_nm;
+        assert!(moment.abs() <= 1e-9 * forces.external_moment_nm.abs(), "{moment}");
     }
 }
 
@@ -185,11 +169,9 @@ fn inertia_balances_by_virtual_work_and_by_newton_euler() {
             + Vector2::new(0.0, -weight);
         assert!((total - a_d).norm() <= 1e-9 * forces.outer_slot_reaction_n.abs());
         let d = pose.centre_of_mass_d.position_m.coords;
-        let moment = pose.nut_pivot_a.position_m.coords.perp(&push)
-            + d.perp(&Vector2::new(0.0, -weight))
+        let moment = pose.nut_pivot_a.position_m.coords.perp(&push) + d.perp(&Vector2::new(0.0, -weight))
             - forces.external_moment_nm;
-        let expected =
-            spec.flap_moment_of_inertia_kgm2 * pose.linkage.crank_accel_radps2 + d.perp(&a_d);
+        let expected = spec.flap_moment_of_inertia_kgm2 * pose.linkage.crank_accel_radps2 + d.perp(&a_d);
         assert!((moment - expected).abs() <= 1e-9 * forces.external_moment_nm.abs());
     }
     // At the thesis's 35 mm/s the inertia changes F_input by far less than 0.1 % (Fig. 31).

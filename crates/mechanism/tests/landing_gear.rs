@@ -21,19 +21,13 @@ fn thesis_equivalent() -> LandingGearSpec {
 fn equal_pressure_angles_reproduce_the_thesis_collinearity_rule() {
     let track = thesis_track();
     let synthesis = track.synthesis();
-    let gear = thesis_equivalent()
-        .synthesise_equal_pressure_angles()
-        .unwrap();
+    let gear = thesis_equivalent().synthesise_equal_pressure_angles().unwrap();
     assert_relative_eq!(
         gear.start_crank_angle_rad,
         synthesis.stowed_crank_angle_rad,
         max_relative = 1e-12
     );
-    assert_relative_eq!(
-        gear.start_input_m,
-        synthesis.stroke_start_m,
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(gear.start_input_m, synthesis.stroke_start_m, max_relative = 1e-12);
     assert_relative_eq!(gear.stroke_m, synthesis.stroke_m, max_relative = 1e-12);
     assert_relative_eq!(
         gear.start_pressure_angle_rad,
@@ -62,22 +56,10 @@ fn closed_form_is_exact_when_the_cylinder_pivot_is_far_away() {
         stroke_time_s: 1.0,
     };
     let gear = spec.synthesise().unwrap();
-    assert_relative_eq!(
-        gear.start_pressure_angle_rad,
-        0.5 * theta,
-        max_relative = 1e-5
-    );
-    assert_relative_eq!(
-        gear.end_pressure_angle_rad,
-        0.5 * theta,
-        max_relative = 1e-5
-    );
+    assert_relative_eq!(gear.start_pressure_angle_rad, 0.5 * theta, max_relative = 1e-5);
+    assert_relative_eq!(gear.end_pressure_angle_rad, 0.5 * theta, max_relative = 1e-5);
     // Stroke = chord projected on the rod: 2 l3 sin(θ/2).
-    assert_relative_eq!(
-        gear.stroke_m,
-        2.0 * (0.5 * theta).sin(),
-        max_relative = 1e-5
-    );
+    assert_relative_eq!(gear.stroke_m, 2.0 * (0.5 * theta).sin(), max_relative = 1e-5);
     // Tangent position: zero pressure angle, rod² = a1² - a2² (eq. 4).
     let mu = gear.tangent_crank_angle_rad;
     assert_relative_eq!(mu.cos(), 1e-6, max_relative = 1e-12);
@@ -88,21 +70,12 @@ fn closed_form_end_lengths_match_the_linkage() {
     // Eqs. 7 and 8 against the thesis slider-crank angles for the same dimensions.
     let spec = thesis_equivalent();
     let gear = spec.synthesise().unwrap();
-    let linkage =
-        InvertedSliderCrank::try_new(spec.pivot_distance_m, spec.crank_length_m, 0.0).unwrap();
+    let linkage = InvertedSliderCrank::try_new(spec.pivot_distance_m, spec.crank_length_m, 0.0).unwrap();
     let (start_crank, _) = linkage.angles(gear.start_input_m).unwrap();
     let (end_crank, _) = linkage.angles(gear.end_input_m).unwrap();
-    assert_relative_eq!(
-        start_crank,
-        gear.start_crank_angle_rad,
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(start_crank, gear.start_crank_angle_rad, max_relative = 1e-12);
     assert_relative_eq!(end_crank, gear.end_crank_angle_rad, max_relative = 1e-12);
-    assert_relative_eq!(
-        end_crank - start_crank,
-        spec.rotation_rad,
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(end_crank - start_crank, spec.rotation_rad, max_relative = 1e-12);
     // For a finite a1 doc 004's symmetric construction does NOT give equal end pressure
     // angles: 27.6° and 14.4° for the thesis dimensions, against 17.5° at both ends for the
     // equal-pressure (thesis collinearity) solution, which has the smaller maximum.
@@ -117,12 +90,7 @@ fn closed_form_end_lengths_match_the_linkage() {
         max_relative = 1e-9
     );
     let equal = spec.synthesise_equal_pressure_angles().unwrap();
-    assert!(
-        equal.start_pressure_angle_rad
-            < gear
-                .start_pressure_angle_rad
-                .max(gear.end_pressure_angle_rad)
-    );
+    assert!(equal.start_pressure_angle_rad < gear.start_pressure_angle_rad.max(gear.end_pressure_angle_rad));
 }
 
 #[test]

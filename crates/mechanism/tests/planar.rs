@@ -23,9 +23,7 @@ fn thesis_as_general_model(track: &CircularArcTrack) -> (PlanarModel, Vec<f64>) 
     let (g, f) = (synthesis.inner_pin_stowed_m, synthesis.outer_pin_stowed_m);
     let screw_angle = spec.base_angle_rad + synthesis.end_slider_angle_rad;
     let model = PlanarModel {
-        bodies: ["ground", "flap", "screw", "nut"]
-            .map(String::from)
-            .to_vec(),
+        bodies: ["ground", "flap", "screw", "nut"].map(String::from).to_vec(),
         joints: vec![
             Joint::Revolute {
                 name: "B0".into(),
@@ -62,17 +60,7 @@ fn thesis_as_general_model(track: &CircularArcTrack) -> (PlanarModel, Vec<f64>) 
             b: point(3, 0.0, 0.0),
         },
     };
-    let stowed = vec![
-        0.0,
-        0.0,
-        0.0,
-        b0.x,
-        b0.y,
-        screw_angle,
-        a.x,
-        a.y,
-        screw_angle,
-    ];
+    let stowed = vec![0.0, 0.0, 0.0, b0.x, b0.y, screw_angle, a.x, a.y, screw_angle];
     (model, stowed)
 }
 
@@ -94,16 +82,8 @@ fn general_model_reproduces_the_closed_form_track() {
         let l = pose.linkage;
         assert!(solution.closure_residual < 1e-12);
         assert!(solution.jacobian_condition_number.is_finite());
-        assert_relative_eq!(
-            solution.coordinates[2],
-            pose.deflection_rad,
-            epsilon = 1e-12
-        );
-        assert_relative_eq!(
-            solution.coordinates[5],
-            base + l.slider_angle_rad,
-            max_relative = 1e-12
-        );
+        assert_relative_eq!(solution.coordinates[2], pose.deflection_rad, epsilon = 1e-12);
+        assert_relative_eq!(solution.coordinates[5], base + l.slider_angle_rad, max_relative = 1e-12);
         assert_relative_eq!(solution.rates[2], l.crank_rate_radps, max_relative = 1e-9);
         assert_relative_eq!(
             solution.rates[5],
@@ -140,8 +120,5 @@ fn general_model_reports_unreachable_input_and_bad_counts() {
     );
     let mut broken = model.clone();
     broken.joints.pop();
-    assert!(matches!(
-        broken.validate(),
-        Err(Error::ConstraintCountMismatch { .. })
-    ));
+    assert!(matches!(broken.validate(), Err(Error::ConstraintCountMismatch { .. })));
 }

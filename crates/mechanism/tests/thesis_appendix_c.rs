@@ -42,14 +42,7 @@ fn kinematics_rows_match_the_spreadsheet() {
         // The printed α12 column is the misprinted eq. 3.3.3: it is reproduced by the
         // misprint, and the corrected value is its negative (s̈34 = 0).
         let delta = l.slider_angle_rad - l.crank_angle_rad;
-        let misprint = alpha12_as_printed(
-            a2,
-            delta,
-            0.035,
-            0.0,
-            l.crank_rate_radps,
-            l.slider_rate_radps,
-        );
+        let misprint = alpha12_as_printed(a2, delta, 0.035, 0.0, l.crank_rate_radps, l.slider_rate_radps);
         check(misprint, "alpha12_printed_radps2");
         check(-l.crank_accel_radps2, "alpha12_printed_radps2");
         rows_checked += 1;
@@ -66,9 +59,7 @@ fn force_rows_match_the_spreadsheet() {
     let mut rows_checked = 0;
     for row in 0..table.rows.len() {
         let index = table.number(row, "row") as usize;
-        let pose = track
-            .pose(spreadsheet_input_m(&track, index), 0.035, 0.0)
-            .unwrap();
+        let pose = track.pose(spreadsheet_input_m(&track, index), 0.035, 0.0).unwrap();
         let c = track.forces(&pose, &cruise).unwrap();
         let l = track.forces(&pose, &landing).unwrap();
         let check = |ours: f64, column: &str| {

@@ -19,10 +19,7 @@ fn table2_inputs_are_the_case_study_constructor() {
         (spec.outer_slot_radius_m * MM, value("b1")),
         (spec.inner_slot_radius_m * MM, value("c1")),
         (spec.outer_slot_start_angle_rad.to_degrees(), value("beta1")),
-        (
-            spec.inner_slot_offset_angle_rad.to_degrees(),
-            value("beta2"),
-        ),
+        (spec.inner_slot_offset_angle_rad.to_degrees(), value("beta2")),
         (spec.rotation_range_rad.to_degrees(), value("beta3")),
         (spec.centre_of_mass_stowed_m.x * MM, value("xD")),
         (spec.centre_of_mass_stowed_m.y * MM, value("yD")),
@@ -50,10 +47,7 @@ fn table2_computed_cells_reproduced_to_printed_digits() {
         ("g2", synthesis.crank_to_centre_of_mass_m * MM),
         ("p2", synthesis.centre_of_mass_to_inner_pin_m * MM),
         ("q2", synthesis.centre_of_mass_to_outer_pin_m * MM),
-        (
-            "alpha2",
-            synthesis.centre_of_mass_offset_angle_rad.to_degrees(),
-        ),
+        ("alpha2", synthesis.centre_of_mass_offset_angle_rad.to_degrees()),
     ];
     let mut checked = 0;
     for (row, cells) in table.rows.iter().enumerate() {
@@ -88,11 +82,7 @@ fn collinearity_gives_same_screw_direction_and_full_rotation_at_both_ends() {
         synthesis.end_slider_angle_rad,
         max_relative = 1e-12
     );
-    assert_relative_eq!(
-        end.deflection_rad,
-        spec.rotation_range_rad,
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(end.deflection_rad, spec.rotation_range_rad, max_relative = 1e-12);
     // Transmission angle at both ends is (π - β3)/2 (step 8).
     let start = track.pose(synthesis.stroke_start_m, 0.0, 0.0).unwrap();
     for pose in [start, end] {
@@ -106,11 +96,7 @@ fn collinearity_gives_same_screw_direction_and_full_rotation_at_both_ends() {
     let theta_d = spec.base_angle_rad
         + synthesis.stowed_crank_angle_rad
         + f64::from(synthesis.centre_of_mass_side) * synthesis.centre_of_mass_offset_angle_rad;
-    assert_relative_eq!(
-        theta_d,
-        synthesis.centre_of_mass_angle_stowed_rad,
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(theta_d, synthesis.centre_of_mass_angle_stowed_rad, max_relative = 1e-12);
     assert_relative_eq!(
         theta_d - synthesis.inner_pin_offset_angle_rad,
         synthesis.inner_pin_angle_stowed_rad,
@@ -139,9 +125,7 @@ fn table3_value(quantity: &str, scenario: &str, statistic: &str) -> f64 {
 #[test]
 fn table3_cruise_reproduced_within_half_percent() {
     let track = thesis_track();
-    let pose = track
-        .pose(track.synthesis().stroke_start_m, 0.035, 0.0)
-        .unwrap();
+    let pose = track.pose(track.synthesis().stroke_start_m, 0.035, 0.0).unwrap();
     let forces = track.forces(&pose, &LoadCase::thesis_cruise()).unwrap();
     let pairs = [
         ("F_input", forces.actuator_force_n),
@@ -151,11 +135,7 @@ fn table3_cruise_reproduced_within_half_percent() {
         ("T_L", forces.screw.lower_torque_nm * MM),
     ];
     for (quantity, ours) in pairs {
-        assert_relative_eq!(
-            ours,
-            table3_value(quantity, "cruise", "stowed"),
-            max_relative = 5e-3
-        );
+        assert_relative_eq!(ours, table3_value(quantity, "cruise", "stowed"), max_relative = 5e-3);
     }
 }
 
@@ -175,15 +155,7 @@ fn table3_landing_min_max_reproduced_within_half_percent() {
         let values: Vec<f64> = sweep.samples.iter().map(column).collect();
         let min = values.iter().copied().fold(f64::INFINITY, f64::min);
         let max = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        assert_relative_eq!(
-            min,
-            table3_value(quantity, "landing", "min"),
-            max_relative = 5e-3
-        );
-        assert_relative_eq!(
-            max,
-            table3_value(quantity, "landing", "max"),
-            max_relative = 5e-3
-        );
+        assert_relative_eq!(min, table3_value(quantity, "landing", "min"), max_relative = 5e-3);
+        assert_relative_eq!(max, table3_value(quantity, "landing", "max"), max_relative = 5e-3);
     }
 }

@@ -79,10 +79,7 @@ fn red_cells_are_typed_errors() {
     ));
     // Red cell 1: s34 < s34,i.
     let track = CircularArcTrack::synthesise(spec).unwrap();
-    assert!(matches!(
-        track.pose(0.07, 0.0, 0.0),
-        Err(Error::OutOfSlot { .. })
-    ));
+    assert!(matches!(track.pose(0.07, 0.0, 0.0), Err(Error::OutOfSlot { .. })));
     // No collinear screw line when B0 is too close to the hinge.
     let close = CircularArcTrackSpec {
         base_distance_m: 0.2,
@@ -112,10 +109,7 @@ fn sweep_serialises_with_the_report_field_names() {
         assert!(sample[key].is_number(), "{key} missing in {sample}");
     }
     for joint in ["A", "B0", "G", "F"] {
-        assert!(
-            sample["joint_reactions_n"][joint].is_number(),
-            "joint {joint}"
-        );
+        assert!(sample["joint_reactions_n"][joint].is_number(), "joint {joint}");
     }
     assert_eq!(json["load_case"], "landing");
     assert!(json["stopped"].is_null());

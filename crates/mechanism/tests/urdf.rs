@@ -10,13 +10,11 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 use approx::assert_relative_eq;
 use flapwright_mechanism::urdf::{
-    build_robot, check_rules, rotation_from_rpy, rpy_from_rotation, to_xml, trajectory, BaseLink,
-    MeshRef, StationMechanism3d, Trajectory, UrdfModel,
+    build_robot, check_rules, rotation_from_rpy, rpy_from_rotation, to_xml, trajectory, BaseLink, MeshRef,
+    StationMechanism3d, Trajectory, UrdfModel,
 };
 use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec, Error};
-use nalgebra::{
-    Isometry3, Matrix3, Point3, Rotation3, Translation3, Unit, UnitQuaternion, Vector3,
-};
+use nalgebra::{Isometry3, Matrix3, Point3, Rotation3, Translation3, Unit, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 use urdf_rs::{JointType, Robot};
 
@@ -68,10 +66,7 @@ fn base_link() -> BaseLink {
     }
 }
 
-fn two_stations<'a>(
-    inner: &'a CircularArcTrack,
-    outer: &'a CircularArcTrack,
-) -> Vec<StationMechanism3d<'a>> {
+fn two_stations<'a>(inner: &'a CircularArcTrack, outer: &'a CircularArcTrack) -> Vec<StationMechanism3d<'a>> {
     vec![
         StationMechanism3d {
             name: "inner".to_owned(),
@@ -157,10 +152,7 @@ fn xml_has_declaration_and_names_the_cut_joints() {
         .iter()
         .map(|c| (c.station.as_str(), c.joint.as_str()))
         .collect();
-    assert_eq!(
-        cuts,
-        [("inner", "A"), ("outer", "A"), ("outer", "flap_attachment")]
-    );
+    assert_eq!(cuts, [("inner", "A"), ("outer", "A"), ("outer", "flap_attachment")]);
     for cut in &model.cut_joints {
         let line = format!(
             "station {}: {} joint {} between links {} and {}",
@@ -209,10 +201,7 @@ fn bad_inputs_are_named_errors() {
     for name in ["", "in ner", "a.b", "a--b"] {
         assert!(matches!(
             error(&[station(name, true, None)]),
-            Error::InvalidUrdfName {
-                what: "station",
-                ..
-            }
+            Error::InvalidUrdfName { what: "station", .. }
         ));
     }
     let mut nan = station("a", true, None);

@@ -81,21 +81,16 @@ pub fn parse_boundary_csv(reader: impl BufRead) -> Result<Vec<BoundaryPoint>> {
         }
         let fields = split_csv(trimmed);
         let field = |i: usize, column: &'static str| {
-            fields
-                .get(i)
-                .map(|s| s.trim())
-                .ok_or(Error::BoundaryCsvField {
-                    line: line_number,
-                    column,
-                })
+            fields.get(i).map(|s| s.trim()).ok_or(Error::BoundaryCsvField {
+                line: line_number,
+                column,
+            })
         };
         let number = |i: usize, column: &'static str| -> Result<f64> {
-            let value: f64 = field(i, column)?
-                .parse()
-                .map_err(|_| Error::BoundaryCsvField {
-                    line: line_number,
-                    column,
-                })?;
+            let value: f64 = field(i, column)?.parse().map_err(|_| Error::BoundaryCsvField {
+                line: line_number,
+                column,
+            })?;
             if value.is_finite() {
                 Ok(value)
             } else {
@@ -115,12 +110,10 @@ pub fn parse_boundary_csv(reader: impl BufRead) -> Result<Vec<BoundaryPoint>> {
         points.push(BoundaryPoint {
             plane: field(0, "plane")?.to_owned(),
             boundary: field(1, "boundary")?.to_owned(),
-            point: field(3, "point")?
-                .parse()
-                .map_err(|_| Error::BoundaryCsvField {
-                    line: line_number,
-                    column: "point",
-                })?,
+            point: field(3, "point")?.parse().map_err(|_| Error::BoundaryCsvField {
+                line: line_number,
+                column: "point",
+            })?,
             r_mm: optional(4, "r_mm")?,
             theta_deg: optional(5, "theta_deg")?,
             theta_rad: optional(6, "theta_rad")?,
@@ -176,10 +169,7 @@ pub fn distance_to_segment_m(point: &Point2<f64>, a: &Point2<f64>, b: &Point2<f6
 /// For every reference point, the distance to the nearest edge of any closed polygon in
 /// `polygons` (station frame, m); returns max and mean, or `None` when there is no point
 /// or no edge to measure against.
-pub fn boundary_deviation(
-    polygons: &[Vec<Point2<f64>>],
-    reference_points: &[Point2<f64>],
-) -> Option<Deviation> {
+pub fn boundary_deviation(polygons: &[Vec<Point2<f64>>], reference_points: &[Point2<f64>]) -> Option<Deviation> {
     let edges: Vec<(Point2<f64>, Point2<f64>)> = polygons
         .iter()
         .filter(|p| p.len() >= 2)

@@ -50,8 +50,7 @@ pub fn setting_from_section_shifts(
     let (shift_in, shift_out) = (shift(inboard)?, shift(outboard)?);
     let span = outboard.hinge_point_ac - inboard.hinge_point_ac;
     let a = deployment.hinge.direction_ac.into_inner();
-    let mut a_new =
-        unit_direction("deployed hinge line", span + shift_out - shift_in)?.into_inner();
+    let mut a_new = unit_direction("deployed hinge line", span + shift_out - shift_in)?.into_inner();
     if a_new.dot(&a) < 0.0 {
         a_new = -a_new;
     }
@@ -62,19 +61,13 @@ pub fn setting_from_section_shifts(
     let spread = (c / amplitude).clamp(-1.0, 1.0).acos();
     let gap_rotation_rad = [phase - spread, phase + spread]
         .into_iter()
-        .map(|t| {
-            (t + std::f64::consts::PI).rem_euclid(2.0 * std::f64::consts::PI) - std::f64::consts::PI
-        })
+        .map(|t| (t + std::f64::consts::PI).rem_euclid(2.0 * std::f64::consts::PI) - std::f64::consts::PI)
         .min_by(|x, y| x.abs().total_cmp(&y.abs()))
         .unwrap_or(0.0);
-    let back =
-        nalgebra::Rotation3::from_axis_angle(&deployment.gap_axis_ac, -gap_rotation_rad) * a_new;
+    let back = nalgebra::Rotation3::from_axis_angle(&deployment.gap_axis_ac, -gap_rotation_rad) * a_new;
     let (a_plane, back_plane) = (a - o * a.dot(&o), back - o * back.dot(&o));
-    let overlap_rotation_rad = o
-        .dot(&a_plane.cross(&back_plane))
-        .atan2(a_plane.dot(&back_plane));
-    let fraction =
-        (deployment.base_point_ac - inboard.hinge_point_ac).dot(&span) / span.norm_squared();
+    let overlap_rotation_rad = o.dot(&a_plane.cross(&back_plane)).atan2(a_plane.dot(&back_plane));
+    let fraction = (deployment.base_point_ac - inboard.hinge_point_ac).dot(&span) / span.norm_squared();
     Ok(FlapSetting {
         deflection_rad,
         overlap_rotation_rad,

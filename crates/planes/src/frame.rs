@@ -5,10 +5,7 @@
 //! plane perpendicular to gravity (aircraft -z) towards the nose (aircraft -x), y completing
 //! a right-handed frame (up-ish).
 
-use nalgebra::{
-    Isometry3, Matrix3, Point2, Point3, Rotation3, Translation3, Unit, UnitQuaternion, Vector2,
-    Vector3,
-};
+use nalgebra::{Isometry3, Matrix3, Point2, Point3, Rotation3, Translation3, Unit, UnitQuaternion, Vector2, Vector3};
 
 use crate::error::{finite, Error, Result};
 
@@ -49,10 +46,7 @@ impl StationFrame {
     /// The normal becomes the station z axis, flipped if needed to point outboard
     /// (aircraft +y); x = normalize(e_z x z) flipped to point towards the nose; y = z x x.
     /// Errors: non-finite input, or a normal within [`VERTICAL_SINE_TOL`] of vertical.
-    pub fn try_from_origin_and_normal(
-        origin_ac: Point3<f64>,
-        normal_ac: &Unit<Vector3<f64>>,
-    ) -> Result<Self> {
+    pub fn try_from_origin_and_normal(origin_ac: Point3<f64>, normal_ac: &Unit<Vector3<f64>>) -> Result<Self> {
         for (quantity, value) in [
             ("station origin x", origin_ac.x),
             ("station origin y", origin_ac.y),
@@ -82,8 +76,7 @@ impl StationFrame {
         // Re-orthogonalise z against x (x is exactly horizontal; z is unit to rounding).
         let y_axis = z_axis.cross(&x_axis).normalize();
         let z_axis = x_axis.cross(&y_axis);
-        let rotation =
-            Rotation3::from_matrix_unchecked(Matrix3::from_columns(&[x_axis, y_axis, z_axis]));
+        let rotation = Rotation3::from_matrix_unchecked(Matrix3::from_columns(&[x_axis, y_axis, z_axis]));
         Ok(Self {
             aircraft_from_station: Isometry3::from_parts(
                 Translation3::from(origin_ac.coords),
@@ -166,11 +159,7 @@ mod tests {
 
     #[test]
     fn unswept_axis_gives_nose_and_up() {
-        let frame = StationFrame::try_from_origin_and_normal(
-            Point3::new(1.0, 2.0, 0.5),
-            &Vector3::y_axis(),
-        )
-        .unwrap();
+        let frame = StationFrame::try_from_origin_and_normal(Point3::new(1.0, 2.0, 0.5), &Vector3::y_axis()).unwrap();
         assert!((frame.x_axis_ac().into_inner() - Vector3::new(-1.0, 0.0, 0.0)).norm() < 1e-15);
         assert!((frame.y_axis_ac().into_inner() - Vector3::new(0.0, 0.0, 1.0)).norm() < 1e-15);
         assert!((frame.z_axis_ac().into_inner() - Vector3::new(0.0, 1.0, 0.0)).norm() < 1e-15);
@@ -178,8 +167,7 @@ mod tests {
 
     #[test]
     fn vertical_normal_is_rejected() {
-        let err = StationFrame::try_from_origin_and_normal(Point3::origin(), &Vector3::z_axis())
-            .unwrap_err();
+        let err = StationFrame::try_from_origin_and_normal(Point3::origin(), &Vector3::z_axis()).unwrap_err();
         assert!(matches!(err, Error::NormalAlongGravity { .. }));
     }
 }

@@ -72,9 +72,7 @@ pub mod skew;
 pub mod station;
 pub mod thesis;
 
-pub use boundary::{
-    boundary_deviation, distance_to_segment_m, parse_boundary_csv, BoundaryPoint, Deviation,
-};
+pub use boundary::{boundary_deviation, distance_to_segment_m, parse_boundary_csv, BoundaryPoint, Deviation};
 pub use conical::{setting_from_section_shifts, SectionShift};
 pub use error::{Error, Result};
 pub use frame::{StationFrame, StationPoint, DIRECTION_TOL, VERTICAL_SINE_TOL};
@@ -83,11 +81,10 @@ pub use plane::{unit_direction, HingeAxis, Plane, AXIS_PLANE_COSINE_TOL};
 pub use report::{FrameReport, SectionReport, StationReport};
 pub use section::{cut_mesh, signed_area_m2, Section, SECTION_MERGE_TOL_M};
 pub use skew::{
-    angle_to_streamwise_plane_rad, dihedral_up_vector_ac, skew_angle_rad, skew_direction_ac,
-    skewed_plane_normal_ac,
+    angle_to_streamwise_plane_rad, dihedral_up_vector_ac, skew_angle_rad, skew_direction_ac, skewed_plane_normal_ac,
 };
 pub use station::{
-    compute_station, out_of_plane_residual_m, PlaneConstruction, Station,
-    PURE_ROTATION_ANGLE_TOL_RAD, PURE_ROTATION_LENGTH_TOL_M,
+    compute_station, out_of_plane_residual_m, PlaneConstruction, Station, PURE_ROTATION_ANGLE_TOL_RAD,
+    PURE_ROTATION_LENGTH_TOL_M,
 };
 pub use thesis::{thesis_stations, ThesisStations};

@@ -40,9 +40,7 @@ impl FlapSetting {
             deflection_rad: mix(self.deflection_rad, other.deflection_rad),
             overlap_rotation_rad: mix(self.overlap_rotation_rad, other.overlap_rotation_rad),
             gap_rotation_rad: mix(self.gap_rotation_rad, other.gap_rotation_rad),
-            base_translation_ac: self
-                .base_translation_ac
-                .lerp(&other.base_translation_ac, fraction),
+            base_translation_ac: self.base_translation_ac.lerp(&other.base_translation_ac, fraction),
         }
     }
 }
@@ -72,9 +70,7 @@ impl FlapDeployment {
             * UnitQuaternion::from_axis_angle(&self.overlap_axis_ac, setting.overlap_rotation_rad)
             * UnitQuaternion::from_axis_angle(&self.hinge.direction_ac, setting.deflection_rad);
         let base = self.base_point_ac.coords;
-        Translation3::from(base + setting.base_translation_ac)
-            * rotation
-            * Translation3::from(-base)
+        Translation3::from(base + setting.base_translation_ac) * rotation * Translation3::from(-base)
     }
 
     /// Pose at `deployment` in [0, 1] along the settings (equally spaced, parameters
@@ -95,8 +91,7 @@ impl FlapDeployment {
         }
         let position = deployment.clamp(0.0, 1.0) * (count - 1) as f64;
         let index = (position.floor() as usize).min(count - 2);
-        let setting =
-            self.settings[index].interpolated(&self.settings[index + 1], position - index as f64);
+        let setting = self.settings[index].interpolated(&self.settings[index + 1], position - index as f64);
         Ok(self.pose_ac(&setting))
     }
 

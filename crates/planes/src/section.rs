@@ -76,11 +76,7 @@ pub fn cut_mesh(mesh: &TriMesh, frame: &StationFrame, part_name: &str) -> Result
             nalgebra::Point3::new(p.in_plane_m.x, p.in_plane_m.y, p.normal_offset_m)
         })
         .collect();
-    if let Some(value) = points
-        .iter()
-        .flat_map(|p| [p.x, p.y, p.z])
-        .find(|v| !v.is_finite())
-    {
+    if let Some(value) = points.iter().flat_map(|p| [p.x, p.y, p.z]).find(|v| !v.is_finite()) {
         return Err(Error::NotFinite {
             quantity: "mesh vertex coordinate (station frame)",
             value,
@@ -160,9 +156,7 @@ pub fn cut_mesh(mesh: &TriMesh, frame: &StationFrame, part_name: &str) -> Result
                 }
             }
         }
-        while polygon.len() > 1
-            && (polygon[0] - polygon[polygon.len() - 1]).norm() <= SECTION_MERGE_TOL_M
-        {
+        while polygon.len() > 1 && (polygon[0] - polygon[polygon.len() - 1]).norm() <= SECTION_MERGE_TOL_M {
             polygon.pop();
         }
         if polygon.len() >= 3 {
@@ -218,19 +212,12 @@ mod tests {
             .iter()
             .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
             .collect();
-        TriMesh {
-            vertices,
-            triangles,
-        }
+        TriMesh { vertices, triangles }
     }
 
     #[test]
     fn cube_cut_is_a_counter_clockwise_unit_square() {
-        let frame = StationFrame::try_from_origin_and_normal(
-            Point3::new(0.5, 0.3, 0.5),
-            &Vector3::y_axis(),
-        )
-        .unwrap();
+        let frame = StationFrame::try_from_origin_and_normal(Point3::new(0.5, 0.3, 0.5), &Vector3::y_axis()).unwrap();
         let section = cut_mesh(&cube(), &frame, "cube").unwrap();
         assert_eq!(section.polygons.len(), 1);
         // 8 points: the crossings of the face diagonals lie on the sides.
@@ -241,19 +228,11 @@ mod tests {
     #[test]
     fn plane_through_a_face_of_vertices_still_closes() {
         // Plane y = 0 contains the four vertices of a face: all count as "above".
-        let frame = StationFrame::try_from_origin_and_normal(
-            Point3::new(0.5, 0.0, 0.5),
-            &Vector3::y_axis(),
-        )
-        .unwrap();
+        let frame = StationFrame::try_from_origin_and_normal(Point3::new(0.5, 0.0, 0.5), &Vector3::y_axis()).unwrap();
         let section = cut_mesh(&cube(), &frame, "cube").unwrap();
         assert!(section.polygons.is_empty());
         // Plane y = 1 through the far face: the cut is the face itself.
-        let frame = StationFrame::try_from_origin_and_normal(
-            Point3::new(0.5, 1.0, 0.5),
-            &Vector3::y_axis(),
-        )
-        .unwrap();
+        let frame = StationFrame::try_from_origin_and_normal(Point3::new(0.5, 1.0, 0.5), &Vector3::y_axis()).unwrap();
         let section = cut_mesh(&cube(), &frame, "cube").unwrap();
         assert_eq!(section.polygons.len(), 1);
         assert!((signed_area_m2(&section.polygons[0]) - 1.0).abs() < 1e-14);

@@ -19,14 +19,8 @@ pub fn dihedral_up_vector_ac(dihedral_rad: f64) -> Unit<Vector3<f64>> {
 
 /// Skew direction of a forward attachment point: unit vector from its stowed to its
 /// deployed position (`003` Fig. 4a), aircraft frame. Errors when it does not move.
-pub fn skew_direction_ac(
-    stowed_ac: &Point3<f64>,
-    deployed_ac: &Point3<f64>,
-) -> Result<Unit<Vector3<f64>>> {
-    unit_direction(
-        "skew direction (attachment displacement, m)",
-        deployed_ac - stowed_ac,
-    )
+pub fn skew_direction_ac(stowed_ac: &Point3<f64>, deployed_ac: &Point3<f64>) -> Result<Unit<Vector3<f64>>> {
+    unit_direction("skew direction (attachment displacement, m)", deployed_ac - stowed_ac)
 }
 
 /// Mechanism plane normal = skew direction x dihedral vector (`003` Fig. 4b), oriented
@@ -35,10 +29,7 @@ pub fn skewed_plane_normal_ac(
     skew_direction: &Unit<Vector3<f64>>,
     dihedral_up: &Unit<Vector3<f64>>,
 ) -> Result<Unit<Vector3<f64>>> {
-    let normal = unit_direction(
-        "skew direction x dihedral vector",
-        skew_direction.cross(dihedral_up),
-    )?;
+    let normal = unit_direction("skew direction x dihedral vector", skew_direction.cross(dihedral_up))?;
     Ok(if normal.y < 0.0 { -normal } else { normal })
 }
 

@@ -6,9 +6,7 @@ use nalgebra::{Isometry3, Point3};
 use crate::error::Result;
 use crate::frame::StationFrame;
 use crate::motion::FlapDeployment;
-use crate::skew::{
-    dihedral_up_vector_ac, skew_angle_rad, skew_direction_ac, skewed_plane_normal_ac,
-};
+use crate::skew::{dihedral_up_vector_ac, skew_angle_rad, skew_direction_ac, skewed_plane_normal_ac};
 
 /// Conical rotations below this count as none when choosing the default construction, rad.
 pub const PURE_ROTATION_ANGLE_TOL_RAD: f64 = 1e-12;
@@ -56,10 +54,7 @@ impl Station {
     /// Largest out-of-plane motion of any attachment point over the deployment, m
     /// (0 when there are no attachment points).
     pub fn max_out_of_plane_residual_m(&self) -> f64 {
-        self.attachment_residuals_m
-            .iter()
-            .copied()
-            .fold(0.0, f64::max)
+        self.attachment_residuals_m.iter().copied().fold(0.0, f64::max)
     }
 }
 

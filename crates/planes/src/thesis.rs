@@ -45,9 +45,5 @@ pub fn thesis_stations(
             )
         })
         .collect::<Result<Vec<_>>>()?;
-    Ok(ThesisStations {
-        p_ac,
-        a0_ac,
-        frames,
-    })
+    Ok(ThesisStations { p_ac, a0_ac, frames })
 }

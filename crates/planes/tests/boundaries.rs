@@ -36,10 +36,7 @@ fn every_row_is_polar_cartesian_consistent() {
                 assert!((theta - theta_rad).abs() < 1e-8, "{row:?}");
             }
         } else if let Some(theta_rad) = row.theta_rad {
-            assert!(
-                (row.y_mm.atan2(row.x_mm) - theta_rad).abs() < 1e-8,
-                "{row:?}"
-            );
+            assert!((row.y_mm.atan2(row.x_mm) - theta_rad).abs() < 1e-8, "{row:?}");
         }
         checked += 1;
     }
@@ -68,44 +65,23 @@ fn free_space_chains_and_the_flap_close() {
     for (plane, chain) in [
         (
             "outer",
-            [
-                "spar-front",
-                "wing-top",
-                "flap-top",
-                "flap-front",
-                "wing-below-spar",
-            ],
+            ["spar-front", "wing-top", "flap-top", "flap-front", "wing-below-spar"],
         ),
         (
             "inner",
-            [
-                "spar-front",
-                "wing-top",
-                "flap-top",
-                "flap-front",
-                "wing-below-spar",
-            ],
+            ["spar-front", "wing-top", "flap-top", "flap-front", "wing-below-spar"],
         ),
     ] {
-        let parts: Vec<Vec<Point2<f64>>> = chain
-            .iter()
-            .map(|name| boundary(&rows, plane, name))
-            .collect();
+        let parts: Vec<Vec<Point2<f64>>> = chain.iter().map(|name| boundary(&rows, plane, name)).collect();
         for part in &parts {
             assert!(part.len() >= 2, "{plane}");
         }
     }
     // Outer plane: each boundary starts where the previous one ends; the chain closes.
-    let outer: Vec<Vec<Point2<f64>>> = [
-        "spar-front",
-        "wing-top",
-        "flap-top",
-        "flap-front",
-        "wing-below-spar",
-    ]
-    .iter()
-    .map(|n| boundary(&rows, "outer", n))
-    .collect();
+    let outer: Vec<Vec<Point2<f64>>> = ["spar-front", "wing-top", "flap-top", "flap-front", "wing-below-spar"]
+        .iter()
+        .map(|n| boundary(&rows, "outer", n))
+        .collect();
     for k in 0..outer.len() {
         let end = outer[k].last().unwrap();
         let start = outer[(k + 1) % outer.len()][0];

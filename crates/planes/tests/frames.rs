@@ -58,32 +58,18 @@ proptest! {
 fn swept_axis_frame_matches_hand_calculation() {
     // Hinge swept back 30 deg, no dihedral: z = (sin30, cos30, 0), x = (-cos30, sin30, 0), y = e_z.
     let sweep = 30f64.to_radians();
-    let axis = HingeAxis::try_new(
-        Point3::new(2.0, 3.0, 0.1),
-        Vector3::new(sweep.sin(), sweep.cos(), 0.0),
-    )
-    .unwrap();
-    let frame =
-        StationFrame::try_from_origin_and_normal(axis.point_ac, &axis.direction_ac).unwrap();
+    let axis = HingeAxis::try_new(Point3::new(2.0, 3.0, 0.1), Vector3::new(sweep.sin(), sweep.cos(), 0.0)).unwrap();
+    let frame = StationFrame::try_from_origin_and_normal(axis.point_ac, &axis.direction_ac).unwrap();
     assert_relative_eq!(
         frame.x_axis_ac().into_inner(),
         Vector3::new(-sweep.cos(), sweep.sin(), 0.0),
         epsilon = 1e-15
     );
-    assert_relative_eq!(
-        frame.y_axis_ac().into_inner(),
-        Vector3::z(),
-        epsilon = 1e-15
-    );
+    assert_relative_eq!(frame.y_axis_ac().into_inner(), Vector3::z(), epsilon = 1e-15);
 }
 
 #[test]
 fn inboard_pointing_normal_is_flipped_outboard() {
-    let frame =
-        StationFrame::try_from_origin_and_normal(Point3::origin(), &-Vector3::y_axis()).unwrap();
-    assert_relative_eq!(
-        frame.z_axis_ac().into_inner(),
-        Vector3::y(),
-        epsilon = 1e-15
-    );
+    let frame = StationFrame::try_from_origin_and_normal(Point3::origin(), &-Vector3::y_axis()).unwrap();
+    assert_relative_eq!(frame.z_axis_ac().into_inner(), Vector3::y(), epsilon = 1e-15);
 }

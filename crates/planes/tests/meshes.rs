@@ -26,12 +26,7 @@ pub fn prism(
     for ring in 0..(stations.len() as u32 - 1) {
         for i in 0..n {
             let j = (i + 1) % n;
-            let (a0, b0, a1, b1) = (
-                ring * n + i,
-                ring * n + j,
-                (ring + 1) * n + i,
-                (ring + 1) * n + j,
-            );
+            let (a0, b0, a1, b1) = (ring * n + i, ring * n + j, (ring + 1) * n + i, (ring + 1) * n + j);
             triangles.push([a0, b0, b1]);
             triangles.push([a0, b1, a1]);
         }
@@ -49,10 +44,7 @@ pub fn prism(
         triangles.push([first, j, i]);
         triangles.push([first + 1, last_ring + i, last_ring + j]);
     }
-    TriMesh {
-        vertices,
-        triangles,
-    }
+    TriMesh { vertices, triangles }
 }
 
 /// Circle of `segments` points, counter-clockwise, radius `radius_m`.
@@ -68,17 +60,11 @@ pub fn circle(radius_m: f64, segments: usize) -> Vec<Point2<f64>> {
 /// NACA 4-digit airfoil (closed trailing edge, cosine spacing), unit chord, x from the
 /// leading edge (aft), starting at the trailing edge over the lower surface: clockwise in
 /// (x aft, y up), counter-clockwise once x is flipped to point at the nose.
-pub fn naca4(
-    max_camber: f64,
-    camber_position: f64,
-    thickness: f64,
-    points_per_side: usize,
-) -> Vec<Point2<f64>> {
+pub fn naca4(max_camber: f64, camber_position: f64, thickness: f64, points_per_side: usize) -> Vec<Point2<f64>> {
     let surface = |x: f64, upper: bool| {
         let t = 5.0
             * thickness
-            * (0.2969 * x.sqrt() - 0.1260 * x - 0.3516 * x * x + 0.2843 * x.powi(3)
-                - 0.1036 * x.powi(4));
+            * (0.2969 * x.sqrt() - 0.1260 * x - 0.3516 * x * x + 0.2843 * x.powi(3) - 0.1036 * x.powi(4));
         let (yc, slope) = if max_camber == 0.0 {
             (0.0, 0.0)
         } else if x < camber_position {

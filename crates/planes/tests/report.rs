@@ -1,16 +1,13 @@
 //! The per-station report record serialises with the documented keys.
 
-use flapwright_planes::{
-    compute_station, cut_mesh, FlapDeployment, FlapSetting, HingeAxis, StationReport,
-};
+use flapwright_planes::{compute_station, cut_mesh, FlapDeployment, FlapSetting, HingeAxis, StationReport};
 use nalgebra::{Point3, Vector3};
 
 use crate::meshes::{circle, prism};
 
 #[test]
 fn station_report_has_frame_skew_residual_and_sections() {
-    let hinge =
-        HingeAxis::try_new(Point3::new(3.0, 1.0, 0.2), Vector3::new(0.3, 1.0, 0.05)).unwrap();
+    let hinge = HingeAxis::try_new(Point3::new(3.0, 1.0, 0.2), Vector3::new(0.3, 1.0, 0.05)).unwrap();
     let deployment = FlapDeployment {
         hinge,
         base_point_ac: hinge.point_ac,
@@ -51,11 +48,5 @@ fn station_report_has_frame_skew_residual_and_sections() {
     assert!(json["out_of_plane_residual_m"].as_f64().unwrap() < 1e-12);
     assert_eq!(json["construction"], "perpendicular-to-axis");
     assert_eq!(json["sections"][0]["part_name"], "torque-tube");
-    assert_eq!(
-        json["sections"][0]["polygons"][0][0]
-            .as_array()
-            .unwrap()
-            .len(),
-        2
-    );
+    assert_eq!(json["sections"][0]["polygons"][0][0].as_array().unwrap().len(), 2);
 }

@@ -24,8 +24,7 @@ fn oblique_cut_of_a_tube_is_the_expected_ellipse() {
     for angle_deg in [0.0f64, 20.0, 45.0, 60.0] {
         let angle = angle_deg.to_radians();
         let normal = Unit::new_normalize(Vector3::new(angle.sin(), angle.cos(), 0.0));
-        let frame =
-            StationFrame::try_from_origin_and_normal(Point3::new(3.0, 2.0, 0.2), &normal).unwrap();
+        let frame = StationFrame::try_from_origin_and_normal(Point3::new(3.0, 2.0, 0.2), &normal).unwrap();
         let section = cut_mesh(&tube, &frame, "torque-tube").unwrap();
         assert_eq!(section.polygons.len(), 1);
         let polygon = &section.polygons[0];
@@ -40,17 +39,10 @@ fn oblique_cut_of_a_tube_is_the_expected_ellipse() {
         for r in &rho {
             assert!(*r > floor - 1e-12 && *r < 1.0 + 1e-12, "rho {r}");
         }
-        assert_relative_eq!(
-            rho.iter().copied().fold(0.0, f64::max),
-            1.0,
-            epsilon = 1e-12
-        );
+        assert_relative_eq!(rho.iter().copied().fold(0.0, f64::max), 1.0, epsilon = 1e-12);
         // Area of the inscribed 256-gon mapped to the ellipse: (n/2) sin(2π/n) r (r/cos).
-        let expected_area = 0.5
-            * segments as f64
-            * (2.0 * std::f64::consts::PI / segments as f64).sin()
-            * radius
-            * semi_x;
+        let expected_area =
+            0.5 * segments as f64 * (2.0 * std::f64::consts::PI / segments as f64).sin() * radius * semi_x;
         assert_relative_eq!(signed_area_m2(polygon), expected_area, max_relative = 1e-9);
         let max_x = polygon.iter().map(|p| p.x.abs()).fold(0.0, f64::max);
         assert_relative_eq!(max_x, semi_x, max_relative = 1e-12);
@@ -89,11 +81,7 @@ fn perpendicular_cut_of_an_airfoil_prism_reproduces_the_polygon() {
         let expected_polygon = vec![expected.clone()];
         let to_cut = boundary_deviation(&section.polygons, &expected).unwrap();
         let to_expected = boundary_deviation(&expected_polygon, cut).unwrap();
-        assert!(
-            to_cut.max_m < 1e-12,
-            "airfoil points off the cut by {} m",
-            to_cut.max_m
-        );
+        assert!(to_cut.max_m < 1e-12, "airfoil points off the cut by {} m", to_cut.max_m);
         assert!(
             to_expected.max_m < 1e-12,
             "cut points off the airfoil by {} m",
@@ -121,9 +109,7 @@ fn cut_missing_the_mesh_is_empty_and_bad_indices_are_errors() {
         Vector3::y(),
         &[0.0, 1.0],
     );
-    let frame =
-        StationFrame::try_from_origin_and_normal(Point3::new(0.0, 5.0, 0.0), &Vector3::y_axis())
-            .unwrap();
+    let frame = StationFrame::try_from_origin_and_normal(Point3::new(0.0, 5.0, 0.0), &Vector3::y_axis()).unwrap();
     assert!(cut_mesh(&tube, &frame, "tube").unwrap().polygons.is_empty());
     let mut broken = tube.clone();
     broken.triangles.push([0, 1, 999]);
@@ -131,8 +117,6 @@ fn cut_missing_the_mesh_is_empty_and_bad_indices_are_errors() {
     // An open mesh (one side triangle removed) does not close where the plane crosses it.
     let mut open = tube;
     open.triangles.remove(0);
-    let frame =
-        StationFrame::try_from_origin_and_normal(Point3::new(0.0, 0.5, 0.0), &Vector3::y_axis())
-            .unwrap();
+    let frame = StationFrame::try_from_origin_and_normal(Point3::new(0.0, 0.5, 0.0), &Vector3::y_axis()).unwrap();
     assert!(cut_mesh(&open, &frame, "tube").is_err());
 }

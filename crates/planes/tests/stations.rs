@@ -2,19 +2,15 @@
 
 use approx::assert_relative_eq;
 use flapwright_planes::{
-    compute_station, dihedral_up_vector_ac, skew_angle_rad, thesis_stations, FlapDeployment,
-    FlapSetting, HingeAxis, Plane, PlaneConstruction,
+    compute_station, dihedral_up_vector_ac, skew_angle_rad, thesis_stations, FlapDeployment, FlapSetting, HingeAxis,
+    Plane, PlaneConstruction,
 };
 use nalgebra::{Point3, Unit, Vector3};
 
 /// Hinge line of a swept, dihedralled wing: sweep 25 deg, dihedral 5 deg.
 fn swept_hinge() -> HingeAxis {
     let (sweep, dihedral) = (25f64.to_radians(), 5f64.to_radians());
-    let direction = Vector3::new(
-        sweep.sin(),
-        sweep.cos() * dihedral.cos(),
-        sweep.cos() * dihedral.sin(),
-    );
+    let direction = Vector3::new(sweep.sin(), sweep.cos() * dihedral.cos(), sweep.cos() * dihedral.sin());
     HingeAxis::try_new(Point3::new(3.1, 1.2, 0.35), direction).unwrap()
 }
 
@@ -67,20 +63,11 @@ fn pure_rotation_residual_is_below_1e_12_m() {
     }
     // The plane is perpendicular to the hinge: its skew is the hinge sweep seen in planform.
     let hinge = deployment.hinge.direction_ac;
-    assert_relative_eq!(
-        station.skew_angle_rad,
-        hinge.x.atan2(hinge.y),
-        epsilon = 1e-14
-    );
+    assert_relative_eq!(station.skew_angle_rad, hinge.x.atan2(hinge.y), epsilon = 1e-14);
 }
 
 /// Independent construction: Rodrigues rotation of points written out by hand.
-fn rotate_about(
-    point: Point3<f64>,
-    centre: Point3<f64>,
-    axis: Vector3<f64>,
-    angle: f64,
-) -> Point3<f64> {
+fn rotate_about(point: Point3<f64>, centre: Point3<f64>, axis: Vector3<f64>, angle: f64) -> Point3<f64> {
     let k = axis / axis.norm();
     let v = point - centre;
     centre + v * angle.cos() + k.cross(&v) * angle.sin() + k * k.dot(&v) * (1.0 - angle.cos())
@@ -108,16 +95,8 @@ fn conical_skew_angle_matches_independent_construction() {
     let dihedral = 5f64.to_radians();
     for distance_m in [0.0, 1.0, 2.5] {
         let forward_attachment = deployment.hinge.point_at(distance_m);
-        let station = compute_station(
-            "s",
-            &deployment,
-            forward_attachment,
-            &flap_points(),
-            None,
-            dihedral,
-            51,
-        )
-        .unwrap();
+        let station =
+            compute_station("s", &deployment, forward_attachment, &flap_points(), None, dihedral, 51).unwrap();
 
         // Rotate the hinge line (two points on it) by δ, θ_o, θ_g about the base point, translate.
         let base = deployment.base_point_ac;
@@ -171,8 +150,7 @@ fn skew_angle_of_a_streamwise_plane_is_zero() {
 fn thesis_planes_follow_steps_1_to_3() {
     let axis = swept_hinge();
     // Inner flap side plane: streamwise-ish, not perpendicular to the axis (step 1).
-    let inner_side =
-        Plane::try_new(Point3::new(3.0, 1.5, 0.0), Vector3::new(0.05, 1.0, 0.1)).unwrap();
+    let inner_side = Plane::try_new(Point3::new(3.0, 1.5, 0.0), Vector3::new(0.05, 1.0, 0.1)).unwrap();
     let (d1, d2) = (0.25, 1.6);
     let stations = thesis_stations(&axis, &inner_side, d1, &[0.0, -d2]).unwrap();
     // P is on the plane and on the axis.
@@ -190,11 +168,7 @@ fn thesis_planes_follow_steps_1_to_3() {
         axis.direction_ac.into_inner(),
         epsilon = 1e-15
     );
-    assert_relative_eq!(
-        outer.signed_distance_m(&inner.origin_ac()),
-        -d2,
-        epsilon = 1e-14
-    );
+    assert_relative_eq!(outer.signed_distance_m(&inner.origin_ac()), -d2, epsilon = 1e-14);
 }
 
 #[test]
@@ -222,10 +196,7 @@ fn non_moving_attachment_has_no_skew_direction() {
 #[test]
 fn conical_setting_puts_the_hinge_line_through_the_shifted_points() {
     let deployment = deployment(vec![FlapSetting::stowed()]);
-    let (q_in, q_out) = (
-        deployment.hinge.point_at(0.0),
-        deployment.hinge.point_at(3.0),
-    );
+    let (q_in, q_out) = (deployment.hinge.point_at(0.0), deployment.hinge.point_at(3.0));
     let inboard = flapwright_planes::SectionShift {
         hinge_point_ac: q_in,
         aft_m: 0.20,
@@ -236,13 +207,8 @@ fn conical_setting_puts_the_hinge_line_through_the_shifted_points() {
         aft_m: 0.12,
         down_m: 0.05,
     };
-    let setting = flapwright_planes::setting_from_section_shifts(
-        &deployment,
-        30f64.to_radians(),
-        &inboard,
-        &outboard,
-    )
-    .unwrap();
+    let setting =
+        flapwright_planes::setting_from_section_shifts(&deployment, 30f64.to_radians(), &inboard, &outboard).unwrap();
     assert!(setting.overlap_rotation_rad.abs() > 1e-3 && setting.gap_rotation_rad.abs() > 1e-3);
     let pose = deployment.pose_ac(&setting);
     let up = deployment.overlap_axis_ac.into_inner();
@@ -260,8 +226,6 @@ fn conical_setting_puts_the_hinge_line_through_the_shifted_points() {
         down_m: 0.03,
         ..outboard
     };
-    let plain =
-        flapwright_planes::setting_from_section_shifts(&deployment, 0.5, &inboard, &outboard_equal)
-            .unwrap();
+    let plain = flapwright_planes::setting_from_section_shifts(&deployment, 0.5, &inboard, &outboard_equal).unwrap();
     assert!(plain.overlap_rotation_rad.abs() < 1e-14 && plain.gap_rotation_rad.abs() < 1e-14);
 }

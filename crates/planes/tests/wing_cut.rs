@@ -2,8 +2,7 @@
 //! scaled by the chord.
 
 use flapwright_geom::{
-    Airfoil, MeshResolution, PanelSpec, SweepReference, TrailingEdge, WingModel, WingSectionSpec,
-    WingSpec,
+    Airfoil, MeshResolution, PanelSpec, SweepReference, TrailingEdge, WingModel, WingSectionSpec, WingSpec,
 };
 use flapwright_planes::{boundary_deviation, cut_mesh, signed_area_m2, StationFrame};
 use nalgebra::{Point2, Point3, Vector3};

@@ -22,10 +22,7 @@ fn main() -> Result<(), flapwright_sizing::Error> {
     let sizing = size_screw_jack(&jack, CS25_SAFETY_FACTOR)?;
     println!(
         "raise {:.4} N m, lower {:.4} N m, motor {:.4} N m, self-locking {}",
-        sizing.max_raise_torque_nm,
-        sizing.max_lower_torque_nm,
-        sizing.motor_torque_nm,
-        sizing.self_locking
+        sizing.max_raise_torque_nm, sizing.max_lower_torque_nm, sizing.motor_torque_nm, sizing.self_locking
     );
     assert_eq!((sizing.max_raise_torque_nm * 10.0).round() / 10.0, 4.7);
     assert_eq!((sizing.motor_torque_nm * 10.0).round() / 10.0, 7.1);

@@ -55,16 +55,10 @@ pub struct AttachmentLoads {
 /// # Errors
 /// [`Error::TooFewStations`], [`Error::NotIncreasing`], [`Error::OutOfRange`] for
 /// non-finite inputs.
-pub fn distribute_to_stations(
-    elements: &[ElementLoad],
-    station_positions_m: &[f64],
-) -> Result<Vec<StationLoad>> {
+pub fn distribute_to_stations(elements: &[ElementLoad], station_positions_m: &[f64]) -> Result<Vec<StationLoad>> {
     let n = station_positions_m.len();
     if n < 2 {
-        return Err(Error::TooFewStations {
-            required: 2,
-            found: n,
-        });
+        return Err(Error::TooFewStations { required: 2, found: n });
     }
     for (index, &y) in station_positions_m.iter().enumerate() {
         finite(format!("station_positions_m[{index}]"), y)?;
@@ -87,19 +81,10 @@ pub fn distribute_to_stations(
     for (i, e) in elements.iter().enumerate() {
         let y = finite(format!("elements[{i}].span_position_m"), e.span_position_m)?;
         finite(format!("elements[{i}].normal_force_n"), e.normal_force_n)?;
-        finite(
-            format!("elements[{i}].chordwise_position_m"),
-            e.chordwise_position_m,
-        )?;
-        finite(
-            format!("elements[{i}].pitching_moment_nm"),
-            e.pitching_moment_nm,
-        )?;
+        finite(format!("elements[{i}].chordwise_position_m"), e.chordwise_position_m)?;
+        finite(format!("elements[{i}].pitching_moment_nm"), e.pitching_moment_nm)?;
         // Segment [k, k+1] holding y; overhangs use the end segments.
-        let k = station_positions_m
-            .partition_point(|&s| s <= y)
-            .clamp(1, n - 1)
-            - 1;
+        let k = station_positions_m.partition_point(|&s| s <= y).clamp(1, n - 1) - 1;
         let (y0, y1) = (station_positions_m[k], station_positions_m[k + 1]);
         let inner_share = (y1 - y) / (y1 - y0);
         let outer_share = 1.0 - inner_share;
@@ -149,10 +134,7 @@ pub fn attachment_loads(
 ///
 /// # Errors
 /// [`Error::OutOfRange`] for a spacing not in (0, inf) or non-finite loads.
-pub fn station_attachment_loads(
-    station: &StationLoad,
-    attachment_spacing_m: f64,
-) -> Result<AttachmentLoads> {
+pub fn station_attachment_loads(station: &StationLoad, attachment_spacing_m: f64) -> Result<AttachmentLoads> {
     attachment_loads(
         station.normal_force_n,
         station.moment_about_hinge_nm,

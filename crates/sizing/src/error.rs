@@ -52,9 +52,7 @@ pub enum Error {
         row: usize,
     },
     /// A deflection outside the normal-force table was requested (no extrapolation).
-    #[error(
-        "deflection {deflection_rad} rad is outside the table range [{min_rad}, {max_rad}] rad"
-    )]
+    #[error("deflection {deflection_rad} rad is outside the table range [{min_rad}, {max_rad}] rad")]
     DeflectionOutsideTable {
         /// Deflection requested, rad.
         deflection_rad: f64,

@@ -72,26 +72,24 @@ pub mod weights;
 mod check;
 
 pub use distribution::{
-    attachment_loads, distribute_to_stations, station_attachment_loads, AttachmentLoads,
-    StationLoad,
+    attachment_loads, distribute_to_stations, station_attachment_loads, AttachmentLoads, StationLoad,
 };
 pub use drive::{deployment_work_j, drive_demand, drive_power_w, DriveDemand};
 pub use error::{Error, Result};
 pub use loads::{
-    element_loads, element_normal_force_n, ElementLoad, FlapElement, LoadCase, NormalForceTable,
-    CS25_SAFETY_FACTOR,
+    element_loads, element_normal_force_n, ElementLoad, FlapElement, LoadCase, NormalForceTable, CS25_SAFETY_FACTOR,
 };
 pub use material::Material;
 pub use report::{SizingReport, SizingTotals};
 pub use rod::{
-    axial_envelope_n, buckling_radius_m, euler_critical_load_n, size_rod, strength_radius_m,
-    GoverningCase, RodInput, RodSizing,
+    axial_envelope_n, buckling_radius_m, euler_critical_load_n, size_rod, strength_radius_m, GoverningCase, RodInput,
+    RodSizing,
 };
 pub use screw_jack::{motor_torque_nm, size_screw_jack, ScrewJackInput, ScrewJackSizing};
 pub use section::SectionShape;
 pub use torque_tube::{
-    cumulative_torques_nm, ideal_motor_torque_nm, size_torque_tubes, torsion_radius_m,
-    TorqueTubeInput, TorqueTubeSizing,
+    cumulative_torques_nm, ideal_motor_torque_nm, size_torque_tubes, torsion_radius_m, TorqueTubeInput,
+    TorqueTubeSizing,
 };
 pub use warning::SizingWarning;
 pub use weights::{mass_kg, prism_volume_m3, MassBreakdown, MassItem, StationMass};

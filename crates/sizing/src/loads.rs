@@ -60,9 +60,7 @@ impl NormalForceTable {
                 max_rad,
             });
         }
-        let upper = d
-            .partition_point(|&x| x < deflection_rad)
-            .clamp(1, d.len() - 1);
+        let upper = d.partition_point(|&x| x < deflection_rad).clamp(1, d.len() - 1);
         let (x0, x1) = (d[upper - 1], d[upper]);
         let (y0, y1) = (self.coefficients[upper - 1], self.coefficients[upper]);
         Ok(y0 + (y1 - y0) * (deflection_rad - x0) / (x1 - x0))
@@ -174,12 +172,7 @@ pub struct ElementLoad {
 ///
 /// Units: chord and span in m, dynamic pressure q in Pa. Eq 1 is dimensionally
 /// consistent (Pa x m^2 = N).
-pub fn element_normal_force_n(
-    coefficient: f64,
-    chord_m: f64,
-    span_m: f64,
-    dynamic_pressure_pa: f64,
-) -> f64 {
+pub fn element_normal_force_n(coefficient: f64, chord_m: f64, span_m: f64, dynamic_pressure_pa: f64) -> f64 {
     coefficient * chord_m * span_m * dynamic_pressure_pa
 }
 
@@ -205,21 +198,14 @@ pub fn element_loads(
         .enumerate()
         .map(|(i, e)| {
             finite(format!("elements[{i}].span_start_m"), e.span_start_m)?;
-            let span_m = positive(
-                format!("elements[{i}].span_m"),
-                e.span_end_m - e.span_start_m,
-            )?;
+            let span_m = positive(format!("elements[{i}].span_m"), e.span_end_m - e.span_start_m)?;
             positive(format!("elements[{i}].chord_m"), e.chord_m)?;
             finite(
                 format!("elements[{i}].quarter_chord_aft_of_hinge_m"),
                 e.quarter_chord_aft_of_hinge_m,
             )?;
-            finite(
-                format!("elements[{i}].moment_coefficient"),
-                e.moment_coefficient,
-            )?;
-            let normal =
-                element_normal_force_n(coefficient, e.chord_m, span_m, dynamic_pressure_pa);
+            finite(format!("elements[{i}].moment_coefficient"), e.moment_coefficient)?;
+            let normal = element_normal_force_n(coefficient, e.chord_m, span_m, dynamic_pressure_pa);
             let moment = e.moment_coefficient * dynamic_pressure_pa * e.chord_m.powi(2) * span_m;
             Ok(ElementLoad {
                 span_position_m: 0.5 * (e.span_start_m + e.span_end_m),

@@ -54,11 +54,7 @@ impl Material {
     pub fn validate(&self) -> Result<()> {
         let fields = [
             ("density_kg_m3", self.density_kg_m3, "(0, inf) kg/m^3"),
-            (
-                "allowable_tensile_pa",
-                self.allowable_tensile_pa,
-                "(0, inf) Pa",
-            ),
+            ("allowable_tensile_pa", self.allowable_tensile_pa, "(0, inf) Pa"),
             ("allowable_shear_pa", self.allowable_shear_pa, "(0, inf) Pa"),
             ("youngs_modulus_pa", self.youngs_modulus_pa, "(0, inf) Pa"),
         ];

@@ -154,9 +154,10 @@ pub fn buckling_radius_m(
     positive("youngs_modulus_pa", youngs_modulus_pa)?;
     shape.validate()?;
     let effective_length_m = end_fixity_factor * length_m;
-    Ok((4.0 * force_n * effective_length_m.powi(2)
-        / (PI.powi(3) * youngs_modulus_pa * shape.inertia_factor()))
-    .powf(0.25))
+    Ok(
+        (4.0 * force_n * effective_length_m.powi(2) / (PI.powi(3) * youngs_modulus_pa * shape.inertia_factor()))
+            .powf(0.25),
+    )
 }
 
 /// Largest tension and compression (magnitudes, N) of an axial-force history (N,

@@ -49,11 +49,7 @@ pub struct ScrewJackSizing {
 ///
 /// # Errors
 /// [`Error::OutOfRange`] for non-finite torques or a safety factor below 1.
-pub fn motor_torque_nm(
-    max_raise_torque_nm: f64,
-    max_lower_torque_nm: f64,
-    safety_factor: f64,
-) -> Result<f64> {
+pub fn motor_torque_nm(max_raise_torque_nm: f64, max_lower_torque_nm: f64, safety_factor: f64) -> Result<f64> {
     finite("max_raise_torque_nm", max_raise_torque_nm)?;
     finite("max_lower_torque_nm", max_lower_torque_nm)?;
     if !(safety_factor.is_finite() && safety_factor >= 1.0) {
@@ -72,11 +68,7 @@ pub fn motor_torque_nm(
 /// # Errors
 /// As [`motor_torque_nm`].
 pub fn size_screw_jack(input: &ScrewJackInput, safety_factor: f64) -> Result<ScrewJackSizing> {
-    let motor = motor_torque_nm(
-        input.max_raise_torque_nm,
-        input.max_lower_torque_nm,
-        safety_factor,
-    )?;
+    let motor = motor_torque_nm(input.max_raise_torque_nm, input.max_lower_torque_nm, safety_factor)?;
     let self_locking = input.max_lower_torque_nm > 0.0;
     let mut warnings = Vec::new();
     if !self_locking {

@@ -28,9 +28,7 @@ impl SectionShape {
     /// # Errors
     /// [`Error::OutOfRange`] for a ratio outside [0, 1) or not finite.
     pub fn try_tube(inner_to_outer_ratio: f64) -> Result<Self> {
-        let shape = Self::Tube {
-            inner_to_outer_ratio,
-        };
+        let shape = Self::Tube { inner_to_outer_ratio };
         shape.validate()?;
         Ok(shape)
     }
@@ -56,9 +54,7 @@ impl SectionShape {
     pub fn inner_to_outer_ratio(&self) -> f64 {
         match *self {
             Self::Solid => 0.0,
-            Self::Tube {
-                inner_to_outer_ratio,
-            } => inner_to_outer_ratio,
+            Self::Tube { inner_to_outer_ratio } => inner_to_outer_ratio,
         }
     }
 

@@ -57,10 +57,7 @@ pub fn ideal_motor_torque_nm(drive_torques_nm: &[f64]) -> f64 {
 /// # Errors
 /// [`crate::Error::EfficiencyOutOfRange`] for eta outside (0, 1];
 /// [`crate::Error::OutOfRange`] for a negative or non-finite torque.
-pub fn cumulative_torques_nm(
-    drive_torques_nm: &[f64],
-    gearbox_efficiency: f64,
-) -> Result<Vec<f64>> {
+pub fn cumulative_torques_nm(drive_torques_nm: &[f64], gearbox_efficiency: f64) -> Result<Vec<f64>> {
     let eta = efficiency("gearbox_efficiency", gearbox_efficiency)?;
     let mut running = 0.0;
     drive_torques_nm
@@ -88,11 +85,7 @@ pub fn cumulative_torques_nm(
 /// assert!((r - 6.827_840_633e-3).abs() < 1e-12);
 /// # Ok::<(), flapwright_sizing::Error>(())
 /// ```
-pub fn torsion_radius_m(
-    torque_nm: f64,
-    allowable_shear_pa: f64,
-    shape: SectionShape,
-) -> Result<f64> {
+pub fn torsion_radius_m(torque_nm: f64, allowable_shear_pa: f64, shape: SectionShape) -> Result<f64> {
     non_negative("torque_nm", torque_nm)?;
     positive("allowable_shear_pa", allowable_shear_pa)?;
     shape.validate()?;

@@ -74,10 +74,7 @@ impl MassBreakdown {
             })
             .collect();
         let total_kg = per_station.iter().map(|s| s.mass_kg).sum();
-        Self {
-            per_station,
-            total_kg,
-        }
+        Self { per_station, total_kg }
     }
 }
 

@@ -2,8 +2,8 @@
 
 use approx::assert_relative_eq;
 use flapwright_sizing::{
-    attachment_loads, distribute_to_stations, element_loads, station_attachment_loads, ElementLoad,
-    FlapElement, LoadCase, NormalForceTable,
+    attachment_loads, distribute_to_stations, element_loads, station_attachment_loads, ElementLoad, FlapElement,
+    LoadCase, NormalForceTable,
 };
 use proptest::prelude::*;
 
@@ -12,9 +12,7 @@ use proptest::prelude::*;
 /// x n 2.0 x 1.5 = 6480 N.
 #[test]
 fn eq_1_hand_case() {
-    let table =
-        NormalForceTable::try_new(vec![30f64.to_radians(), 40f64.to_radians()], vec![0.8, 1.0])
-            .unwrap();
+    let table = NormalForceTable::try_new(vec![30f64.to_radians(), 40f64.to_radians()], vec![0.8, 1.0]).unwrap();
     let element = FlapElement {
         span_start_m: 2.0,
         span_end_m: 2.5,

@@ -1,8 +1,8 @@
 //! Bad inputs give typed errors naming the field and the allowed range.
 
 use flapwright_sizing::{
-    cumulative_torques_nm, distribute_to_stations, size_rod, size_torque_tubes, Error, LoadCase,
-    Material, RodInput, SectionShape, TorqueTubeInput,
+    cumulative_torques_nm, distribute_to_stations, size_rod, size_torque_tubes, Error, LoadCase, Material, RodInput,
+    SectionShape, TorqueTubeInput,
 };
 
 #[test]
@@ -31,9 +31,7 @@ fn zero_allowable_stress() {
 #[test]
 fn negative_density() {
     let e = Material::try_new("bad", -1.0, 100e6, 60e6, 70e9).unwrap_err();
-    assert!(
-        matches!(e, Error::InvalidMaterial { field: "density_kg_m3", value, .. } if value == -1.0)
-    );
+    assert!(matches!(e, Error::InvalidMaterial { field: "density_kg_m3", value, .. } if value == -1.0));
 }
 
 #[test]
@@ -85,16 +83,10 @@ fn other_bad_inputs() {
         size_rod(&RodInput::new("s", "r", 1.0, -1.0, 1.0), &m),
         Err(Error::OutOfRange { .. })
     ));
-    assert!(matches!(
-        LoadCase::try_new(1.0, 0.9),
-        Err(Error::OutOfRange { .. })
-    ));
+    assert!(matches!(LoadCase::try_new(1.0, 0.9), Err(Error::OutOfRange { .. })));
     assert!(matches!(
         distribute_to_stations(&[], &[1.0]),
-        Err(Error::TooFewStations {
-            required: 2,
-            found: 1
-        })
+        Err(Error::TooFewStations { required: 2, found: 1 })
     ));
     assert!(matches!(
         distribute_to_stations(&[], &[1.0, 1.0]),

@@ -2,8 +2,8 @@
 
 use approx::assert_relative_eq;
 use flapwright_sizing::{
-    drive_demand, size_rod, size_screw_jack, size_torque_tubes, Material, RodInput, ScrewJackInput,
-    SectionShape, SizingReport, TorqueTubeInput,
+    drive_demand, size_rod, size_screw_jack, size_torque_tubes, Material, RodInput, ScrewJackInput, SectionShape,
+    SizingReport, TorqueTubeInput,
 };
 
 #[test]
@@ -37,8 +37,7 @@ fn report_totals_and_json() {
         .collect();
     let tubes = size_torque_tubes(&tubes, 0.95, SectionShape::Solid, &steel).unwrap();
     let drive = drive_demand(&[50.0, 50.0], 0.95, 20.0, 15.0).unwrap();
-    let expected_mass: f64 =
-        rods.iter().map(|r| r.mass_kg).sum::<f64>() + tubes.iter().map(|t| t.mass_kg).sum::<f64>();
+    let expected_mass: f64 = rods.iter().map(|r| r.mass_kg).sum::<f64>() + tubes.iter().map(|t| t.mass_kg).sum::<f64>();
     let report = SizingReport::assemble(rods, jacks, tubes, Some(drive));
     assert_relative_eq!(report.totals.mass_kg, expected_mass, max_relative = 1e-12);
     assert_eq!(report.masses.per_station.len(), 2);

@@ -2,8 +2,7 @@
 
 use approx::assert_relative_eq;
 use flapwright_sizing::{
-    buckling_radius_m, euler_critical_load_n, size_rod, GoverningCase, Material, RodInput,
-    SectionShape, SizingWarning,
+    buckling_radius_m, euler_critical_load_n, size_rod, GoverningCase, Material, RodInput, SectionShape, SizingWarning,
 };
 
 /// Hand case: solid r = 10 mm, E = 70 GPa, L = 0.5 m.
@@ -34,8 +33,7 @@ fn buckling_radius_hand_case() {
     let r = buckling_radius_m(1e4, 1.0, 1.0, 200e9, SectionShape::Solid).unwrap();
     assert_relative_eq!(r, 8.961_796_839_422_65e-3, max_relative = 1e-12);
     // Round trip: the critical load at that radius is the load.
-    let p_cr =
-        euler_critical_load_n(200e9, SectionShape::Solid.second_moment_m4(r), 1.0, 1.0).unwrap();
+    let p_cr = euler_critical_load_n(200e9, SectionShape::Solid.second_moment_m4(r), 1.0, 1.0).unwrap();
     assert_relative_eq!(p_cr, 1e4, max_relative = 1e-12);
 }
 
@@ -47,11 +45,7 @@ fn tension_governs_hand_case() {
     let material = Material::try_new("steel", 7850.0, 500e6, 300e6, 200e9).unwrap();
     let sized = size_rod(&RodInput::new("s1", "link", 0.1, 5e4, 0.0), &material).unwrap();
     assert_eq!(sized.governing, GoverningCase::Tension);
-    assert_relative_eq!(
-        sized.radius_m,
-        5.641_895_835_477_563e-3,
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(sized.radius_m, 5.641_895_835_477_563e-3, max_relative = 1e-12);
     assert_relative_eq!(sized.mass_kg, 0.0785, max_relative = 1e-12);
     assert!(sized.warnings.is_empty());
 }
@@ -62,11 +56,7 @@ fn buckling_governs_long_rod() {
     let material = Material::try_new("steel", 7850.0, 500e6, 300e6, 200e9).unwrap();
     let sized = size_rod(&RodInput::new("s1", "strut", 1.0, 2e3, 1e4), &material).unwrap();
     assert_eq!(sized.governing, GoverningCase::Buckling);
-    assert_relative_eq!(
-        sized.radius_m,
-        8.961_796_839_422_65e-3,
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(sized.radius_m, 8.961_796_839_422_65e-3, max_relative = 1e-12);
     assert_relative_eq!(sized.critical_load_n, 1e4, max_relative = 1e-12);
 }
 
@@ -76,11 +66,7 @@ fn tubular_buckling_radius() {
     let shape = SectionShape::try_tube(0.8).unwrap();
     let solid = buckling_radius_m(1e4, 1.0, 1.0, 200e9, SectionShape::Solid).unwrap();
     let tube = buckling_radius_m(1e4, 1.0, 1.0, 200e9, shape).unwrap();
-    assert_relative_eq!(
-        tube,
-        solid / (1.0f64 - 0.8f64.powi(4)).powf(0.25),
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(tube, solid / (1.0f64 - 0.8f64.powi(4)).powf(0.25), max_relative = 1e-12);
 }
 
 /// A rod that would need to be fatter than its station allows and than it is long:
@@ -91,11 +77,7 @@ fn absurd_rod_is_warned_with_numbers() {
     rod.max_outer_radius_m = Some(0.02);
     let sized = size_rod(&rod, &Material::aluminium_7075_t6()).unwrap();
     let r = sized.radius_m;
-    assert_relative_eq!(
-        r,
-        (5e6 / (std::f64::consts::PI * 503e6)).sqrt(),
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(r, (5e6 / (std::f64::consts::PI * 503e6)).sqrt(), max_relative = 1e-12);
     assert!(sized.warnings.contains(&SizingWarning::RodExceedsEnvelope {
         station: "outboard".into(),
         rod: "drive link".into(),
@@ -109,19 +91,12 @@ fn absurd_rod_is_warned_with_numbers() {
         length_m: 0.05,
     }));
     let text = sized.warnings[0].to_string();
-    assert!(
-        text.contains("5.6250e-2") && text.contains("2.0000e-2"),
-        "{text}"
-    );
+    assert!(text.contains("5.6250e-2") && text.contains("2.0000e-2"), "{text}");
 }
 
 #[test]
 fn unloaded_rod_is_warned() {
-    let sized = size_rod(
-        &RodInput::new("s", "idle", 1.0, 0.0, 0.0),
-        &Material::steel_4340(),
-    )
-    .unwrap();
+    let sized = size_rod(&RodInput::new("s", "idle", 1.0, 0.0, 0.0), &Material::steel_4340()).unwrap();
     assert_eq!(sized.governing, GoverningCase::Unloaded);
     assert_eq!(sized.radius_m, 0.0);
     assert_eq!(sized.warnings.len(), 1);

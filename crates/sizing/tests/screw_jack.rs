@@ -17,11 +17,7 @@ fn thesis_thread() -> ScrewJack {
 #[test]
 fn table_3_raise_and_lower_torques() {
     let table = rows("arslan2022_table3_screw_torques.csv");
-    assert!(
-        table.len() >= 4,
-        "validation table read {} rows",
-        table.len()
-    );
+    assert!(table.len() >= 4, "validation table read {} rows", table.len());
     let thread = thesis_thread();
     for row in &table {
         let force_n = number(&row[1]);
@@ -72,10 +68,7 @@ fn section_5_2_motor_torque() {
         1.5 * 4.700_384_931_968_569,
         max_relative = 1e-12
     );
-    assert!(
-        sizing.self_locking,
-        "thesis screw: f = 0.1 > l / (2 pi r) = 0.0796"
-    );
+    assert!(sizing.self_locking, "thesis screw: f = 0.1 > l / (2 pi r) = 0.0796");
     assert!(sizing.warnings.is_empty());
 }
 
@@ -99,9 +92,5 @@ fn back_drivable_screw_warns() {
     let sizing = size_screw_jack(&input, 1.5).unwrap();
     assert!(!sizing.self_locking);
     assert_eq!(sizing.warnings.len(), 1);
-    assert_relative_eq!(
-        motor_torque_nm(2.0, -3.0, 1.5).unwrap(),
-        4.5,
-        max_relative = 1e-15
-    );
+    assert_relative_eq!(motor_torque_nm(2.0, -3.0, 1.5).unwrap(), 4.5, max_relative = 1e-15);
 }

@@ -2,8 +2,8 @@
 
 use approx::assert_relative_eq;
 use flapwright_sizing::{
-    deployment_work_j, drive_demand, size_torque_tubes, torsion_radius_m, Material, SectionShape,
-    SizingWarning, TorqueTubeInput,
+    deployment_work_j, drive_demand, size_torque_tubes, torsion_radius_m, Material, SectionShape, SizingWarning,
+    TorqueTubeInput,
 };
 use std::f64::consts::PI;
 
@@ -25,11 +25,7 @@ fn hollow_torsion_radius_hand_case() {
     let shape = SectionShape::try_tube(0.8).unwrap();
     let r = torsion_radius_m(100.0, 200e6, shape).unwrap();
     assert_relative_eq!(r, 8.138_941_485_667_19e-3, max_relative = 1e-12);
-    assert_relative_eq!(
-        100.0 * r / shape.polar_moment_m4(r),
-        200e6,
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(100.0 * r / shape.polar_moment_m4(r), 200e6, max_relative = 1e-12);
 }
 
 fn three_stations() -> Vec<TorqueTubeInput> {
@@ -70,29 +66,15 @@ fn cumulative_three_stations() {
     );
     let drive = drive_demand(&[100.0, 200.0, 300.0], 0.9, 10.0, 20.0).unwrap();
     assert_relative_eq!(drive.ideal_motor_torque_nm, 600.0, max_relative = 1e-15);
-    assert_relative_eq!(
-        drive.peak_power_w,
-        6_666.666_666_666_667,
-        max_relative = 1e-12
-    );
-    assert_relative_eq!(
-        drive.work_per_deployment_j,
-        133_333.333_333_333_3,
-        max_relative = 1e-12
-    );
+    assert_relative_eq!(drive.peak_power_w, 6_666.666_666_666_667, max_relative = 1e-12);
+    assert_relative_eq!(drive.work_per_deployment_j, 133_333.333_333_333_3, max_relative = 1e-12);
 }
 
 #[test]
 fn envelope_warning_for_tubes() {
     let mut tubes = three_stations();
     tubes[2].max_outer_radius_m = Some(0.01);
-    let sized = size_torque_tubes(
-        &tubes,
-        0.9,
-        SectionShape::Solid,
-        &Material::aluminium_7075_t6(),
-    )
-    .unwrap();
+    let sized = size_torque_tubes(&tubes, 0.9, SectionShape::Solid, &Material::aluminium_7075_t6()).unwrap();
     assert!(matches!(
         sized[2].warnings[0],
         SizingWarning::TorqueTubeExceedsEnvelope { .. }

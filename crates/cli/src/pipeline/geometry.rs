@@ -12,26 +12,19 @@ use nalgebra::Point3;
 
 use crate::output::StagedDir;
 use crate::report::PartReport;
-use crate::scene::{
-    AirfoilRef, AirfoilSource, ResolutionScene, Scene, SweepReferenceScene, WingScene,
-};
+use crate::scene::{AirfoilRef, AirfoilSource, ResolutionScene, Scene, SweepReferenceScene, WingScene};
 
 /// Reads an airfoil the scene names and resamples it to the scene's resolution.
-pub fn load_airfoil(
-    text: &str,
-    scene_dir: Option<&Path>,
-    points_per_side: usize,
-) -> Result<Airfoil> {
+pub fn load_airfoil(text: &str, scene_dir: Option<&Path>, points_per_side: usize) -> Result<Airfoil> {
     let airfoil = match AirfoilRef::parse(text).map_err(anyhow::Error::msg)? {
         AirfoilRef::Naca(digits) => Airfoil::naca(&digits, points_per_side, TrailingEdge::Closed)
             .with_context(|| format!("building NACA {digits}"))?,
         AirfoilRef::File(name) => {
-            let source = AirfoilRef::locate(&name, scene_dir)
-                .with_context(|| format!("airfoil file {name} not found"))?;
+            let source =
+                AirfoilRef::locate(&name, scene_dir).with_context(|| format!("airfoil file {name} not found"))?;
             let parsed = match source {
                 AirfoilSource::Disk(path) => {
-                    let file = std::fs::File::open(&path)
-                        .with_context(|| format!("opening {}", path.display()))?;
+                    let file = std::fs::File::open(&path).with_context(|| format!("opening {}", path.display()))?;
                     Airfoil::from_dat(file)
                 }
                 AirfoilSource::Bundled(text) => Airfoil::from_dat(text.as_bytes()),
@@ -101,15 +94,12 @@ pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) ->
                     chord_fraction: fraction,
                     depth_below_chord_fraction: f.hinge.depth_below_chord_fraction.unwrap_or(0.0),
                 },
-                _ => anyhow::bail!(
-                    "flap[{i}].hinge: incomplete (validation should have caught this)"
-                ),
+                _ => anyhow::bail!("flap[{i}].hinge: incomplete (validation should have caught this)"),
             };
             let section = match &f.airfoil {
                 None => FlapSectionSpec::CutOut,
                 Some(text) => FlapSectionSpec::OwnSection {
-                    airfoil: load_airfoil(text, scene_dir, pps)
-                        .with_context(|| format!("flap[{i}].airfoil"))?,
+                    airfoil: load_airfoil(text, scene_dir, pps).with_context(|| format!("flap[{i}].airfoil"))?,
                 },
             };
             Ok(FlapSpec {
@@ -120,6 +110,7 @@ pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) ->
                 chord_fraction_outboard: f.chord_fraction_outboard,
                 hinge,
                 section,
+                side_gap_m: f.side_gap_m,
             })
         })
         .collect::<Result<Vec<_>>>()?;
@@ -135,14 +126,10 @@ pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) ->
             y_end_m: s.y_end_m,
         })
         .collect();
-    let torque_tube = scene
-        .structure
-        .torque_tube
-        .as_ref()
-        .map(|t| TorqueTubeSpec {
-            path_ac: t.path_m.iter().copied().map(point).collect(),
-            radius_m: t.radius_m,
-        });
+    let torque_tube = scene.structure.torque_tube.as_ref().map(|t| TorqueTubeSpec {
+        path_ac: t.path_m.iter().copied().map(point).collect(),
+        radius_m: t.radius_m,
+    });
     WingModel::try_new(wing_spec, flaps, spars, torque_tube).context("building the wing model")
 }
 
@@ -162,8 +149,7 @@ pub fn write_parts(parts: &[Part], write_stl: bool, out: &StagedDir) -> Result<V
         .map(|part| {
             let stl_file = if write_stl {
                 let name = format!("{}.stl", part.name);
-                let file = std::fs::File::create(out.file(&name))
-                    .with_context(|| format!("creating {name}"))?;
+                let file = std::fs::File::create(out.file(&name)).with_context(|| format!("creating {name}"))?;
                 let mut writer = std::io::BufWriter::new(file);
                 flapwright_geom::io::stl::write_binary(&part.mesh, &part.name, &mut writer)
                     .with_context(|| format!("writing {name}"))?;
@@ -179,9 +165,7 @@ pub fn write_parts(parts: &[Part], write_stl: bool, out: &StagedDir) -> Result<V
                 vertices: part.mesh.vertices.len(),
                 triangles: part.mesh.triangles.len(),
                 volume_m3: part.mesh.compute_signed_volume(),
-                bounds_m: bounds.map_or([[0.0; 3]; 2], |b| {
-                    [b.min.coords.into(), b.max.coords.into()]
-                }),
+                bounds_m: bounds.map_or([[0.0; 3]; 2], |b| [b.min.coords.into(), b.max.coords.into()]),
                 watertight: check.is_watertight(),
                 stl_file,
             })

@@ -2,8 +2,8 @@
 
 use anyhow::Result;
 use flapwright_mechanism::{
-    CircularArcTrack, CircularArcTrackSpec, ExternalMoment, LoadCase, ScrewJack, Sweep,
-    TrackSynthesis, DEFAULT_TOGGLE_TOLERANCE_RAD,
+    CircularArcTrack, CircularArcTrackSpec, ExternalMoment, LoadCase, ScrewJack, Sweep, TrackSynthesis,
+    DEFAULT_TOGGLE_TOLERANCE_RAD,
 };
 use nalgebra::Point2;
 use serde::Serialize;
@@ -50,10 +50,7 @@ fn spec_from_scene(m: &CircularArcTrackScene, screw_length_m: f64) -> CircularAr
         outer_slot_start_angle_rad: m.slot_start_angle_deg.to_radians(),
         inner_slot_offset_angle_rad: m.slot_offset_angle_deg.to_radians(),
         rotation_range_rad: m.rotation_range_deg.to_radians(),
-        centre_of_mass_stowed_m: Point2::new(
-            m.flap_centre_of_mass_m[0],
-            m.flap_centre_of_mass_m[1],
-        ),
+        centre_of_mass_stowed_m: Point2::new(m.flap_centre_of_mass_m[0], m.flap_centre_of_mass_m[1]),
         flap_mass_kg: m.flap_mass_kg,
         flap_moment_of_inertia_kgm2: 0.0,
         gravity_mps2: GRAVITY_MPS2,
@@ -113,16 +110,9 @@ pub fn load_cases(scene: &Scene) -> Vec<LoadCase> {
         .iter()
         .map(|case| LoadCase {
             name: case.name.clone(),
-            external_moment: match (
-                case.moment_nm,
-                case.moment_stowed_nm,
-                case.moment_deployed_nm,
-            ) {
+            external_moment: match (case.moment_nm, case.moment_stowed_nm, case.moment_deployed_nm) {
                 (Some(moment), _, _) => ExternalMoment::Constant(moment),
-                (None, Some(stowed_nm), Some(deployed_nm)) => ExternalMoment::Linear {
-                    stowed_nm,
-                    deployed_nm,
-                },
+                (None, Some(stowed_nm), Some(deployed_nm)) => ExternalMoment::Linear { stowed_nm, deployed_nm },
                 // Validation guarantees one of the two forms; no moment is the honest fallback.
                 _ => ExternalMoment::Constant(0.0),
             },
@@ -143,11 +133,7 @@ pub fn sweep_station(
         external_moment: ExternalMoment::Constant(0.0),
         include_inertia: false,
     }];
-    let cases = if cases.is_empty() {
-        &weight_only[..]
-    } else {
-        cases
-    };
+    let cases = if cases.is_empty() { &weight_only[..] } else { cases };
     let track = &mechanism.track;
     for warning in &track.synthesis().warnings {
         warnings.push(format!("station {}: {warning:?}", mechanism.station));

@@ -3,8 +3,8 @@
 
 use anyhow::{Context, Result};
 use flapwright_sizing::{
-    axial_envelope_n, drive_demand, size_rod, size_screw_jack, size_torque_tubes, Material,
-    RodInput, ScrewJackInput, SectionShape, SizingReport, TorqueTubeInput,
+    axial_envelope_n, drive_demand, size_rod, size_screw_jack, size_torque_tubes, Material, RodInput, ScrewJackInput,
+    SectionShape, SizingReport, TorqueTubeInput,
 };
 use nalgebra::Point3;
 
@@ -22,9 +22,7 @@ fn material(scene: &Scene, name: &str) -> Result<Material> {
                 .materials
                 .iter()
                 .find(|m| m.name == custom)
-                .with_context(|| {
-                    format!("material {custom} (validation should have caught this)")
-                })?;
+                .with_context(|| format!("material {custom} (validation should have caught this)"))?;
             Material::try_new(
                 m.name.clone(),
                 m.density_kg_m3,
@@ -56,10 +54,7 @@ pub fn size_all(
     let mut rods = Vec::new();
     let mut jacks = Vec::new();
     for (mechanism, report) in mechanisms.iter().zip(reports) {
-        let samples = report
-            .load_cases
-            .iter()
-            .flat_map(|case| case.samples.iter());
+        let samples = report.load_cases.iter().flat_map(|case| case.samples.iter());
         let forces: Vec<f64> = samples.clone().map(|s| s.actuator_force_n).collect();
         if forces.is_empty() {
             continue;
@@ -69,9 +64,7 @@ pub fn size_all(
             .map(|s| s.raise_torque_nm)
             .fold(f64::NEG_INFINITY, f64::max);
         // The smallest lowering torque decides self-locking over the whole deployment.
-        let min_lower = samples
-            .map(|s| s.lower_torque_nm)
-            .fold(f64::INFINITY, f64::min);
+        let min_lower = samples.map(|s| s.lower_torque_nm).fold(f64::INFINITY, f64::min);
         let jack = size_screw_jack(
             &ScrewJackInput {
                 station: mechanism.station.clone(),
@@ -122,18 +115,11 @@ pub fn size_all(
         } else {
             SectionShape::Solid
         };
-        tubes = size_torque_tubes(
-            &inputs,
-            scene.sizing.gearbox_efficiency,
-            shape,
-            &tube_material,
-        )?;
+        tubes = size_torque_tubes(&inputs, scene.sizing.gearbox_efficiency, shape, &tube_material)?;
         // All screws turn together: drive speed = nut speed / lead turns per second.
         let spec = mechanisms[0].track.spec();
-        let angular_speed =
-            2.0 * std::f64::consts::PI * spec.nominal_input_speed_mps / spec.screw.lead_m;
-        let deployment_time =
-            mechanisms[0].track.synthesis().stroke_m / spec.nominal_input_speed_mps;
+        let angular_speed = 2.0 * std::f64::consts::PI * spec.nominal_input_speed_mps / spec.screw.lead_m;
+        let deployment_time = mechanisms[0].track.synthesis().stroke_m / spec.nominal_input_speed_mps;
         let ordered_torques: Vec<f64> = order.iter().map(|&i| jacks[i].motor_torque_nm).collect();
         drive = Some(drive_demand(
             &ordered_torques,

@@ -5,8 +5,8 @@
 use anyhow::{Context, Result};
 use flapwright_geom::parts::{Part, WingModel};
 use flapwright_planes::{
-    compute_station, cut_mesh, thesis_stations, FlapDeployment, FlapSetting, HingeAxis, Plane,
-    Section, Station, StationFrame,
+    compute_station, cut_mesh, thesis_stations, FlapDeployment, FlapSetting, HingeAxis, Plane, Section, Station,
+    StationFrame,
 };
 use nalgebra::{Point3, Vector3};
 
@@ -67,16 +67,12 @@ pub fn place_all(
             .iter()
             .map(|p| frame.aircraft_point_from_station(p))
             .collect();
-            let settings = [
-                0.0,
-                flap_scene.settings.takeoff_deg,
-                flap_scene.settings.landing_deg,
-            ]
-            .map(|deg| FlapSetting {
-                deflection_rad: deg.to_radians(),
-                ..FlapSetting::stowed()
-            })
-            .to_vec();
+            let settings = [0.0, flap_scene.settings.takeoff_deg, flap_scene.settings.landing_deg]
+                .map(|deg| FlapSetting {
+                    deflection_rad: deg.to_radians(),
+                    ..FlapSetting::stowed()
+                })
+                .to_vec();
             let deployment = FlapDeployment {
                 hinge: axis,
                 base_point_ac: a0_ac,

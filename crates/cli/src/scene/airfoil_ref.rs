@@ -5,22 +5,10 @@ use std::path::{Path, PathBuf};
 /// Airfoil files shipped with Flapwright (`data/airfoils/`, UIUC database; see its README),
 /// found by file name when the scene's folder has no file of that name.
 pub const BUNDLED_AIRFOILS: &[(&str, &str)] = &[
-    (
-        "n63210.dat",
-        include_str!("../../../../data/airfoils/n63210.dat"),
-    ),
-    (
-        "n63212.dat",
-        include_str!("../../../../data/airfoils/n63212.dat"),
-    ),
-    (
-        "n63215.dat",
-        include_str!("../../../../data/airfoils/n63215.dat"),
-    ),
-    (
-        "n64212.dat",
-        include_str!("../../../../data/airfoils/n64212.dat"),
-    ),
+    ("n63210.dat", include_str!("../../../../data/airfoils/n63210.dat")),
+    ("n63212.dat", include_str!("../../../../data/airfoils/n63212.dat")),
+    ("n63215.dat", include_str!("../../../../data/airfoils/n63215.dat")),
+    ("n64212.dat", include_str!("../../../../data/airfoils/n64212.dat")),
     (
         "naca651212.dat",
         include_str!("../../../../data/airfoils/naca651212.dat"),
@@ -95,14 +83,8 @@ mod tests {
 
     #[test]
     fn parses_naca_and_files() {
-        assert_eq!(
-            AirfoilRef::parse("NACA 2412"),
-            Ok(AirfoilRef::Naca("2412".into()))
-        );
-        assert_eq!(
-            AirfoilRef::parse("naca23012"),
-            Ok(AirfoilRef::Naca("23012".into()))
-        );
+        assert_eq!(AirfoilRef::parse("NACA 2412"), Ok(AirfoilRef::Naca("2412".into())));
+        assert_eq!(AirfoilRef::parse("naca23012"), Ok(AirfoilRef::Naca("23012".into())));
         assert_eq!(
             AirfoilRef::parse("n63212.dat"),
             Ok(AirfoilRef::File("n63212.dat".into()))

@@ -49,6 +49,9 @@ pub struct Scene {
     /// Sizing choices: materials, gearbox efficiency, tube wall.
     #[serde(default)]
     pub sizing: SizingScene,
+    /// Interference check settings.
+    #[serde(default)]
+    pub interference: InterferenceScene,
     /// Custom materials, referred to by name from `[sizing]`.
     #[serde(default)]
     pub materials: Vec<MaterialScene>,
@@ -100,6 +103,49 @@ impl Default for SizingScene {
             gearbox_efficiency: default_gearbox_efficiency(),
             torque_tube_inner_to_outer_ratio: default_wall_ratio(),
             screw_end_fixity_factor: default_end_fixity(),
+        }
+    }
+}
+
+/// `[interference]`: the clearance check (defaults chosen from the error-vs-time study in
+/// the README).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct InterferenceScene {
+    /// Smallest acceptable clearance between parts, m.
+    #[serde(default = "default_clearance")]
+    pub required_clearance_m: f64,
+    /// Evenly spaced deployment samples before refinement.
+    #[serde(default = "default_initial_samples")]
+    pub initial_samples: usize,
+    /// Refine until the certified bound is within this of the sampled minimum, m.
+    #[serde(default = "default_tolerance")]
+    pub tolerance_m: f64,
+    /// Distance evaluations per part pair at most.
+    #[serde(default = "default_max_evaluations")]
+    pub max_evaluations: usize,
+}
+
+fn default_clearance() -> f64 {
+    0.003
+}
+fn default_initial_samples() -> usize {
+    9
+}
+fn default_tolerance() -> f64 {
+    0.001
+}
+fn default_max_evaluations() -> usize {
+    400
+}
+
+impl Default for InterferenceScene {
+    fn default() -> Self {
+        Self {
+            required_clearance_m: default_clearance(),
+            initial_samples: default_initial_samples(),
+            tolerance_m: default_tolerance(),
+            max_evaluations: default_max_evaluations(),
         }
     }
 }
@@ -198,6 +244,10 @@ pub struct FlapScene {
     /// Own flap section nested in the cove (`"n63212.dat"`); absent: the flap is cut out of
     /// the wing section.
     pub airfoil: Option<String>,
+    /// Spanwise gap between each flap side and the wing, m (default: 0.5 % of the local
+    /// chord). A hinge line that is not perpendicular to the streamwise flap sides moves
+    /// the sides spanwise as the flap deploys.
+    pub side_gap_m: Option<f64>,
     /// The flap rotation axis.
     pub hinge: HingeScene,
     /// Flap settings, deg of rotation about the hinge axis (trailing edge down positive).
@@ -378,6 +428,9 @@ pub struct OutputsScene {
     /// Rods, screw jacks, torque tubes, drive power, masses (needs kinematics).
     #[serde(default = "yes")]
     pub sizing: bool,
+    /// Clearance check and fairing depth (needs a wing).
+    #[serde(default = "yes")]
+    pub interference: bool,
 }
 
 fn yes() -> bool {
@@ -390,6 +443,7 @@ impl Default for OutputsScene {
             stl: true,
             kinematics: true,
             sizing: true,
+            interference: true,
         }
     }
 }

@@ -93,12 +93,7 @@ impl Scene {
             8,
             2000,
         );
-        check.count_in(
-            "resolution.deployment_samples",
-            res.deployment_samples,
-            2,
-            1_000_000,
-        );
+        check.count_in("resolution.deployment_samples", res.deployment_samples, 2, 1_000_000);
         check.problems
     }
 }
@@ -135,11 +130,7 @@ impl Checker<'_> {
             };
             self.fail(
                 path,
-                format!(
-                    "= {value}: must be in {lo}{}, {}{hi}",
-                    bound(min),
-                    bound(max)
-                ),
+                format!("= {value}: must be in {lo}{}, {}{hi}", bound(min), bound(max)),
             );
         }
         ok
@@ -156,10 +147,7 @@ impl Checker<'_> {
     fn finite_point(&mut self, path: &str, point: &[f64]) -> bool {
         let ok = point.iter().all(|v| v.is_finite());
         if !ok {
-            self.fail(
-                path,
-                format!("= {point:?}: every coordinate must be finite"),
-            );
+            self.fail(path, format!("= {point:?}: every coordinate must be finite"));
         }
         ok
     }
@@ -218,10 +206,7 @@ impl Checker<'_> {
         if wing.sections.len() < 2 {
             self.fail(
                 "wing.sections",
-                format!(
-                    "has {} section(s): a wing needs at least 2",
-                    wing.sections.len()
-                ),
+                format!("has {} section(s): a wing needs at least 2", wing.sections.len()),
             );
         }
         let mut previous_y: Option<f64> = None;
@@ -248,21 +233,12 @@ impl Checker<'_> {
                 previous_y = Some(section.y_m);
             }
             self.positive(&format!("{path}.chord_m"), section.chord_m);
-            self.in_range(
-                &format!("{path}.twist_deg"),
-                section.twist_deg,
-                -45.0,
-                45.0,
-                false,
-            );
+            self.in_range(&format!("{path}.twist_deg"), section.twist_deg, -45.0, 45.0, false);
             self.airfoil(&format!("{path}.airfoil"), &section.airfoil);
         }
         if let (Some(first), Some(last)) = (wing.sections.first(), wing.sections.last()) {
             if wing.sections.len() >= 2 && first.y_m.is_finite() && last.y_m == first.y_m {
-                self.fail(
-                    "wing.sections",
-                    "zero span: first and last sections have the same y_m",
-                );
+                self.fail("wing.sections", "zero span: first and last sections have the same y_m");
             }
         }
         let expected_panels = wing.sections.len().saturating_sub(1);
@@ -295,20 +271,8 @@ impl Checker<'_> {
 
     fn flap(&mut self, path: &str, flap: &FlapScene, wing: &WingScene) {
         let (root, tip) = span_of(wing);
-        let inboard_ok = self.in_range(
-            &format!("{path}.y_inboard_m"),
-            flap.y_inboard_m,
-            root,
-            tip,
-            false,
-        );
-        let outboard_ok = self.in_range(
-            &format!("{path}.y_outboard_m"),
-            flap.y_outboard_m,
-            root,
-            tip,
-            false,
-        );
+        let inboard_ok = self.in_range(&format!("{path}.y_inboard_m"), flap.y_inboard_m, root, tip, false);
+        let outboard_ok = self.in_range(&format!("{path}.y_outboard_m"), flap.y_outboard_m, root, tip, false);
         if inboard_ok && outboard_ok && flap.y_outboard_m <= flap.y_inboard_m {
             self.fail(
                 format!("{path}.y_outboard_m"),
@@ -323,6 +287,10 @@ impl Checker<'_> {
             ("chord_fraction_outboard", flap.chord_fraction_outboard),
         ] {
             self.in_range(&format!("{path}.{key}"), value, 0.0, 0.8, true);
+        }
+        if let Some(gap) = flap.side_gap_m {
+            let quarter_span = 0.25 * (flap.y_outboard_m - flap.y_inboard_m).abs();
+            self.in_range(&format!("{path}.side_gap_m"), gap, 0.0, quarter_span, false);
         }
         if let Some(airfoil) = &flap.airfoil {
             self.airfoil(&format!("{path}.airfoil"), airfoil);
@@ -399,21 +367,9 @@ impl Checker<'_> {
         let (root, tip) = span_of(wing);
         for (i, spar) in scene.structure.spars.iter().enumerate() {
             let path = format!("structure.spars[{i}]");
-            let fraction_ok = self.in_range(
-                &format!("{path}.chord_fraction"),
-                spar.chord_fraction,
-                0.0,
-                1.0,
-                true,
-            );
+            let fraction_ok = self.in_range(&format!("{path}.chord_fraction"), spar.chord_fraction, 0.0, 1.0, true);
             self.positive(&format!("{path}.thickness_m"), spar.thickness_m);
-            let start_ok = self.in_range(
-                &format!("{path}.y_start_m"),
-                spar.y_start_m,
-                root,
-                tip,
-                false,
-            );
+            let start_ok = self.in_range(&format!("{path}.y_start_m"), spar.y_start_m, root, tip, false);
             let end_ok = self.in_range(&format!("{path}.y_end_m"), spar.y_end_m, root, tip, false);
             if start_ok && end_ok && spar.y_end_m <= spar.y_start_m {
                 self.fail(
@@ -425,12 +381,8 @@ impl Checker<'_> {
                 continue;
             }
             for flap in &scene.flap {
-                let overlaps =
-                    spar.y_start_m < flap.y_outboard_m && spar.y_end_m > flap.y_inboard_m;
-                let flap_front = 1.0
-                    - flap
-                        .chord_fraction_inboard
-                        .max(flap.chord_fraction_outboard);
+                let overlaps = spar.y_start_m < flap.y_outboard_m && spar.y_end_m > flap.y_inboard_m;
+                let flap_front = 1.0 - flap.chord_fraction_inboard.max(flap.chord_fraction_outboard);
                 if overlaps && spar.chord_fraction >= flap_front {
                     self.fail(
                         format!("{path}.chord_fraction"),
@@ -442,10 +394,7 @@ impl Checker<'_> {
                 }
             }
         }
-        self.unique_names(
-            "structure.spars",
-            scene.structure.spars.iter().map(|s| s.name.as_str()),
-        );
+        self.unique_names("structure.spars", scene.structure.spars.iter().map(|s| s.name.as_str()));
         if let Some(tube) = &scene.structure.torque_tube {
             let path = "structure.torque_tube";
             self.positive(&format!("{path}.radius_m"), tube.radius_m);
@@ -494,28 +443,16 @@ impl Checker<'_> {
                     Some(flap) => {
                         let span = flap.y_outboard_m - flap.y_inboard_m;
                         match station.axis_offset_m {
-                            None => self.fail(
-                                format!("{path}.axis_offset_m"),
-                                "is required for a station on a flap",
-                            ),
+                            None => self.fail(format!("{path}.axis_offset_m"), "is required for a station on a flap"),
                             Some(offset) => {
                                 if span.is_finite() && span > 0.0 {
-                                    self.in_range(
-                                        &format!("{path}.axis_offset_m"),
-                                        offset,
-                                        0.0,
-                                        2.0 * span,
-                                        false,
-                                    );
+                                    self.in_range(&format!("{path}.axis_offset_m"), offset, 0.0, 2.0 * span, false);
                                 }
                             }
                         }
                     }
                 },
-                (None, Some(_)) => self.fail(
-                    format!("{path}.flap"),
-                    "is required when the scene has a wing",
-                ),
+                (None, Some(_)) => self.fail(format!("{path}.flap"), "is required when the scene has a wing"),
                 (Some(_), None) => self.fail(
                     format!("{path}.flap"),
                     "a 2D-only scene (no [wing]) has no flaps to name",
@@ -567,17 +504,8 @@ impl Checker<'_> {
                 180.0,
                 true,
             );
-            self.in_range(
-                &format!("{mpath}.screw_friction"),
-                m.screw_friction,
-                0.0,
-                1.0,
-                false,
-            );
-            self.finite_point(
-                &format!("{mpath}.flap_centre_of_mass_m"),
-                &m.flap_centre_of_mass_m,
-            );
+            self.in_range(&format!("{mpath}.screw_friction"), m.screw_friction, 0.0, 1.0, false);
+            self.finite_point(&format!("{mpath}.flap_centre_of_mass_m"), &m.flap_centre_of_mass_m);
             if m.inner_slot_radius_m.is_finite() && m.inner_slot_radius_m >= m.outer_slot_radius_m {
                 // Thesis section 5.3, red-cell condition 2.
                 self.fail(
@@ -595,17 +523,10 @@ impl Checker<'_> {
         if let Some(factor) = scene.loads.safety_factor {
             self.in_range("loads.safety_factor", factor, 1.0, 10.0, false);
         }
-        self.unique_names(
-            "loads.cases",
-            scene.loads.cases.iter().map(|c| c.name.as_str()),
-        );
+        self.unique_names("loads.cases", scene.loads.cases.iter().map(|c| c.name.as_str()));
         for (i, case) in scene.loads.cases.iter().enumerate() {
             let path = format!("loads.cases[{i}]");
-            match (
-                case.moment_nm,
-                case.moment_stowed_nm,
-                case.moment_deployed_nm,
-            ) {
+            match (case.moment_nm, case.moment_stowed_nm, case.moment_deployed_nm) {
                 (Some(m), None, None) => {
                     self.in_range(&format!("{path}.moment_nm"), m, -1e9, 1e9, false);
                 }
@@ -650,22 +571,18 @@ impl Checker<'_> {
             ("screw_material", &sizing.screw_material),
             ("torque_tube_material", &sizing.torque_tube_material),
         ] {
-            let known = MATERIAL_PRESETS.contains(&name.as_str())
-                || scene.materials.iter().any(|m| &m.name == name);
+            let known = MATERIAL_PRESETS.contains(&name.as_str()) || scene.materials.iter().any(|m| &m.name == name);
             if !known {
                 self.fail(
                     format!("sizing.{key}"),
-                    format!("= \"{name}\": unknown material (presets: {}; or define it in [[materials]])", MATERIAL_PRESETS.join(", ")),
+                    format!(
+                        "= \"{name}\": unknown material (presets: {}; or define it in [[materials]])",
+                        MATERIAL_PRESETS.join(", ")
+                    ),
                 );
             }
         }
-        self.in_range(
-            "sizing.gearbox_efficiency",
-            sizing.gearbox_efficiency,
-            0.0,
-            1.0,
-            false,
-        );
+        self.in_range("sizing.gearbox_efficiency", sizing.gearbox_efficiency, 0.0, 1.0, false);
         if sizing.gearbox_efficiency == 0.0 {
             self.fail("sizing.gearbox_efficiency", "= 0: must be > 0");
         }
@@ -682,6 +599,22 @@ impl Checker<'_> {
             0.5,
             2.1,
             false,
+        );
+        let interference = &scene.interference;
+        self.in_range(
+            "interference.required_clearance_m",
+            interference.required_clearance_m,
+            0.0,
+            1.0,
+            false,
+        );
+        self.positive("interference.tolerance_m", interference.tolerance_m);
+        self.count_in("interference.initial_samples", interference.initial_samples, 2, 100_000);
+        self.count_in(
+            "interference.max_evaluations",
+            interference.max_evaluations,
+            interference.initial_samples.max(2),
+            10_000_000,
         );
         if scene.outputs.sizing && !scene.outputs.kinematics {
             self.fail(

@@ -23,16 +23,13 @@ pub fn flap_outline() -> Vec<P> {
         .map(|i| 0.5 * (1.0 - (std::f64::consts::PI * i as f64 / 24.0).cos()))
         .collect();
     let half_thickness = |t: f64| {
-        5.0 * thickness
-            * (0.2969 * t.sqrt() - 0.1260 * t - 0.3516 * t * t + 0.2843 * t.powi(3)
-                - 0.1036 * t.powi(4))
+        5.0 * thickness * (0.2969 * t.sqrt() - 0.1260 * t - 0.3516 * t * t + 0.2843 * t.powi(3) - 0.1036 * t.powi(4))
     };
     let camber_line = |t: f64| {
         if t < camber_at {
             camber / (camber_at * camber_at) * (2.0 * camber_at * t - t * t)
         } else {
-            camber / ((1.0 - camber_at).powi(2))
-                * (1.0 - 2.0 * camber_at + 2.0 * camber_at * t - t * t)
+            camber / ((1.0 - camber_at).powi(2)) * (1.0 - 2.0 * camber_at + 2.0 * camber_at * t - t * t)
         }
     };
     let point = |t: f64, sign: f64| {
@@ -96,9 +93,7 @@ pub fn convex_hull(mut points: Vec<P>) -> Vec<P> {
             Box::new(points.iter().rev())
         };
         for p in iter {
-            while hull.len() >= start + 2
-                && cross(&hull[hull.len() - 2], &hull[hull.len() - 1], p) <= 0.0
-            {
+            while hull.len() >= start + 2 && cross(&hull[hull.len() - 2], &hull[hull.len() - 1], p) <= 0.0 {
                 hull.pop();
             }
             hull.push(*p);
@@ -119,9 +114,7 @@ pub fn segment_distance(p: &P, a: &P, b: &P) -> f64 {
 pub fn clearance(first: &[P], second: &[P]) -> f64 {
     let one_way = |from: &[P], to: &[P]| {
         from.iter()
-            .flat_map(|p| {
-                (0..to.len()).map(move |i| segment_distance(p, &to[i], &to[(i + 1) % to.len()]))
-            })
+            .flat_map(|p| (0..to.len()).map(move |i| segment_distance(p, &to[i], &to[(i + 1) % to.len()])))
             .fold(f64::INFINITY, f64::min)
     };
     one_way(first, second).min(one_way(second, first))

@@ -11,8 +11,8 @@
 //! for the picture only (the real numbers come from flapwright-mechanism/sizing).
 
 use flapwright_drawing::{
-    render_plots_svg, render_station_svg, Dimension, Joint, Link, MechanismSnapshot, PartStyle,
-    Plot, SectionOutline, Series, SlotArc, StationDrawing,
+    render_plots_svg, render_station_svg, Dimension, Joint, Link, MechanismSnapshot, PartStyle, Plot, SectionOutline,
+    Series, SlotArc, StationDrawing,
 };
 use nalgebra::Vector2;
 use std::path::{Path, PathBuf};
@@ -48,14 +48,8 @@ impl Demo {
         Demo {
             b0,
             crank_stowed,
-            slot_b_stowed: P::new(
-                0.350 * 40f64.to_radians().cos(),
-                0.350 * 40f64.to_radians().sin(),
-            ),
-            slot_c_stowed: P::new(
-                0.300 * 60f64.to_radians().cos(),
-                0.300 * 60f64.to_radians().sin(),
-            ),
+            slot_b_stowed: P::new(0.350 * 40f64.to_radians().cos(), 0.350 * 40f64.to_radians().sin()),
+            slot_c_stowed: P::new(0.300 * 60f64.to_radians().cos(), 0.300 * 60f64.to_radians().sin()),
             centre_of_mass: mm(-30.0, 340.0),
             screw_length_m: 0.250,
         }
@@ -151,17 +145,60 @@ fn build_drawing(demo: &Demo) -> StationDrawing {
     let flap_spar_x = 160.0 - 0.2 * 560.0;
     StationDrawing {
         title: "Station demo - thesis case study (Table 2)".into(),
-        subtitle: "Circular-arc slots b1 = 350 mm, c1 = 300 mm; screw jack from B0; flap rotation 35\u{b0} about A0".into(),
+        subtitle: "Circular-arc slots b1 = 350 mm, c1 = 300 mm; screw jack from B0; flap rotation 35\u{b0} about A0"
+            .into(),
         sections: vec![
-            SectionOutline { part: "wing skin".into(), kind: PartStyle::WingSkin, polygons: vec![wing] },
-            SectionOutline { part: "rear spar".into(), kind: PartStyle::Spar, polygons: vec![vec![mm(600.0, 282.0), mm(612.0, 282.0), mm(612.0, 440.0), mm(600.0, 440.0)]] },
-            SectionOutline { part: "torque tube".into(), kind: PartStyle::TorqueTube, polygons: vec![circle(mm(450.0, 330.0), 0.022)] },
-            SectionOutline { part: "flap spar".into(), kind: PartStyle::Spar, polygons: vec![vec![mm(flap_spar_x - 3.0, 306.0), mm(flap_spar_x + 3.0, 306.0), mm(flap_spar_x + 3.0, 366.0), mm(flap_spar_x - 3.0, 366.0)]] },
+            SectionOutline {
+                part: "wing skin".into(),
+                kind: PartStyle::WingSkin,
+                polygons: vec![wing],
+            },
+            SectionOutline {
+                part: "rear spar".into(),
+                kind: PartStyle::Spar,
+                polygons: vec![vec![
+                    mm(600.0, 282.0),
+                    mm(612.0, 282.0),
+                    mm(612.0, 440.0),
+                    mm(600.0, 440.0),
+                ]],
+            },
+            SectionOutline {
+                part: "torque tube".into(),
+                kind: PartStyle::TorqueTube,
+                polygons: vec![circle(mm(450.0, 330.0), 0.022)],
+            },
+            SectionOutline {
+                part: "flap spar".into(),
+                kind: PartStyle::Spar,
+                polygons: vec![vec![
+                    mm(flap_spar_x - 3.0, 306.0),
+                    mm(flap_spar_x + 3.0, 306.0),
+                    mm(flap_spar_x + 3.0, 366.0),
+                    mm(flap_spar_x - 3.0, 366.0),
+                ]],
+            },
         ],
-        settings: vec![demo.snapshot("stowed", 0.0), demo.snapshot("takeoff", 15.0), demo.snapshot("landing", 35.0)],
+        settings: vec![
+            demo.snapshot("stowed", 0.0),
+            demo.snapshot("takeoff", 15.0),
+            demo.snapshot("landing", 35.0),
+        ],
         slots: vec![
-            SlotArc { name: "slot b1".into(), centre: P::origin(), radius_m: 0.350, start_rad: 40f64.to_radians(), end_rad: 75f64.to_radians() },
-            SlotArc { name: "slot c1".into(), centre: P::origin(), radius_m: 0.300, start_rad: 60f64.to_radians(), end_rad: 95f64.to_radians() },
+            SlotArc {
+                name: "slot b1".into(),
+                centre: P::origin(),
+                radius_m: 0.350,
+                start_rad: 40f64.to_radians(),
+                end_rad: 75f64.to_radians(),
+            },
+            SlotArc {
+                name: "slot c1".into(),
+                centre: P::origin(),
+                radius_m: 0.300,
+                start_rad: 60f64.to_radians(),
+                end_rad: 95f64.to_radians(),
+            },
         ],
         envelope: vec![envelope],
         fairing_line: Some(fairing),
@@ -201,8 +238,8 @@ fn build_plots(demo: &Demo) -> Vec<Plot> {
         ] {
             let f = moment / (a2 * mu.to_radians().sin());
             // Raising torque of a power screw: T = F r (l + 2 pi f r) / (2 pi r - f l).
-            let t = f * r * (lead + std::f64::consts::TAU * friction * r)
-                / (std::f64::consts::TAU * r - friction * lead);
+            let t =
+                f * r * (lead + std::f64::consts::TAU * friction * r) / (std::f64::consts::TAU * r - friction * lead);
             f_series.push((s_mm, f));
             t_series.push((s_mm, t));
         }
@@ -289,13 +326,8 @@ fn write_png(svg: &str, path: &Path) -> usize {
     options.fontdb_mut().load_system_fonts();
     let tree = resvg::usvg::Tree::from_str(svg, &options).expect("the SVG parses");
     let size = tree.size().to_int_size();
-    let mut pixmap =
-        resvg::tiny_skia::Pixmap::new(size.width(), size.height()).expect("non-zero size");
-    resvg::render(
-        &tree,
-        resvg::tiny_skia::Transform::identity(),
-        &mut pixmap.as_mut(),
-    );
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height()).expect("non-zero size");
+    resvg::render(&tree, resvg::tiny_skia::Transform::identity(), &mut pixmap.as_mut());
     pixmap.save_png(path).expect("the PNG is written");
     pixmap
         .pixels()
@@ -328,8 +360,5 @@ fn main() {
     for label in ["setting-stowed", "setting-takeoff", "setting-landing"] {
         assert!(station.contains(label), "{label} missing from the drawing");
     }
-    assert!(
-        inked_station > 10_000 && inked_plots > 10_000,
-        "renderings look blank"
-    );
+    assert!(inked_station > 10_000 && inked_plots > 10_000, "renderings look blank");
 }

@@ -61,8 +61,7 @@ impl Airfoil {
                     });
                 }
                 let to_point = |&(x, y): &(f64, f64)| Point2::new(x, y);
-                let mut points: Vec<Point2<f64>> =
-                    data[..upper].iter().rev().map(to_point).collect();
+                let mut points: Vec<Point2<f64>> = data[..upper].iter().rev().map(to_point).collect();
                 let lower_points: Vec<Point2<f64>> = data[upper..].iter().map(to_point).collect();
                 let skip = usize::from(lower_points.first() == points.last());
                 points.extend(lower_points.into_iter().skip(skip));

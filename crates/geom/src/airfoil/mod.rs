@@ -66,22 +66,15 @@ impl Airfoil {
                 minimum: 5,
             });
         }
-        if self
-            .points
-            .iter()
-            .any(|p| !p.x.is_finite() || !p.y.is_finite())
-        {
+        if self.points.iter().any(|p| !p.x.is_finite() || !p.y.is_finite()) {
             return Err(self.bad("a coordinate is NaN or infinite"));
         }
         let le = self.leading_edge_index();
         if le == 0 || le + 1 == self.points.len() {
-            return Err(self
-                .bad("the leading edge (smallest x) is an end point, not between the two sides"));
+            return Err(self.bad("the leading edge (smallest x) is an end point, not between the two sides"));
         }
         if self.compute_area() <= 0.0 {
-            return Err(self.bad(
-                "points are not in Selig order (upper TE -> LE -> lower TE) or enclose no area",
-            ));
+            return Err(self.bad("points are not in Selig order (upper TE -> LE -> lower TE) or enclose no area"));
         }
         Ok(())
     }
@@ -197,21 +190,11 @@ impl Airfoil {
         let (a, b) = match (a.points_per_side(), b.points_per_side()) {
             (Some(na), Some(nb)) if na == nb => (a.clone(), b.clone()),
             _ => {
-                let n = a
-                    .points
-                    .len()
-                    .max(b.points.len())
-                    .div_ceil(2)
-                    .max(MIN_POINTS_PER_SIDE);
+                let n = a.points.len().max(b.points.len()).div_ceil(2).max(MIN_POINTS_PER_SIDE);
                 (a.resampled(n)?, b.resampled(n)?)
             }
         };
-        let points = a
-            .points
-            .iter()
-            .zip(&b.points)
-            .map(|(p, q)| p + (q - p) * t)
-            .collect();
+        let points = a.points.iter().zip(&b.points).map(|(p, q)| p + (q - p) * t).collect();
         let name = if t == 0.0 {
             a.name.clone()
         } else if t == 1.0 {
@@ -262,11 +245,7 @@ mod tests {
         let fine = Airfoil::naca("2412", 400, TrailingEdge::Closed).unwrap();
         let coarse = fine.resampled(120).unwrap();
         assert_eq!(coarse.points_per_side(), Some(120));
-        approx::assert_relative_eq!(
-            coarse.compute_area(),
-            fine.compute_area(),
-            max_relative = 2e-3
-        );
+        approx::assert_relative_eq!(coarse.compute_area(), fine.compute_area(), max_relative = 2e-3);
         assert!(coarse.has_closed_trailing_edge());
     }
 

@@ -120,10 +120,7 @@ impl Naca {
                 let design_lift_coefficient = 3.0 * f64::from(l) / 20.0;
                 let camber = match s {
                     0 => {
-                        let &(_, r, k1) = FIVE_DIGIT_STANDARD
-                            .iter()
-                            .find(|e| e.0 == p)
-                            .ok_or_else(unknown)?;
+                        let &(_, r, k1) = FIVE_DIGIT_STANDARD.iter().find(|e| e.0 == p).ok_or_else(unknown)?;
                         NacaCamber::FiveDigit {
                             design_lift_coefficient,
                             junction: r,
@@ -132,10 +129,7 @@ impl Naca {
                         }
                     }
                     1 => {
-                        let &(_, r, k1, k21) = FIVE_DIGIT_REFLEXED
-                            .iter()
-                            .find(|e| e.0 == p)
-                            .ok_or_else(unknown)?;
+                        let &(_, r, k1, k21) = FIVE_DIGIT_REFLEXED.iter().find(|e| e.0 == p).ok_or_else(unknown)?;
                         NacaCamber::FiveDigit {
                             design_lift_coefficient,
                             junction: r,
@@ -166,8 +160,7 @@ impl Naca {
         };
         let x = x.clamp(0.0, 1.0);
         5.0 * self.thickness_ratio
-            * (0.2969 * x.sqrt() - 0.1260 * x - 0.3516 * x * x + 0.2843 * x.powi(3)
-                - a4 * x.powi(4))
+            * (0.2969 * x.sqrt() - 0.1260 * x - 0.3516 * x * x + 0.2843 * x.powi(3) - a4 * x.powi(4))
     }
 
     /// Mean-line height y_c(x), unit chord.
@@ -189,16 +182,10 @@ impl Naca {
                 if m == 0.0 {
                     (0.0, 0.0)
                 } else if x < p {
-                    (
-                        m / (p * p) * (2.0 * p * x - x * x),
-                        2.0 * m / (p * p) * (p - x),
-                    )
+                    (m / (p * p) * (2.0 * p * x - x * x), 2.0 * m / (p * p) * (p - x))
                 } else {
                     let q = (1.0 - p) * (1.0 - p);
-                    (
-                        m / q * ((1.0 - 2.0 * p) + 2.0 * p * x - x * x),
-                        2.0 * m / q * (p - x),
-                    )
+                    (m / q * ((1.0 - 2.0 * p) + 2.0 * p * x - x * x), 2.0 * m / q * (p - x))
                 }
             }
             NacaCamber::FiveDigit {
@@ -254,11 +241,7 @@ impl Airfoil {
     /// Generates a NACA 4- or 5-digit section with `points_per_side` points on each side
     /// (leading edge shared), cosine spacing of the mean-line station
     /// `x_i = (1 - cos(pi i / (n - 1))) / 2`, in Selig order.
-    pub fn naca(
-        designation: &str,
-        points_per_side: usize,
-        trailing_edge: TrailingEdge,
-    ) -> Result<Airfoil> {
+    pub fn naca(designation: &str, points_per_side: usize, trailing_edge: TrailingEdge) -> Result<Airfoil> {
         if points_per_side < MIN_POINTS_PER_SIDE {
             return Err(Error::TooFewPoints {
                 what: "NACA points per side",
@@ -272,8 +255,7 @@ impl Airfoil {
                 let x = if i + 1 == points_per_side {
                     1.0
                 } else {
-                    0.5 * (1.0
-                        - (std::f64::consts::PI * i as f64 / (points_per_side - 1) as f64).cos())
+                    0.5 * (1.0 - (std::f64::consts::PI * i as f64 / (points_per_side - 1) as f64).cos())
                 };
                 naca.surface_points(x)
             })

@@ -49,9 +49,7 @@ impl SurfaceLine {
             }
             if (x0 < x && x <= x1) || (x1 <= x && x < x0) {
                 let t = (x - x0) / (x1 - x0);
-                return Some(
-                    self.cumulative[i] + t * (self.cumulative[i + 1] - self.cumulative[i]),
-                );
+                return Some(self.cumulative[i] + t * (self.cumulative[i + 1] - self.cumulative[i]));
             }
         }
         None

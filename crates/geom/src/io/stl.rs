@@ -14,8 +14,7 @@ use crate::mesh::TriMesh;
 /// the 80-byte header holds `flapwright <name> (m)` (truncated, never starting with
 /// "solid", which readers would take for ASCII STL).
 pub fn write_binary(mesh: &TriMesh, name: &str, mut writer: impl Write) -> Result<()> {
-    let to_vertex =
-        |p: &nalgebra::Point3<f64>| stl_io::Vertex::new([p.x as f32, p.y as f32, p.z as f32]);
+    let to_vertex = |p: &nalgebra::Point3<f64>| stl_io::Vertex::new([p.x as f32, p.y as f32, p.z as f32]);
     let triangles: Vec<stl_io::Triangle> = (0..mesh.triangles.len())
         .map(|i| {
             let n = mesh.triangle_normal(i);

@@ -7,8 +7,8 @@ use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use urdf_rs::{Axis, Geometry, Joint, JointLimit, JointType, Link, LinkName, Robot, Vec3, Visual};
 
 use super::layout::{
-    joint_limits, screw_stowed_direction_rad, validate_mesh_path, validate_name, validate_stations,
-    velocity_limits, StationNames,
+    joint_limits, screw_stowed_direction_rad, validate_mesh_path, validate_name, validate_stations, velocity_limits,
+    StationNames,
 };
 use super::rpy::origin_from_isometry;
 use super::{BaseLink, CutJoint, StationMechanism3d, UrdfModel};
@@ -31,21 +31,15 @@ const URDF_VERSION: &str = "1.0";
 /// [`Error::FlapOwnership`], [`Error::FlapMeshOnNonOwningStation`],
 /// [`Error::MeshPathNotRelative`], [`Error::NonFinitePlacement`], and pose errors of a
 /// track that cannot run its own stroke.
-pub fn build_robot(
-    robot_name: &str,
-    base: &BaseLink,
-    stations: &[StationMechanism3d],
-) -> Result<UrdfModel> {
+pub fn build_robot(robot_name: &str, base: &BaseLink, stations: &[StationMechanism3d]) -> Result<UrdfModel> {
     validate_name("robot", robot_name)?;
     validate_name("base link", &base.name)?;
     validate_stations(stations)?;
     let mut base_link = empty_link(&base.name);
     for mesh in &base.meshes {
-        base_link.visual.push(mesh_visual(
-            mesh.name.as_str(),
-            &mesh.filename,
-            &Isometry3::identity(),
-        )?);
+        base_link
+            .visual
+            .push(mesh_visual(mesh.name.as_str(), &mesh.filename, &Isometry3::identity())?);
     }
     let mut robot = Robot {
         name: robot_name.to_owned(),
@@ -78,9 +72,7 @@ pub fn build_robot(
 ///
 /// Errors: [`Error::UrdfWrite`] when urdf-rs cannot serialise the robot.
 pub fn to_xml(model: &UrdfModel) -> Result<String> {
-    let body = urdf_rs::write_to_string(&model.robot).map_err(|e| Error::UrdfWrite {
-        message: e.to_string(),
-    })?;
+    let body = urdf_rs::write_to_string(&model.robot).map_err(|e| Error::UrdfWrite { message: e.to_string() })?;
     let mut text = String::from("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<!--\n");
     // Writing to a String cannot fail.
     let _ = writeln!(
@@ -187,11 +179,8 @@ fn add_station(
         let mut flap = empty_link(&station.flap_name);
         if let Some(filename) = &station.flap_mesh {
             validate_mesh_path(filename)?;
-            flap.visual.push(mesh_visual(
-                &station.flap_name,
-                filename,
-                &placement.inverse(),
-            )?);
+            flap.visual
+                .push(mesh_visual(&station.flap_name, filename, &placement.inverse())?);
         }
         robot.links.push(flap);
         robot.joints.push(joint(
@@ -251,14 +240,12 @@ fn joint(
     limit: Option<((f64, f64), f64)>,
 ) -> Joint {
     let (xyz, rpy) = origin_from_isometry(parent_from_child);
-    let limit = limit.map_or_else(JointLimit::default, |((lower, upper), velocity)| {
-        JointLimit {
-            lower,
-            upper,
-            effort: 0.0,
-            velocity,
-            ..JointLimit::default()
-        }
+    let limit = limit.map_or_else(JointLimit::default, |((lower, upper), velocity)| JointLimit {
+        lower,
+        upper,
+        effort: 0.0,
+        velocity,
+        ..JointLimit::default()
     });
     Joint {
         name: name.to_owned(),
@@ -270,9 +257,7 @@ fn joint(
         parent: LinkName {
             link: parent.to_owned(),
         },
-        child: LinkName {
-            link: child.to_owned(),
-        },
+        child: LinkName { link: child.to_owned() },
         axis: Axis {
             xyz: Vec3([axis.x, axis.y, axis.z]),
         },

@@ -74,11 +74,7 @@ pub(crate) fn joint_limits(track: &CircularArcTrack) -> Result<[(f64, f64); 3]> 
         lower = lower.min(relative);
         upper = upper.max(relative);
     }
-    Ok([
-        (0.0, track.spec().rotation_range_rad),
-        (lower, upper),
-        (start, end),
-    ])
+    Ok([(0.0, track.spec().rotation_range_rad), (lower, upper), (start, end)])
 }
 
 /// Largest |rate| over the stroke at the spec's nominal nut speed, trajectory order:
@@ -168,37 +164,20 @@ pub(crate) fn key_points(station: &StationMechanism3d) -> Vec<KeyPointLayout> {
     let in_plane = |p: Point2<f64>| Point3::new(p.x, p.y, 0.0);
     let on_flap = [
         ("A", synthesis.nut_pivot_stowed_m, PosePoint::NutPivot),
-        (
-            "D",
-            track.spec().centre_of_mass_stowed_m,
-            PosePoint::CentreOfMass,
-        ),
+        ("D", track.spec().centre_of_mass_stowed_m, PosePoint::CentreOfMass),
         ("F", synthesis.outer_pin_stowed_m, PosePoint::OuterPin),
         ("G", synthesis.inner_pin_stowed_m, PosePoint::InnerPin),
     ];
-    let point =
-        |group: &str, label: &str, link: &str, local: Point3<f64>, follows| KeyPointLayout {
-            name: format!("{group}.{label}"),
-            link: link.to_owned(),
-            position_link_m: local,
-            follows,
-        };
+    let point = |group: &str, label: &str, link: &str, local: Point3<f64>, follows| KeyPointLayout {
+        name: format!("{group}.{label}"),
+        link: link.to_owned(),
+        position_link_m: local,
+        follows,
+    };
     let s = station.name.as_str();
     let mut points = vec![
-        point(
-            s,
-            "A0",
-            &names.station_link,
-            Point3::origin(),
-            PosePoint::Hinge,
-        ),
-        point(
-            s,
-            "B0",
-            &names.screw_link,
-            Point3::origin(),
-            PosePoint::ScrewMount,
-        ),
+        point(s, "A0", &names.station_link, Point3::origin(), PosePoint::Hinge),
+        point(s, "B0", &names.screw_link, Point3::origin(), PosePoint::ScrewMount),
         point(
             s,
             "B",
@@ -206,22 +185,10 @@ pub(crate) fn key_points(station: &StationMechanism3d) -> Vec<KeyPointLayout> {
             Point3::new(track.spec().screw_length_m, 0.0, 0.0),
             PosePoint::ScrewEnd,
         ),
-        point(
-            s,
-            "A_nut",
-            &names.nut_link,
-            Point3::origin(),
-            PosePoint::NutPivot,
-        ),
+        point(s, "A_nut", &names.nut_link, Point3::origin(), PosePoint::NutPivot),
     ];
     for (label, stowed, follows) in on_flap {
-        points.push(point(
-            s,
-            label,
-            &names.fitting_link,
-            in_plane(stowed),
-            follows,
-        ));
+        points.push(point(s, label, &names.fitting_link, in_plane(stowed), follows));
     }
     if station.owns_flap {
         // The flap link frame is the owning station's frame with the flap stowed.
@@ -271,14 +238,9 @@ pub(crate) fn validate_stations(stations: &[StationMechanism3d]) -> Result<()> {
     let flaps: BTreeSet<&str> = stations.iter().map(|s| s.flap_name.as_str()).collect();
     for flap in flaps {
         if groups.contains(flap) {
-            return Err(Error::DuplicateUrdfName {
-                name: flap.to_owned(),
-            });
+            return Err(Error::DuplicateUrdfName { name: flap.to_owned() });
         }
-        let owners = stations
-            .iter()
-            .filter(|s| s.flap_name == flap && s.owns_flap)
-            .count();
+        let owners = stations.iter().filter(|s| s.flap_name == flap && s.owns_flap).count();
         if owners != 1 {
             return Err(Error::FlapOwnership {
                 flap: flap.to_owned(),

@@ -21,11 +21,7 @@ pub fn rotation_from_rpy(rpy: [f64; 3]) -> Rotation3<f64> {
 pub fn rpy_from_rotation(rotation: &Rotation3<f64>) -> [f64; 3] {
     let r = rotation.matrix();
     let (r21, r22) = (r[(2, 1)], r[(2, 2)]);
-    let roll = if r21 == 0.0 && r22 == 0.0 {
-        0.0
-    } else {
-        r21.atan2(r22)
-    };
+    let roll = if r21 == 0.0 && r22 == 0.0 { 0.0 } else { r21.atan2(r22) };
     let m = r * Rotation3::from_axis_angle(&Vector3::x_axis(), roll)
         .matrix()
         .transpose();
@@ -47,10 +43,7 @@ pub fn origin_from_isometry(parent_from_child: &Isometry3<f64>) -> ([f64; 3], [f
     // `+ 0.0` turns -0 into 0, so files do not print "-0".
     let t = parent_from_child.translation.vector;
     let rpy = rpy_from_rotation(&parent_from_child.rotation.to_rotation_matrix());
-    (
-        [t.x + 0.0, t.y + 0.0, t.z + 0.0],
-        rpy.map(|angle| angle + 0.0),
-    )
+    ([t.x + 0.0, t.y + 0.0, t.z + 0.0], rpy.map(|angle| angle + 0.0))
 }
 
 #[cfg(test)]

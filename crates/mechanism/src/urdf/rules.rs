@@ -49,15 +49,11 @@ pub fn check_rules(robot: &Robot) -> Vec<String> {
         let (parent, child) = (joint.parent.link.as_str(), joint.child.link.as_str());
         for (role, link) in [("parent", parent), ("child", child)] {
             if !links.contains(link) {
-                violations.push(format!(
-                    "joint `{name}`: {role} link `{link}` does not exist"
-                ));
+                violations.push(format!("joint `{name}`: {role} link `{link}` does not exist"));
             }
         }
         if parent == child {
-            violations.push(format!(
-                "joint `{name}`: parent and child are both `{child}`"
-            ));
+            violations.push(format!("joint `{name}`: parent and child are both `{child}`"));
         }
         if let Some(previous) = parent_of.insert(child, name) {
             violations.push(format!(
@@ -72,18 +68,11 @@ pub fn check_rules(robot: &Robot) -> Vec<String> {
         check_axis_and_limits(joint, &mut violations);
         if let Some(mimic) = &joint.mimic {
             if !robot.joints.iter().any(|j| j.name == mimic.joint) {
-                violations.push(format!(
-                    "joint `{name}` mimics `{}`, which does not exist",
-                    mimic.joint
-                ));
+                violations.push(format!("joint `{name}` mimics `{}`, which does not exist", mimic.joint));
             }
         }
     }
-    let roots: Vec<&str> = links
-        .iter()
-        .copied()
-        .filter(|l| !parent_of.contains_key(l))
-        .collect();
+    let roots: Vec<&str> = links.iter().copied().filter(|l| !parent_of.contains_key(l)).collect();
     if roots.len() != 1 {
         violations.push(format!(
             "expected exactly one root link, found {}: {roots:?}",
@@ -120,9 +109,7 @@ fn check_axis_and_limits(joint: &urdf_rs::Joint, violations: &mut Vec<String>) {
         let axis = joint.axis.xyz.0;
         let norm = axis.iter().map(|a| a * a).sum::<f64>().sqrt();
         if norm.is_nan() || (norm - 1.0).abs() > AXIS_UNIT_TOLERANCE {
-            violations.push(format!(
-                "joint `{name}`: axis {axis:?} has length {norm}, not 1"
-            ));
+            violations.push(format!("joint `{name}`: axis {axis:?} has length {norm}, not 1"));
         }
     }
     if matches!(joint.joint_type, JointType::Revolute | JointType::Prismatic) {
@@ -153,15 +140,8 @@ fn check_geometry(link_name: &str, link: &urdf_rs::Link, violations: &mut Vec<St
         .map(|v| (&v.geometry, &v.origin))
         .chain(link.collision.iter().map(|c| (&c.geometry, &c.origin)));
     for (geometry, origin) in geometries {
-        if origin
-            .xyz
-            .iter()
-            .chain(origin.rpy.iter())
-            .any(|v| !v.is_finite())
-        {
-            violations.push(format!(
-                "link `{link_name}`: a geometry origin is not finite"
-            ));
+        if origin.xyz.iter().chain(origin.rpy.iter()).any(|v| !v.is_finite()) {
+            violations.push(format!("link `{link_name}`: a geometry origin is not finite"));
         }
         if let Geometry::Mesh { filename, scale } = geometry {
             if !is_relative_path(filename) {
@@ -171,10 +151,7 @@ fn check_geometry(link_name: &str, link: &urdf_rs::Link, violations: &mut Vec<St
             }
             if let Some(scale) = scale {
                 if scale.iter().any(|s| !(s.is_finite() && *s > 0.0)) {
-                    violations.push(format!(
-                        "link `{link_name}`: mesh scale {:?} is not positive",
-                        scale.0
-                    ));
+                    violations.push(format!("link `{link_name}`: mesh scale {:?} is not positive", scale.0));
                 }
             }
         }

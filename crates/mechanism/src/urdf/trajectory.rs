@@ -63,10 +63,7 @@ pub fn trajectory(stations: &[StationMechanism3d], samples: usize) -> Result<Tra
     }
     validate_stations(stations)?;
     let layouts: Vec<_> = stations.iter().map(key_points).collect();
-    let inputs: Vec<Vec<f64>> = stations
-        .iter()
-        .map(|s| stroke_inputs(s.track, samples))
-        .collect();
+    let inputs: Vec<Vec<f64>> = stations.iter().map(|s| stroke_inputs(s.track, samples)).collect();
     let mut trajectory = Trajectory {
         stations: stations.iter().map(|s| s.name.clone()).collect(),
         joint_names: stations
@@ -94,15 +91,11 @@ pub fn trajectory(stations: &[StationMechanism3d], samples: usize) -> Result<Tra
             let input_m = station_inputs[index];
             let pose = station.track.pose(input_m, 0.0, 0.0)?;
             sample.input_m.push(input_m);
-            sample
-                .joint_values
-                .extend(joint_values(station.track, &pose));
+            sample.joint_values.extend(joint_values(station.track, &pose));
             for point in layout {
                 let p = point.follows.at(station.track, &pose);
                 let p_ac = station.aircraft_from_station * Point3::new(p.x, p.y, 0.0);
-                sample
-                    .key_points_ac_m
-                    .insert(point.name.clone(), to_array(p_ac));
+                sample.key_points_ac_m.insert(point.name.clone(), to_array(p_ac));
             }
         }
         if let Some(bad) = sample.joint_values.iter().position(|v| !v.is_finite()) {

@@ -4,10 +4,7 @@ use super::*;
 
 /// Forward kinematics written in the test: walks the tree from the root, composing each
 /// joint's origin and motion (revolute: turn about the axis; prismatic: slide along it).
-fn forward_kinematics(
-    robot: &Robot,
-    values: &HashMap<&str, f64>,
-) -> HashMap<String, Isometry3<f64>> {
+fn forward_kinematics(robot: &Robot, values: &HashMap<&str, f64>) -> HashMap<String, Isometry3<f64>> {
     let children: Vec<&str> = robot.joints.iter().map(|j| j.child.link.as_str()).collect();
     let root = robot
         .links
@@ -33,10 +30,7 @@ fn forward_kinematics(
                 JointType::Fixed => Isometry3::identity(),
                 ref other => panic!("unexpected joint type {other:?}"),
             };
-            poses.insert(
-                joint.child.link.clone(),
-                parent * pose_isometry(&joint.origin) * motion,
-            );
+            poses.insert(joint.child.link.clone(), parent * pose_isometry(&joint.origin) * motion);
             changed = true;
         }
     }
@@ -92,10 +86,7 @@ fn placements_at_gimbal_lock_survive_the_file() {
         let rotation = UnitQuaternion::from_euler_angles(0.4, pitch, -2.1);
         let station = StationMechanism3d {
             name: "only".to_owned(),
-            aircraft_from_station: Isometry3::from_parts(
-                Translation3::new(1.0, -2.0, 0.5),
-                rotation,
-            ),
+            aircraft_from_station: Isometry3::from_parts(Translation3::new(1.0, -2.0, 0.5), rotation),
             track: &track,
             flap_name: "flap".to_owned(),
             owns_flap: true,
@@ -136,16 +127,11 @@ fn meshes_appear_where_they_are_given_at_stowed() {
 fn joint_values_start_stowed_and_stay_within_limits() {
     let (inner, outer) = (thesis_track(), scaled_track(0.8));
     let stations = two_stations(&inner, &outer);
-    let robot = build_robot("right_wing", &base_link(), &stations)
-        .unwrap()
-        .robot;
+    let robot = build_robot("right_wing", &base_link(), &stations).unwrap().robot;
     let trajectory = trajectory(&stations, SAMPLES).unwrap();
     let synthesis = inner.synthesis();
     let first = &trajectory.samples[0].joint_values;
-    assert!(
-        first[0].abs() <= 1e-15 && first[1].abs() <= 1e-15,
-        "stowed: {first:?}"
-    );
+    assert!(first[0].abs() <= 1e-15 && first[1].abs() <= 1e-15, "stowed: {first:?}");
     assert_relative_eq!(first[2], synthesis.stroke_start_m, max_relative = 1e-15);
     let last = &trajectory.samples[SAMPLES - 1].joint_values;
     assert_relative_eq!(last[0], 35f64.to_radians(), max_relative = 1e-12);

@@ -1,0 +1,37 @@
+//! JUnit XML for CI: one test case per station and part pair of the interference check.
+
+use flapwright_interference::InterferenceReport;
+use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
+
+/// The JUnit document of an interference report.
+pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> anyhow::Result<String> {
+    let mut suite = TestSuite::new(format!("flapwright interference: {scene_name}"));
+    for pair in &report.pairs {
+        let c = &pair.clearance;
+        let name = format!("{} vs {}", c.part_a, c.part_b);
+        let status = if pair.passes {
+            TestCaseStatus::success()
+        } else {
+            let mut status = TestCaseStatus::non_success(NonSuccessKind::Failure);
+            let [ax, ay, az] = c.point_a_ac;
+            let [bx, by, bz] = c.point_b_ac;
+            status.set_message(format!(
+                "{} and {}: clearance {:.2} mm (certified >= {:.2} mm) is below the required {:.2} mm at flap rotation {:.2} deg; closest points (aircraft frame, m) ({ax:.4}, {ay:.4}, {az:.4}) and ({bx:.4}, {by:.4}, {bz:.4})",
+                c.part_a,
+                c.part_b,
+                c.min_clearance_m * 1e3,
+                (c.min_clearance_m - c.residual_bound_m) * 1e3,
+                report.required_clearance_m * 1e3,
+                c.at_parameter.to_degrees(),
+            ));
+            status.set_type("interference");
+            status
+        };
+        let mut case = TestCase::new(name, status);
+        case.set_classname(pair.station.clone().unwrap_or_else(|| "flap".into()));
+        suite.add_test_case(case);
+    }
+    let mut junit = Report::new("flapwright check");
+    junit.add_test_suite(suite);
+    Ok(junit.to_string()?)
+}

@@ -1,0 +1,193 @@
+//! Interference stage: moving parts (flap, screws, nuts, fittings) against the fixed
+//! structure over the deployment, with a certified sampling bound; fairing depth per
+//! station.
+
+use anyhow::{Context, Result};
+use flapwright_geom::collision::CollisionShape;
+use flapwright_geom::parts::{Part as MeshPart, PartKind, WingModel};
+use flapwright_interference::{
+    check_assembly, fairing_depth, screw_outer_radius_m, track_parts, AboutAxis, Assembly, FairingDepth,
+    InterferenceReport, LinkSizes, Part, PlanarCapsule, SweepSettings,
+};
+use flapwright_planes::Section;
+use nalgebra::{Point2, Rotation2};
+
+use crate::pipeline::mechanisms::StationMechanism;
+use crate::pipeline::stations::PlacedStation;
+use crate::scene::Scene;
+
+/// Flap rotation samples for the fairing depth.
+const FAIRING_SAMPLES: usize = 41;
+/// Points per capsule for the fairing depth.
+const FAIRING_POINTS_PER_CAPSULE: usize = 16;
+
+/// Builds the assembly and sweeps every pair.
+pub fn check(
+    scene: &Scene,
+    model: &WingModel,
+    meshed: &[MeshPart],
+    mechanisms: &[StationMechanism],
+    placed: &[PlacedStation],
+) -> Result<InterferenceReport> {
+    let mut fixed = Vec::new();
+    let mut skins = Vec::new();
+    let mut flaps = Vec::new();
+    for part in meshed {
+        let shape =
+            CollisionShape::from_mesh(&part.mesh).with_context(|| format!("collision shape of {}", part.name))?;
+        match part.kind {
+            PartKind::Flap => {
+                let flap = model
+                    .flaps()
+                    .iter()
+                    .find(|f| f.spec().name == part.name)
+                    .with_context(|| format!("flap {} in the model", part.name))?;
+                let (point_ac, direction_ac) = flap.hinge_axis_ac();
+                let max_radius_m = AboutAxis::radius_of(&point_ac, &direction_ac, &part.mesh.vertices);
+                flaps.push(Part::moving(
+                    part.name.clone(),
+                    shape,
+                    AboutAxis {
+                        point_ac,
+                        direction_ac,
+                        max_radius_m,
+                    },
+                ));
+            }
+            kind => {
+                if kind == PartKind::WingSkin {
+                    skins.push(part.name.clone());
+                }
+                fixed.push(Part::fixed(part.name.clone(), shape));
+            }
+        }
+    }
+    let sizes = LinkSizes::default();
+    let stations = mechanisms
+        .iter()
+        .zip(placed)
+        .map(|(m, p)| track_parts(&m.station, p.station.frame.aircraft_from_station(), &m.track, &sizes))
+        .collect::<flapwright_interference::Result<Vec<_>>>()?;
+    let end_rad = mechanisms
+        .iter()
+        .map(|m| m.track.spec().rotation_range_rad)
+        .fold(0.0, f64::max);
+    let settings = &scene.interference;
+    let sweep = SweepSettings {
+        initial_samples: settings.initial_samples,
+        tolerance_m: settings.tolerance_m,
+        max_evaluations: settings.max_evaluations,
+    };
+    let assembly = Assembly {
+        fixed,
+        skins,
+        flaps,
+        stations,
+    };
+    Ok(check_assembly(
+        &assembly,
+        end_rad,
+        settings.required_clearance_m,
+        &sweep,
+    )?)
+}
+
+/// The mechanism's round solids in the station plane at flap rotation `t` (rad).
+fn planar_parts(mechanism: &StationMechanism, sizes: &LinkSizes, t: f64) -> Vec<PlanarCapsule> {
+    let track = &mechanism.track;
+    let synthesis = track.synthesis();
+    let spec = track.spec();
+    let turn = Rotation2::new(t);
+    let a = turn * synthesis.nut_pivot_stowed_m;
+    let d = turn * spec.centre_of_mass_stowed_m;
+    let b0 = synthesis.screw_mount_m;
+    let b = b0 + (a - b0).normalize() * spec.screw_length_m;
+    let mut parts = vec![
+        PlanarCapsule {
+            part: "screw",
+            from: b0,
+            to: b,
+            radius_m: screw_outer_radius_m(track),
+        },
+        PlanarCapsule {
+            part: "nut",
+            from: a,
+            to: a,
+            radius_m: sizes.nut_radius_m,
+        },
+    ];
+    for (name, pin) in [
+        ("fitting-A", synthesis.nut_pivot_stowed_m),
+        ("fitting-F", synthesis.outer_pin_stowed_m),
+        ("fitting-G", synthesis.inner_pin_stowed_m),
+    ] {
+        parts.push(PlanarCapsule {
+            part: name,
+            from: turn * pin,
+            to: d,
+            radius_m: sizes.fitting_radius_m,
+        });
+    }
+    // The slots are fixed tracks: arcs of radius b1 and c1 over the rotation range.
+    let arcs = [
+        ("outer-slot", spec.outer_slot_radius_m, spec.outer_slot_start_angle_rad),
+        (
+            "inner-slot",
+            spec.inner_slot_radius_m,
+            spec.outer_slot_start_angle_rad + spec.inner_slot_offset_angle_rad,
+        ),
+    ];
+    for (name, radius, start) in arcs {
+        let steps = 12;
+        for k in 0..steps {
+            let angle = |j: usize| start + spec.rotation_range_rad * j as f64 / steps as f64;
+            let point = |phi: f64| Point2::new(radius * phi.cos(), radius * phi.sin());
+            parts.push(PlanarCapsule {
+                part: name,
+                from: point(angle(k)),
+                to: point(angle(k + 1)),
+                radius_m: sizes.fitting_radius_m,
+            });
+        }
+    }
+    parts
+}
+
+/// Fairing depth of each station: the mechanism against the lower contour of the wing and
+/// the stowed flap cut by the station plane.
+pub fn fairing_depths(
+    mechanisms: &[StationMechanism],
+    placed: &[PlacedStation],
+    flap_names: &[String],
+) -> Vec<FairingDepth> {
+    let sizes = LinkSizes::default();
+    mechanisms
+        .iter()
+        .zip(placed)
+        .map(|(mechanism, station)| {
+            let is_flap = |s: &&Section| flap_names.contains(&s.part_name);
+            let contour: Vec<Vec<Point2<f64>>> = station
+                .sections
+                .iter()
+                .filter(|s| s.part_name == "wing" || is_flap(s))
+                .flat_map(|s| s.polygons.iter().cloned())
+                .collect();
+            let flap_chord_m = station
+                .sections
+                .iter()
+                .filter(is_flap)
+                .flat_map(|s| s.polygons.iter().flatten())
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                    (lo.min(p.x), hi.max(p.x))
+                });
+            let flap_chord_m = (flap_chord_m.1 - flap_chord_m.0).max(0.0);
+            let end = mechanism.track.spec().rotation_range_rad;
+            let parameters: Vec<f64> = (0..FAIRING_SAMPLES)
+                .map(|i| end * i as f64 / (FAIRING_SAMPLES - 1) as f64)
+                .collect();
+            fairing_depth(&contour, flap_chord_m, &parameters, FAIRING_POINTS_PER_CAPSULE, |t| {
+                planar_parts(mechanism, &sizes, t)
+            })
+        })
+        .collect()
+}

@@ -1,0 +1,89 @@
+//! `flapwright check`: exit codes 0 (clear), 1 (interference), 2 (bad input) and the JUnit
+//! file CI reads.
+
+use crate::{default_scene_text, run_flapwright};
+
+fn check(scene: &str) -> (tempfile::TempDir, std::process::Output) {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("scene.toml"), scene).unwrap();
+    let output = run_flapwright(dir.path(), &["check", "scene.toml", "--junit", "junit.xml"]);
+    (dir, output)
+}
+
+#[test]
+fn default_scene_passes() {
+    let (dir, output) = check(&default_scene_text());
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "stderr:\n{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let junit = std::fs::read_to_string(dir.path().join("junit.xml")).unwrap();
+    assert!(junit.contains("failures=\"0\""), "{junit}");
+    assert!(junit.contains("inner.screw vs torque-tube"), "one test case per pair");
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("flapwright-check/report.json")).unwrap())
+            .unwrap();
+    let interference = &report["interference"];
+    assert_eq!(interference["passes"], true);
+    for pair in interference["pairs"].as_array().unwrap() {
+        assert!(
+            pair["residual_bound_m"].as_f64().unwrap() <= 1e-3 + 1e-12,
+            "refined to the tolerance: {pair}"
+        );
+    }
+    assert!(
+        !interference["declared_contacts"].as_array().unwrap().is_empty(),
+        "joints are declared, not skipped"
+    );
+    // The check runs only what it needs.
+    let stages: Vec<&str> = report["stages"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s.as_str().unwrap())
+        .collect();
+    assert!(
+        !stages.contains(&"kinematics") && !stages.contains(&"sizing") && !stages.contains(&"stl"),
+        "{stages:?}"
+    );
+    for station in report["stations"].as_array().unwrap() {
+        let depth = station["fairing"]["depth_m"].as_f64().unwrap();
+        assert!(depth > 0.0 && depth < 0.5, "fairing depth {depth} m");
+    }
+}
+
+#[test]
+fn torque_tube_in_the_screw_path_fails_and_junit_names_the_pair() {
+    // The tube moved to 245 mm above A0 on the station y axis, where the screws swing.
+    let scene = default_scene_text().replacen(
+        "path_m = [[1.4017, 0.8, 0.0196], [1.2960, 3.0, 0.2594]]",
+        "path_m = [[1.6627, 0.8, -0.0567], [1.4530, 3.0, 0.1258]]",
+        1,
+    );
+    assert_ne!(scene, default_scene_text());
+    let (dir, output) = check(&scene);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "stderr:\n{stderr}");
+    assert!(stderr.contains("screw") && stderr.contains("torque-tube"), "{stderr}");
+    let junit = std::fs::read_to_string(dir.path().join("junit.xml")).unwrap();
+    let failing = junit
+        .split("<testcase")
+        .filter(|case| case.contains("<failure"))
+        .collect::<Vec<_>>();
+    assert!(
+        failing.iter().any(|case| case.contains("screw vs torque-tube")),
+        "a failing test case names the screw and the torque tube:\n{junit}"
+    );
+    assert!(failing
+        .iter()
+        .all(|case| case.contains("clearance") && case.contains("flap rotation")));
+}
+
+#[test]
+fn bad_input_exits_2() {
+    let (_dir, output) = check(&default_scene_text().replacen("radius_m = 0.020", "radius_m = -0.020", 1));
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("structure.torque_tube.radius_m"));
+}

@@ -4,6 +4,7 @@
 mod bad_input;
 mod check;
 mod default_scene;
+mod exports;
 mod stations;
 mod stl_reader;
 

@@ -41,6 +41,24 @@ enum Command {
         #[arg(long, default_value = "flapwright-out")]
         out: PathBuf,
     },
+    /// Export files for viewers and people (URDF + trajectory, STL, SVG); without a flag,
+    /// all of them.
+    Export {
+        /// Scene file (TOML). Without it, the embedded default scene.
+        scene: Option<PathBuf>,
+        /// Output folder (replaced atomically on success).
+        #[arg(long, default_value = "flapwright-export")]
+        out: PathBuf,
+        /// URDF of the wing and mechanisms, and a trajectory file.
+        #[arg(long)]
+        urdf: bool,
+        /// One binary STL per part.
+        #[arg(long)]
+        stl: bool,
+        /// SVG drawing and plots per station.
+        #[arg(long)]
+        svg: bool,
+    },
     /// Check clearances only: exit 0 when every clearance meets the scene's minimum, 1 when
     /// any pair interferes or comes closer, 2 for bad input.
     Check {
@@ -89,9 +107,10 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         None => (None, PathBuf::from("flapwright-out"), Mode::Design, None),
         Some(Command::Design { scene, out }) => (scene.clone(), out.clone(), Mode::Design, None),
         Some(Command::Check { scene, out, junit }) => (scene.clone(), out.clone(), Mode::Check, junit.clone()),
+        Some(Command::Export { scene, out, .. }) => (scene.clone(), out.clone(), Mode::Design, None),
     };
     let (text, scene_dir) = read_scene_text(scene_path.as_deref())?;
-    let scene = Scene::from_toml(&text, scene_dir.as_deref()).map_err(|e| Failure {
+    let mut scene = Scene::from_toml(&text, scene_dir.as_deref()).map_err(|e| Failure {
         code: EXIT_BAD_INPUT,
         error: anyhow::Error::new(e).context(format!(
             "invalid scene {}",
@@ -100,6 +119,12 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 .map_or("(embedded default)".into(), |p| p.display().to_string())
         )),
     })?;
+    if let Some(Command::Export { urdf, stl, svg, .. }) = &cli.command {
+        let all = !(*urdf || *stl || *svg);
+        let outputs = &mut scene.outputs;
+        (outputs.urdf, outputs.stl, outputs.svg) = (all || *urdf, all || *stl, all || *svg);
+        outputs.sizing = false;
+    }
     let staged = StagedDir::create(&out).with_context(|| format!("preparing output folder {}", out.display()))?;
     let inputs = Inputs {
         scene: &scene,

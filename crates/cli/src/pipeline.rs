@@ -8,9 +8,10 @@ use serde::Serialize;
 use sha2::{Digest, Sha256};
 
 use crate::output::StagedDir;
-use crate::report::{PartReport, Report, SceneInfo, StageTiming, StationReport, SCHEMA_VERSION};
+use crate::report::{Exports, PartReport, Report, SceneInfo, StageTiming, StationReport, SCHEMA_VERSION};
 use crate::scene::Scene;
 
+pub mod exports;
 mod geometry;
 mod interference;
 pub mod mechanisms;
@@ -97,13 +98,16 @@ pub fn design(inputs: &Inputs<'_>, mode: Mode, out: &StagedDir) -> Result<Outcom
     let mut planes = vec![None; scene.station.len()];
     let mut fairings = vec![None; scene.station.len()];
     let mut station_origins_ac = Vec::new();
+    let mut placed = Vec::new();
+    let mut meshed = Vec::new();
     if let Some(wing) = &scene.wing {
         let model = stages.run("geometry", || geometry::build_model(scene, wing, inputs.scene_dir))?;
-        let meshed = stages.run("meshing", || geometry::mesh_parts(&model, &scene.resolution))?;
-        let write_stl = full && outputs.stl;
+        meshed = stages.run("meshing", || geometry::mesh_parts(&model, &scene.resolution))?;
+        // URDF meshes are the STL files: writing a URDF writes them too.
+        let write_stl = full && (outputs.stl || outputs.urdf);
         let stage = if write_stl { "stl" } else { "part-statistics" };
         parts = stages.run(stage, || geometry::write_parts(&meshed, write_stl, out))?;
-        let placed = stages.run("planes", || stations::place_all(scene, &model, &meshed, &mechanisms))?;
+        placed = stages.run("planes", || stations::place_all(scene, &model, &meshed, &mechanisms))?;
         station_origins_ac = placed.iter().map(|p| p.station.frame.origin_ac()).collect();
         planes = placed
             .iter()
@@ -159,6 +163,21 @@ pub fn design(inputs: &Inputs<'_>, mode: Mode, out: &StagedDir) -> Result<Outcom
         warnings.extend(sized.warnings.iter().map(|w| w.to_string()));
         sizing_report = Some(sized);
     }
+    let mut exported = Exports::default();
+    if full && outputs.urdf && !placed.is_empty() {
+        exported.urdf = Some(stages.run("urdf", || exports::write_urdf(scene, &parts, &mechanisms, &placed, out))?);
+    }
+    if full && outputs.svg {
+        let placed_refs: Vec<_> = (0..scene.station.len()).map(|i| placed.get(i)).collect();
+        let sweeps: Vec<_> = mechanism_reports
+            .iter()
+            .map(|m| m.as_ref().map(|m| m.load_cases.as_slice()))
+            .collect();
+        exported.svg = stages.run("svg", || {
+            exports::write_svgs(scene, &mechanisms, &placed_refs, &sweeps, &fairings, out)
+        })?;
+    }
+    drop(meshed);
     let station_reports: Vec<StationReport> = scene
         .station
         .iter()
@@ -187,6 +206,7 @@ pub fn design(inputs: &Inputs<'_>, mode: Mode, out: &StagedDir) -> Result<Outcom
         stations: station_reports,
         interference: interference_report,
         sizing: sizing_report,
+        files: exported,
         warnings,
         timings: stages.timings,
     };

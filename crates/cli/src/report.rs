@@ -27,6 +27,8 @@ pub struct Report {
     pub interference: Option<flapwright_interference::InterferenceReport>,
     /// Rods, screw jacks, torque tubes, drive and masses (when sizing ran).
     pub sizing: Option<flapwright_sizing::SizingReport>,
+    /// Files written besides the report and the STL files.
+    pub files: Exports,
     /// Warnings (near-toggle, self-locking lost, ...), each naming where.
     pub warnings: Vec<String>,
     /// Wall time per stage, s. The only part of the report that changes between runs.
@@ -78,6 +80,15 @@ pub struct StationReport {
     pub mechanism: Option<crate::pipeline::mechanisms::MechanismReport>,
     /// Fairing depth: how far the mechanism reaches below the lower wing/flap contour.
     pub fairing: Option<flapwright_interference::FairingDepth>,
+}
+
+/// Export files, relative to the output folder.
+#[derive(Debug, Clone, Default, Serialize)]
+pub struct Exports {
+    /// The URDF, its trajectory file and where loops were cut.
+    pub urdf: Option<crate::pipeline::exports::UrdfExport>,
+    /// SVG drawings (`station-<name>.svg`) and plots (`plots-<name>.svg`).
+    pub svg: Vec<String>,
 }
 
 /// Wall time of one stage.

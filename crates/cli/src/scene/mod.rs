@@ -431,6 +431,13 @@ pub struct OutputsScene {
     /// Clearance check and fairing depth (needs a wing).
     #[serde(default = "yes")]
     pub interference: bool,
+    /// URDF of the wing and its mechanisms, with a trajectory file (needs a wing; writes the
+    /// STL files it refers to).
+    #[serde(default = "yes")]
+    pub urdf: bool,
+    /// SVG drawing and plots per station.
+    #[serde(default = "yes")]
+    pub svg: bool,
 }
 
 fn yes() -> bool {
@@ -444,6 +451,8 @@ impl Default for OutputsScene {
             kinematics: true,
             sizing: true,
             interference: true,
+            urdf: true,
+            svg: true,
         }
     }
 }

@@ -1,0 +1,395 @@
+//! Exports for viewers and people: URDF + trajectory (mechanism crate's `urdf` module),
+//! SVG drawings and plots per station (drawing crate).
+
+use anyhow::{Context, Result};
+use flapwright_drawing::{
+    render_plots_svg, render_station_svg, Dimension, Joint, Link, MechanismSnapshot, PartStyle, Plot, SectionOutline,
+    Series, SlotArc, StationDrawing,
+};
+use flapwright_interference::FairingDepth;
+use flapwright_mechanism::urdf::{build_robot, to_xml, trajectory, BaseLink, CutJoint, MeshRef, StationMechanism3d};
+use flapwright_mechanism::Sweep;
+use nalgebra::{Point2, Rotation2};
+use serde::Serialize;
+
+use crate::output::StagedDir;
+use crate::pipeline::mechanisms::StationMechanism;
+use crate::pipeline::stations::PlacedStation;
+use crate::report::PartReport;
+use crate::scene::Scene;
+
+/// Trajectory samples written beside the URDF.
+const TRAJECTORY_SAMPLES: usize = 41;
+
+/// What the URDF export wrote.
+#[derive(Debug, Clone, Serialize)]
+pub struct UrdfExport {
+    /// The URDF file.
+    pub file: String,
+    /// Joint values and key points per deployment sample.
+    pub trajectory_file: String,
+    /// Where the closed loops were cut (URDF is a tree).
+    pub cut_joints: Vec<CutJoint>,
+}
+
+/// Writes `<scene>.urdf` and `trajectory.json`; meshes are the part STL files beside them.
+pub fn write_urdf(
+    scene: &Scene,
+    parts: &[PartReport],
+    mechanisms: &[StationMechanism],
+    placed: &[PlacedStation],
+    out: &StagedDir,
+) -> Result<UrdfExport> {
+    let flap_names: Vec<&str> = scene.flap.iter().map(|f| f.name.as_str()).collect();
+    let mesh = |p: &PartReport| {
+        p.stl_file.clone().map(|filename| MeshRef {
+            name: p.name.clone(),
+            filename,
+        })
+    };
+    let base = BaseLink {
+        name: "wing_structure".into(),
+        meshes: parts
+            .iter()
+            .filter(|p| !flap_names.contains(&p.name.as_str()))
+            .filter_map(mesh)
+            .collect(),
+    };
+    let mut owner_seen = Vec::new();
+    let stations: Vec<StationMechanism3d> = scene
+        .station
+        .iter()
+        .zip(mechanisms)
+        .zip(placed)
+        .map(|((station, mechanism), place)| {
+            let flap_name = station.flap.clone().unwrap_or_default();
+            let owns_flap = !owner_seen.contains(&flap_name);
+            owner_seen.push(flap_name.clone());
+            StationMechanism3d {
+                name: station.name.clone(),
+                aircraft_from_station: *place.station.frame.aircraft_from_station(),
+                track: &mechanism.track,
+                flap_mesh: if owns_flap {
+                    parts
+                        .iter()
+                        .find(|p| p.name == flap_name)
+                        .and_then(|p| p.stl_file.clone())
+                } else {
+                    None
+                },
+                flap_name,
+                owns_flap,
+            }
+        })
+        .collect();
+    let robot_name = scene
+        .name
+        .replace(|c: char| !c.is_ascii_alphanumeric() && c != '_', "_");
+    let model = build_robot(&robot_name, &base, &stations)?;
+    let file = format!("{}.urdf", scene.name);
+    std::fs::write(out.file(&file), to_xml(&model)?).with_context(|| format!("writing {file}"))?;
+    let trajectory = trajectory(&stations, TRAJECTORY_SAMPLES)?;
+    let trajectory_file = "trajectory.json".to_string();
+    std::fs::write(
+        out.file(&trajectory_file),
+        serde_json::to_string_pretty(&trajectory)? + "\n",
+    )
+    .context("writing trajectory.json")?;
+    Ok(UrdfExport {
+        file,
+        trajectory_file,
+        cut_joints: model.cut_joints,
+    })
+}
+
+fn style_of(part: &str, flap_names: &[String]) -> PartStyle {
+    if part == "wing" {
+        PartStyle::WingSkin
+    } else if flap_names.iter().any(|f| f == part) {
+        PartStyle::Flap
+    } else if part.contains("spar") {
+        PartStyle::Spar
+    } else if part == "torque-tube" {
+        PartStyle::TorqueTube
+    } else {
+        PartStyle::Other
+    }
+}
+
+/// The mechanism at flap rotation `t` (rad): links and joints, station frame.
+fn snapshot(
+    mechanism: &StationMechanism,
+    label: &str,
+    t: f64,
+    flap_outline: Vec<Vec<Point2<f64>>>,
+) -> MechanismSnapshot {
+    let synthesis = mechanism.track.synthesis();
+    let spec = mechanism.track.spec();
+    let turn = Rotation2::new(t);
+    let a = turn * synthesis.nut_pivot_stowed_m;
+    let d = turn * spec.centre_of_mass_stowed_m;
+    let f = turn * synthesis.outer_pin_stowed_m;
+    let g = turn * synthesis.inner_pin_stowed_m;
+    let b0 = synthesis.screw_mount_m;
+    let b = b0 + (a - b0).normalize() * spec.screw_length_m;
+    let link = |name: &str, points: Vec<Point2<f64>>| Link {
+        name: name.into(),
+        points,
+    };
+    let joint = |name: &str, at: Point2<f64>, fixed: bool| Joint {
+        name: name.into(),
+        at,
+        fixed,
+    };
+    MechanismSnapshot {
+        label: label.into(),
+        deflection_deg: t.to_degrees(),
+        flap_outline: flap_outline
+            .iter()
+            .map(|polygon| polygon.iter().map(|p| turn * p).collect())
+            .collect(),
+        links: vec![link("screw", vec![b0, b]), link("flap link", vec![a, d, f, d, g])],
+        joints: vec![
+            joint("A0", Point2::origin(), true),
+            joint("B0", b0, true),
+            joint("A", a, false),
+            joint("B", b, false),
+            joint("D", d, false),
+            joint("F", f, false),
+            joint("G", g, false),
+        ],
+    }
+}
+
+/// Writes `station-<name>.svg` and `plots-<name>.svg` per station; returns the file names.
+pub fn write_svgs(
+    scene: &Scene,
+    mechanisms: &[StationMechanism],
+    placed: &[Option<&PlacedStation>],
+    sweeps: &[Option<&[Sweep]>],
+    fairings: &[Option<FairingDepth>],
+    out: &StagedDir,
+) -> Result<Vec<String>> {
+    let flap_names: Vec<String> = scene.flap.iter().map(|f| f.name.clone()).collect();
+    let mut files = Vec::new();
+    for (i, (station, mechanism)) in scene.station.iter().zip(mechanisms).enumerate() {
+        let spec = mechanism.track.spec();
+        let synthesis = mechanism.track.synthesis();
+        let sections: Vec<SectionOutline> = placed[i]
+            .map(|p| {
+                p.sections
+                    .iter()
+                    .map(|s| SectionOutline {
+                        part: s.part_name.clone(),
+                        kind: style_of(&s.part_name, &flap_names),
+                        polygons: s.polygons.clone(),
+                    })
+                    .collect()
+            })
+            .unwrap_or_default();
+        // Show the rear of the wing only, as the thesis figures do: up to a margin ahead of
+        // the furthest-forward mechanism point or slot end, so the mechanism stays legible.
+        let reach = [spec.outer_slot_radius_m, synthesis.screw_mount_m.x]
+            .into_iter()
+            .fold(0.0, f64::max);
+        let x_limit = reach + VIEW_MARGIN_M;
+        let sections: Vec<SectionOutline> = sections
+            .into_iter()
+            .filter_map(|mut s| {
+                s.polygons = s
+                    .polygons
+                    .iter()
+                    .map(|p| clip_x_below(p, x_limit))
+                    .filter(|p| p.len() >= 3)
+                    .collect();
+                (!s.polygons.is_empty()).then_some(s)
+            })
+            .collect();
+        let flap_outline: Vec<Vec<Point2<f64>>> = sections
+            .iter()
+            .filter(|s| matches!(s.kind, PartStyle::Flap))
+            .flat_map(|s| s.polygons.clone())
+            .collect();
+        let takeoff = station
+            .flap
+            .as_ref()
+            .and_then(|name| scene.flap.iter().find(|f| &f.name == name))
+            .map_or(spec.rotation_range_rad / 2.0, |f| {
+                f.settings.takeoff_deg.to_radians().min(spec.rotation_range_rad)
+            });
+        let settings = vec![
+            snapshot(mechanism, "stowed", 0.0, flap_outline.clone()),
+            snapshot(mechanism, "takeoff", takeoff, flap_outline.clone()),
+            snapshot(mechanism, "landing", spec.rotation_range_rad, flap_outline.clone()),
+        ];
+        let envelope = vec![convex_hull(
+            (0..=20)
+                .flat_map(|k| {
+                    let s = snapshot(mechanism, "", spec.rotation_range_rad * k as f64 / 20.0, Vec::new());
+                    s.links.into_iter().flat_map(|l| l.points)
+                })
+                .collect(),
+        )];
+        let fairing_line = fairings[i].as_ref().filter(|f| f.depth_m > 0.0).map(|f| {
+            let y = f.point_st[1];
+            let xs = envelope[0].iter().map(|p| p.x);
+            let (lo, hi) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)));
+            vec![Point2::new(lo, y), Point2::new(hi, y)]
+        });
+        let slots = vec![
+            SlotArc {
+                name: "outer slot b1".into(),
+                centre: Point2::origin(),
+                radius_m: spec.outer_slot_radius_m,
+                start_rad: spec.outer_slot_start_angle_rad,
+                end_rad: spec.outer_slot_start_angle_rad + spec.rotation_range_rad,
+            },
+            SlotArc {
+                name: "inner slot c1".into(),
+                centre: Point2::origin(),
+                radius_m: spec.inner_slot_radius_m,
+                start_rad: spec.outer_slot_start_angle_rad + spec.inner_slot_offset_angle_rad,
+                end_rad: spec.outer_slot_start_angle_rad + spec.inner_slot_offset_angle_rad + spec.rotation_range_rad,
+            },
+        ];
+        let dimensions = vec![
+            Dimension::new("a1", Point2::origin(), synthesis.screw_mount_m),
+            Dimension::new("a2", Point2::origin(), synthesis.nut_pivot_stowed_m),
+            Dimension::new(
+                "a3",
+                synthesis.screw_mount_m,
+                synthesis.screw_mount_m
+                    + (synthesis.nut_pivot_stowed_m - synthesis.screw_mount_m).normalize() * spec.screw_length_m,
+            ),
+        ];
+        let fairing_text = fairings[i]
+            .as_ref()
+            .map(|f| {
+                format!(
+                    ", fairing depth {:.0} mm ({:.1} % flap chord)",
+                    f.depth_m * 1e3,
+                    f.depth_percent_flap_chord
+                )
+            })
+            .unwrap_or_default();
+        let drawing = StationDrawing {
+            title: format!("{}: station {}", scene.name, station.name),
+            subtitle: format!(
+                "circular-arc track with screw jack; s34 {:.1} -> {:.1} mm{fairing_text}",
+                synthesis.stroke_start_m * 1e3,
+                synthesis.stroke_end_m * 1e3
+            ),
+            sections,
+            settings,
+            slots,
+            envelope,
+            fairing_line,
+            dimensions,
+        };
+        let name = format!("station-{}.svg", station.name);
+        let svg = render_station_svg(&drawing).with_context(|| format!("drawing station {}", station.name))?;
+        std::fs::write(out.file(&name), svg).with_context(|| format!("writing {name}"))?;
+        files.push(name);
+        if let Some(cases) = sweeps[i] {
+            let name = format!("plots-{}.svg", station.name);
+            let svg = render_plots_svg(
+                &format!("{}: station {} against the nut position s34", scene.name, station.name),
+                &plots(cases),
+            )
+            .with_context(|| format!("plotting station {}", station.name))?;
+            std::fs::write(out.file(&name), svg).with_context(|| format!("writing {name}"))?;
+            files.push(name);
+        }
+    }
+    Ok(files)
+}
+
+fn plots(cases: &[Sweep]) -> Vec<Plot> {
+    let series = |case: &Sweep, name: String, y: &dyn Fn(&flapwright_mechanism::SweepSample) -> f64| Series {
+        name,
+        points: case.samples.iter().map(|s| (s.input_m * 1e3, y(s))).collect(),
+    };
+    let x_label = "nut position s34 (mm)".to_string();
+    let first = &cases[..cases.len().min(1)];
+    let plot =
+        |title: &str, y_label: &str, cases: &[Sweep], y: &dyn Fn(&flapwright_mechanism::SweepSample) -> f64| Plot {
+            title: title.into(),
+            x_label: x_label.clone(),
+            y_label: y_label.into(),
+            series: cases.iter().map(|c| series(c, c.load_case.clone(), y)).collect(),
+        };
+    vec![
+        plot("Flap deflection", "deflection (deg)", first, &|s| s.deflection_deg),
+        plot("Transmission angle", "transmission angle (deg)", first, &|s| {
+            s.transmission_angle_deg
+        }),
+        plot("Actuator force", "F_input (N)", cases, &|s| s.actuator_force_n),
+        plot("Screw raise torque", "T_R (N m)", cases, &|s| s.raise_torque_nm),
+        plot("Screw lower torque", "T_L (N m)", cases, &|s| s.lower_torque_nm),
+        Plot {
+            title: format!(
+                "Slot reactions ({})",
+                first.first().map_or("", |c| c.load_case.as_str())
+            ),
+            x_label: x_label.clone(),
+            y_label: "reaction (N)".into(),
+            series: first
+                .iter()
+                .flat_map(|c| {
+                    [
+                        series(c, "G12F, outer slot".into(), &|s| s.joint_reactions_n.outer_pin_f_n),
+                        series(c, "G12G, inner slot".into(), &|s| s.joint_reactions_n.inner_pin_g_n),
+                    ]
+                })
+                .collect(),
+        },
+    ]
+}
+
+/// How far ahead of the mechanism the station drawing shows the wing (m).
+const VIEW_MARGIN_M: f64 = 0.15;
+
+/// The part of `polygon` with x <= `limit` (Sutherland-Hodgman against one half-plane).
+fn clip_x_below(polygon: &[Point2<f64>], limit: f64) -> Vec<Point2<f64>> {
+    let mut clipped = Vec::with_capacity(polygon.len() + 2);
+    for (i, a) in polygon.iter().enumerate() {
+        let b = polygon[(i + 1) % polygon.len()];
+        let (a_in, b_in) = (a.x <= limit, b.x <= limit);
+        if a_in {
+            clipped.push(*a);
+        }
+        if a_in != b_in {
+            let t = (limit - a.x) / (b.x - a.x);
+            clipped.push(Point2::new(limit, a.y + t * (b.y - a.y)));
+        }
+    }
+    clipped
+}
+
+/// Convex hull (Andrew's monotone chain), counter-clockwise.
+fn convex_hull(mut points: Vec<Point2<f64>>) -> Vec<Point2<f64>> {
+    points.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    points.dedup();
+    if points.len() < 3 {
+        return points;
+    }
+    let cross =
+        |o: &Point2<f64>, a: &Point2<f64>, b: &Point2<f64>| (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    let mut hull: Vec<Point2<f64>> = Vec::with_capacity(points.len() * 2);
+    for pass in [false, true] {
+        let start = hull.len();
+        let iter: Box<dyn Iterator<Item = &Point2<f64>>> = if pass {
+            Box::new(points.iter().rev())
+        } else {
+            Box::new(points.iter())
+        };
+        for p in iter {
+            while hull.len() >= start + 2 && cross(&hull[hull.len() - 2], &hull[hull.len() - 1], p) <= 0.0 {
+                hull.pop();
+            }
+            hull.push(*p);
+        }
+        hull.pop();
+    }
+    hull
+}

@@ -1,0 +1,98 @@
+//! `flapwright export`: URDF (read back with urdf-rs and checked against the URDF rules),
+//! trajectory, STL set and SVG files.
+
+use std::collections::BTreeSet;
+
+use crate::run_flapwright;
+
+#[test]
+fn export_writes_a_valid_urdf_with_its_meshes_and_drawings() {
+    let dir = tempfile::tempdir().unwrap();
+    let output = run_flapwright(dir.path(), &["export", "--out", "exported"]);
+    assert!(
+        output.status.success(),
+        "stderr:\n{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let out = dir.path().join("exported");
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap()).unwrap();
+
+    let urdf_file = report["files"]["urdf"]["file"].as_str().unwrap();
+    let xml = std::fs::read_to_string(out.join(urdf_file)).unwrap();
+    assert!(xml.starts_with("<?xml"), "XML declaration");
+    let robot = urdf_rs::read_from_string(&xml).expect("urdf-rs reads the file back");
+    let violations = flapwright_mechanism::urdf::check_rules(&robot);
+    assert!(violations.is_empty(), "URDF rules: {violations:?}");
+    // Every mesh the URDF names is a file beside it.
+    for link in &robot.links {
+        for visual in &link.visual {
+            if let urdf_rs::Geometry::Mesh { filename, .. } = &visual.geometry {
+                assert!(
+                    out.join(filename).is_file(),
+                    "mesh {filename} of link {} exists",
+                    link.name
+                );
+            }
+        }
+    }
+    let cuts = report["files"]["urdf"]["cut_joints"].as_array().unwrap();
+    assert!(!cuts.is_empty(), "closed loops are cut and recorded");
+    for cut in cuts {
+        let station = cut["station"].as_str().unwrap();
+        assert!(xml.contains(station), "the file's comment names the cut at {station}");
+    }
+    let trajectory: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("trajectory.json")).unwrap()).unwrap();
+    let names = trajectory["joint_names"].as_array().unwrap();
+    for sample in trajectory["samples"].as_array().unwrap() {
+        assert_eq!(sample["joint_values"].as_array().unwrap().len(), names.len());
+    }
+
+    // STL files are exactly the scene's parts.
+    let stl: BTreeSet<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .filter(|n| n.ends_with(".stl"))
+        .collect();
+    let expected: BTreeSet<String> = ["wing", "flap", "front-spar", "rear-spar", "torque-tube"]
+        .iter()
+        .map(|p| format!("{p}.stl"))
+        .collect();
+    assert_eq!(stl, expected);
+
+    // One drawing and one plot page per station, each showing the three settings.
+    let svgs: Vec<&str> = report["files"]["svg"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s.as_str().unwrap())
+        .collect();
+    assert_eq!(svgs.len(), 4, "{svgs:?}");
+    for name in svgs.iter().filter(|n| n.starts_with("station-")) {
+        let svg = std::fs::read_to_string(out.join(name)).unwrap();
+        for setting in ["stowed", "takeoff", "landing"] {
+            assert!(svg.contains(&format!("setting-{setting}")), "{name} shows {setting}");
+        }
+        assert!(svg.contains("mm"), "{name} has units");
+    }
+}
+
+#[test]
+fn export_flags_select_the_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let output = run_flapwright(dir.path(), &["export", "--svg", "--out", "svg-only"]);
+    assert!(
+        output.status.success(),
+        "stderr:\n{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let names: BTreeSet<String> = std::fs::read_dir(dir.path().join("svg-only"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    assert!(
+        names.iter().all(|n| n.ends_with(".svg") || n == "report.json"),
+        "{names:?}"
+    );
+}

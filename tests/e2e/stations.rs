@@ -111,10 +111,18 @@ fn default_scene_stations_have_frames_sections_and_sweeps() {
 #[test]
 fn thesis_case_study_scene_reproduces_table_3() {
     let (_dir, report) = design("data/scenes/thesis-case-study.toml");
-    assert_eq!(
-        report["stages"],
-        serde_json::json!(["synthesis", "kinematics", "sizing"]),
-        "no 3D stage without a wing"
+    let stages: Vec<&str> = report["stages"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s.as_str().unwrap())
+        .collect();
+    for skipped in ["geometry", "meshing", "planes", "interference", "urdf"] {
+        assert!(!stages.contains(&skipped), "no 3D stage without a wing: {stages:?}");
+    }
+    assert!(
+        stages.contains(&"kinematics") && stages.contains(&"sizing"),
+        "{stages:?}"
     );
     let mechanism = &report["stations"][0]["mechanism"];
     let synthesis = &mechanism["synthesis"];

@@ -5,10 +5,19 @@ use nalgebra::{Point2, Point3, Vector3};
 use crate::error::{Error, Result};
 use crate::mesh::TriMesh;
 
+/// A vertex closer than this (fraction of the polygon's bounding-box diagonal) to an ear's
+/// triangle counts as inside it and blocks the ear. Resampled airfoils have long runs of
+/// collinear points (straight segments of coarse `.dat` data); rounding puts some of them a
+/// hair outside the long diagonal of a fan over the run, and clipping that ear would leave
+/// the run as a zero-area remainder that no ear can clip (and T-junctions in the cap).
+const EAR_BLOCK_DISTANCE_FRACTION: f64 = 1e-10;
+
 /// Triangulates a simple polygon by ear clipping, always clipping the best-shaped ear
 /// (largest `2 area / longest edge^2`), so that runs of nearly collinear points (flat parts
 /// of resampled airfoils) are fanned from the opposite side instead of being left as a
-/// sliver at the end. Triangles have the polygon's orientation. O(n^2).
+/// sliver at the end. An ear is blocked by any other live vertex inside its triangle or
+/// within [`EAR_BLOCK_DISTANCE_FRACTION`] of its boundary. Triangles have the polygon's
+/// orientation. O(n^2) per clipped ear in the worst case.
 pub(crate) fn triangulate_polygon(polygon: &[Point2<f64>], what: &'static str) -> Result<Vec<[usize; 3]>> {
     let n = polygon.len();
     let fail = || Error::Triangulation { what, count: n };
@@ -23,6 +32,11 @@ pub(crate) fn triangulate_polygon(polygon: &[Point2<f64>], what: &'static str) -
         return Err(fail());
     }
     let sign = signed_area.signum();
+    let (low, high) = polygon.iter().fold(
+        (polygon[0].coords, polygon[0].coords),
+        |(low, high), p| (low.inf(&p.coords), high.sup(&p.coords)),
+    );
+    let block_distance = EAR_BLOCK_DISTANCE_FRACTION * (high - low).norm();
     // Doubly linked list of remaining vertices.
     let mut next: Vec<usize> = (0..n).map(|i| (i + 1) % n).collect();
     let mut prev: Vec<usize> = (0..n).map(|i| (i + n - 1) % n).collect();
@@ -43,9 +57,12 @@ pub(crate) fn triangulate_polygon(polygon: &[Point2<f64>], what: &'static str) -
                 return false;
             }
             let p = polygon[j];
-            (bp - a).perp(&(p - a)) * sign >= 0.0
-                && (c - bp).perp(&(p - bp)) * sign >= 0.0
-                && (a - c).perp(&(p - c)) * sign >= 0.0
+            // p lies inside (or within the tolerance of) the line of edge from -> to.
+            let inside = |from: Point2<f64>, to: Point2<f64>| {
+                let edge = to - from;
+                edge.perp(&(p - from)) * sign >= -block_distance * edge.norm()
+            };
+            inside(a, bp) && inside(bp, c) && inside(c, a)
         });
         (!blocked).then_some(cross / longest)
     };
@@ -209,5 +226,38 @@ mod tests {
             .map(|t| 0.5 * (l_shape[t[1]] - l_shape[t[0]]).perp(&(l_shape[t[2]] - l_shape[t[0]])))
             .sum();
         approx::assert_relative_eq!(area, 3.0, max_relative = 1e-12);
+    }
+
+    /// Regression: NACA 63-215 from its coarse `.dat` file (long straight segments) resampled
+    /// finely has runs of collinear points; rounding (here from rotation and scaling, as in
+    /// the projected 3D caps) once let an ear fan over a run, leaving a zero-area remainder.
+    #[test]
+    fn resampled_dat_airfoil_with_collinear_runs_triangulates_exactly() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/airfoils/n63215.dat");
+        let airfoil = crate::Airfoil::from_dat(std::fs::File::open(path).unwrap()).unwrap();
+        let area = |p: &[Point2<f64>], t: &[usize; 3]| 0.5 * (p[t[1]] - p[t[0]]).perp(&(p[t[2]] - p[t[0]]));
+        for points_per_side in [20, 60, 110, 120, 160, 200, 240, 300] {
+            let mut points = airfoil.resampled(points_per_side).unwrap().points;
+            points.pop(); // sharp trailing edge: drop the repeated point
+            for (angle, scale) in [(0.0, 1.0), (-0.035, 2.1), (0.3, 1.2), (1.7, 0.01)] {
+                let rotation = nalgebra::Rotation2::new(angle);
+                let polygon: Vec<Point2<f64>> = points
+                    .iter()
+                    .map(|p| Point2::from(rotation * p.coords * scale) + nalgebra::Vector2::new(1.3, -0.2))
+                    .collect();
+                let triangles = triangulate_polygon(&polygon, "airfoil")
+                    .unwrap_or_else(|e| panic!("{points_per_side} per side, angle {angle}: {e}"));
+                assert_eq!(triangles.len(), polygon.len() - 2);
+                let n = polygon.len();
+                let polygon_area: f64 = (0..n).map(|i| 0.5 * polygon[i].coords.perp(&polygon[(i + 1) % n].coords)).sum();
+                let mut sum = 0.0;
+                for t in &triangles {
+                    let a = area(&polygon, t);
+                    assert!(a > 0.0, "{points_per_side} per side, angle {angle}: triangle {t:?} area {a}");
+                    sum += a;
+                }
+                approx::assert_relative_eq!(sum, polygon_area, max_relative = 1e-9);
+            }
+        }
     }
 }

@@ -5,5 +5,6 @@ mod dat;
 mod fixture;
 mod naca;
 mod parts;
+mod scene;
 mod volume;
 mod wing;

@@ -60,12 +60,19 @@ fn main() {
     println!("reference: 100 points per side, 33 samples, tolerance 1e-5 m: {reference_time:.2} s");
     let (meshed_reference, _) = run(60, 33, 1e-5);
     println!("\nsweep knobs (60 points per side, against 60 points per side, 33 samples, 1e-5 m):");
-    println!("{:>8} {:>12} {:>16} {:>18} {:>10}", "samples", "tolerance_m", "max |error| mm", "max residual mm", "time s");
+    println!(
+        "{:>8} {:>12} {:>16} {:>18} {:>10}",
+        "samples", "tolerance_m", "max |error| mm", "max residual mm", "time s"
+    );
     for samples in [3, 5, 9, 17] {
         for tolerance in [1e-2, 3e-3, 1e-3, 1e-4] {
             let (pairs, time) = run(60, samples, tolerance);
             let (error, bound) = error_against(&meshed_reference, &pairs);
-            println!("{samples:>8} {tolerance:>12.0e} {:>16.3} {:>18.3} {time:>10.3}", error * 1e3, bound * 1e3);
+            println!(
+                "{samples:>8} {tolerance:>12.0e} {:>16.3} {:>18.3} {time:>10.3}",
+                error * 1e3,
+                bound * 1e3
+            );
             assert!(bound <= tolerance + 1e-12, "the certified bound meets the tolerance");
         }
     }

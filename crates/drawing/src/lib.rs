@@ -52,6 +52,7 @@
 mod annotate;
 mod chart;
 mod error;
+mod hull;
 mod labels;
 mod layers;
 mod legend;
@@ -64,6 +65,7 @@ mod validate;
 mod view;
 
 pub use error::{Error, Result};
+pub use hull::convex_hull;
 pub use model::{Dimension, Joint, Link, MechanismSnapshot, PartStyle, SectionOutline, SlotArc, StationDrawing};
 pub use plot::{plots_page_size_px, render_plots_svg, Plot, Series, PLOT_COLUMNS};
 pub use station::{render_station_svg, STATION_PAGE_WIDTH_PX};

@@ -21,7 +21,9 @@
 //! # Design notes
 //!
 //! - Every loft joins rings with equal point counts (airfoils are resampled with cosine
-//!   spacing in arc length, see [`Airfoil::resampled`]); caps are ear-clipped; the result is
+//!   spacing in arc length, see [`Airfoil::resampled`]); caps are ear-clipped (a vertex within
+//!   a hair of an ear blocks it, so the collinear runs of finely resampled coarse `.dat`
+//!   data are fanned, not left as zero-area remainders); the result is
 //!   oriented by its signed volume and checked watertight before it is returned.
 //! - A wing with flaps is several closed shells in one mesh (plain spans and flap spans
 //!   with a straight cove wall), touching along planes y = const: robust and exact.
@@ -31,8 +33,8 @@
 //!
 //! - The cove is a straight wall at the flap's foremost point less
 //!   [`flap::COVE_GAP_CHORD_FRACTION`]; there is no shroud (the upper skin does not extend
-//!   over the flap). The flap is narrower than its cut-out by [`flap::SIDE_GAP_CHORD_FRACTION`]
-//!   of the chord at each side.
+//!   over the flap). The flap is narrower than its cut-out at each side by
+//!   [`FlapSpec::side_gap_m`], by default [`flap::SIDE_GAP_CHORD_FRACTION`] of the chord.
 //! - Spars are plates normal to the chord line; the torque tube has mitred joints.
 //! - Between stations, surfaces are ruled (straight lines between corresponding points).
 //!

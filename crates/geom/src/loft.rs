@@ -17,7 +17,7 @@ const EAR_BLOCK_DISTANCE_FRACTION: f64 = 1e-10;
 /// of resampled airfoils) are fanned from the opposite side instead of being left as a
 /// sliver at the end. An ear is blocked by any other live vertex inside its triangle or
 /// within [`EAR_BLOCK_DISTANCE_FRACTION`] of its boundary. Triangles have the polygon's
-/// orientation. O(n^2) per clipped ear in the worst case.
+/// orientation. O(n^2) typically, O(n^3) when blocked ears force a full re-scoring.
 pub(crate) fn triangulate_polygon(polygon: &[Point2<f64>], what: &'static str) -> Result<Vec<[usize; 3]>> {
     let n = polygon.len();
     let fail = || Error::Triangulation { what, count: n };
@@ -32,10 +32,11 @@ pub(crate) fn triangulate_polygon(polygon: &[Point2<f64>], what: &'static str) -
         return Err(fail());
     }
     let sign = signed_area.signum();
-    let (low, high) = polygon.iter().fold(
-        (polygon[0].coords, polygon[0].coords),
-        |(low, high), p| (low.inf(&p.coords), high.sup(&p.coords)),
-    );
+    let (low, high) = polygon
+        .iter()
+        .fold((polygon[0].coords, polygon[0].coords), |(low, high), p| {
+            (low.inf(&p.coords), high.sup(&p.coords))
+        });
     let block_distance = EAR_BLOCK_DISTANCE_FRACTION * (high - low).norm();
     // Doubly linked list of remaining vertices.
     let mut next: Vec<usize> = (0..n).map(|i| (i + 1) % n).collect();
@@ -249,11 +250,16 @@ mod tests {
                     .unwrap_or_else(|e| panic!("{points_per_side} per side, angle {angle}: {e}"));
                 assert_eq!(triangles.len(), polygon.len() - 2);
                 let n = polygon.len();
-                let polygon_area: f64 = (0..n).map(|i| 0.5 * polygon[i].coords.perp(&polygon[(i + 1) % n].coords)).sum();
+                let polygon_area: f64 = (0..n)
+                    .map(|i| 0.5 * polygon[i].coords.perp(&polygon[(i + 1) % n].coords))
+                    .sum();
                 let mut sum = 0.0;
                 for t in &triangles {
                     let a = area(&polygon, t);
-                    assert!(a > 0.0, "{points_per_side} per side, angle {angle}: triangle {t:?} area {a}");
+                    assert!(
+                        a > 0.0,
+                        "{points_per_side} per side, angle {angle}: triangle {t:?} area {a}"
+                    );
                     sum += a;
                 }
                 approx::assert_relative_eq!(sum, polygon_area, max_relative = 1e-9);

@@ -3,8 +3,8 @@
 
 use anyhow::{Context, Result};
 use flapwright_drawing::{
-    render_plots_svg, render_station_svg, Dimension, Joint, Link, MechanismSnapshot, PartStyle, Plot, SectionOutline,
-    Series, SlotArc, StationDrawing,
+    convex_hull, render_plots_svg, render_station_svg, Dimension, Joint, Link, MechanismSnapshot, PartStyle, Plot,
+    SectionOutline, Series, SlotArc, StationDrawing,
 };
 use flapwright_interference::FairingDepth;
 use flapwright_mechanism::urdf::{build_robot, to_xml, trajectory, BaseLink, CutJoint, MeshRef, StationMechanism3d};
@@ -364,32 +364,4 @@ fn clip_x_below(polygon: &[Point2<f64>], limit: f64) -> Vec<Point2<f64>> {
         }
     }
     clipped
-}
-
-/// Convex hull (Andrew's monotone chain), counter-clockwise.
-fn convex_hull(mut points: Vec<Point2<f64>>) -> Vec<Point2<f64>> {
-    points.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
-    points.dedup();
-    if points.len() < 3 {
-        return points;
-    }
-    let cross =
-        |o: &Point2<f64>, a: &Point2<f64>, b: &Point2<f64>| (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-    let mut hull: Vec<Point2<f64>> = Vec::with_capacity(points.len() * 2);
-    for pass in [false, true] {
-        let start = hull.len();
-        let iter: Box<dyn Iterator<Item = &Point2<f64>>> = if pass {
-            Box::new(points.iter().rev())
-        } else {
-            Box::new(points.iter())
-        };
-        for p in iter {
-            while hull.len() >= start + 2 && cross(&hull[hull.len() - 2], &hull[hull.len() - 1], p) <= 0.0 {
-                hull.pop();
-            }
-            hull.push(*p);
-        }
-        hull.pop();
-    }
-    hull
 }

@@ -80,29 +80,6 @@ pub fn circle(centre: P, radius_m: f64) -> Vec<P> {
         .collect()
 }
 
-/// Convex hull (Andrew's monotone chain), counter-clockwise.
-pub fn convex_hull(mut points: Vec<P>) -> Vec<P> {
-    points.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
-    let cross = |o: &P, a: &P, b: &P| (a - o).perp(&(b - o));
-    let mut hull: Vec<P> = Vec::new();
-    for pass in 0..2 {
-        let start = hull.len();
-        let iter: Box<dyn Iterator<Item = &P>> = if pass == 0 {
-            Box::new(points.iter())
-        } else {
-            Box::new(points.iter().rev())
-        };
-        for p in iter {
-            while hull.len() >= start + 2 && cross(&hull[hull.len() - 2], &hull[hull.len() - 1], p) <= 0.0 {
-                hull.pop();
-            }
-            hull.push(*p);
-        }
-        hull.pop();
-    }
-    hull
-}
-
 /// Distance from `p` to segment `a`-`b`, metres.
 pub fn segment_distance(p: &P, a: &P, b: &P) -> f64 {
     let ab = b - a;

@@ -19,7 +19,8 @@ use std::path::{Path, PathBuf};
 
 mod geometry;
 
-use geometry::{circle, clearance, convex_hull, flap_outline, mm, rotate, wing_skin, P};
+use flapwright_drawing::convex_hull;
+use geometry::{circle, clearance, flap_outline, mm, rotate, wing_skin, P};
 
 /// The thesis Table 2 mechanism, positions in the station frame.
 struct Demo {

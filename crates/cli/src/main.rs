@@ -1,5 +1,6 @@
 //! `flapwright`: designs the flap support and drive mechanisms of a wing from a scene file.
 
+use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -137,7 +138,22 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             error: anyhow::anyhow!("`check` needs a scene with a [wing]: there is no 3D geometry to check"),
         });
     }
-    let outcome = pipeline::design(&inputs, mode, &staged)?;
+    // A spinner naming the running stage, only for a person watching a terminal.
+    let spinner = (!cli.quiet && !cli.json && std::io::stdout().is_terminal()).then(|| {
+        let bar = indicatif::ProgressBar::new_spinner();
+        bar.enable_steady_tick(std::time::Duration::from_millis(100));
+        bar
+    });
+    let on_stage = |stage: &str| {
+        if let Some(bar) = &spinner {
+            bar.set_message(format!("{stage}..."));
+        }
+    };
+    let outcome = pipeline::design_with_progress(&inputs, mode, &staged, &on_stage);
+    if let Some(bar) = &spinner {
+        bar.finish_and_clear();
+    }
+    let outcome = outcome?;
     let written = staged
         .commit()
         .with_context(|| format!("moving results into {}", out.display()))?;

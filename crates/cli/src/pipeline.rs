@@ -54,13 +54,15 @@ pub struct Outcome {
 }
 
 /// Times stages and keeps their order.
-struct Stages {
+struct Stages<'p> {
     names: Vec<String>,
     timings: Vec<StageTiming>,
+    on_stage: &'p dyn Fn(&str),
 }
 
-impl Stages {
+impl Stages<'_> {
     fn run<T>(&mut self, name: &str, work: impl FnOnce() -> Result<T>) -> Result<T> {
+        (self.on_stage)(name);
         let start = Instant::now();
         let value = work().with_context(|| format!("stage `{name}`"))?;
         self.names.push(name.to_string());
@@ -83,12 +85,24 @@ pub enum Mode {
 
 /// Designs the scene and writes `report.json` and the requested files into `out`.
 pub fn design(inputs: &Inputs<'_>, mode: Mode, out: &StagedDir) -> Result<Outcome> {
+    design_with_progress(inputs, mode, out, &|_| {})
+}
+
+/// As [`design`], calling `on_stage` with each stage's name as it starts (for a progress
+/// display; libraries below never print).
+pub fn design_with_progress(
+    inputs: &Inputs<'_>,
+    mode: Mode,
+    out: &StagedDir,
+    on_stage: &dyn Fn(&str),
+) -> Result<Outcome> {
     let scene = inputs.scene;
     let outputs = &scene.outputs;
     let full = mode == Mode::Design;
     let mut stages = Stages {
         names: Vec::new(),
         timings: Vec::new(),
+        on_stage,
     };
     let mut parts: Vec<PartReport> = Vec::new();
     let mut warnings: Vec<String> = Vec::new();

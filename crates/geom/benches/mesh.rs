@@ -1,9 +1,11 @@
 //! Building every part mesh of the representative wing (wing skin with two flap coves, two
-//! flaps, two spars, torque tube) at a few resolutions. Run:
+//! flaps, two spars, torque tube) at a few resolutions, and the mesh-against-mesh distance
+//! of a flap nested in its cove. Run:
 //! `cargo bench -p flapwright-geom --bench mesh`.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use flapwright_geom::{CollisionShape, MeshResolution};
+use flapwright_geom::{compute_distance, CollisionShape, MeshResolution};
+use nalgebra::{Isometry3, Translation3, UnitQuaternion};
 
 #[path = "../tests/fixture.rs"]
 mod fixture;
@@ -25,6 +27,38 @@ fn build_parts(c: &mut Criterion) {
     let parts = model.compute_parts(MeshResolution::default()).unwrap();
     c.bench_function("collision_shape_from_wing_mesh", |b| {
         b.iter(|| CollisionShape::from_mesh(&parts[0].mesh).unwrap())
+    });
+
+    let flap = &model.flaps()[0];
+    let (hinge_point, hinge_direction) = flap.hinge_axis_ac();
+    let shape_of = |name: &str| {
+        let part = parts.iter().find(|p| p.name == name).unwrap();
+        CollisionShape::from_mesh(&part.mesh).unwrap()
+    };
+    let (flap_shape, wing_shape) = (shape_of(&flap.spec().name), shape_of("wing"));
+    let turn = UnitQuaternion::from_axis_angle(&hinge_direction, 5f64.to_radians());
+    let pose = Translation3::from(hinge_point.coords) * turn * Translation3::from(-hinge_point.coords);
+    c.bench_function("distance_flap_to_wing_skin_nested", |b| {
+        b.iter(|| compute_distance(&flap_shape, &pose, &wing_shape, &Isometry3::identity()).unwrap())
+    });
+    // The same query through parry's composite-against-composite distance, for comparison.
+    let parry_mesh = |name: &str| {
+        let part = parts.iter().find(|p| p.name == name).unwrap();
+        let vertices = part
+            .mesh
+            .vertices
+            .iter()
+            .map(|p| glamx::DVec3::new(p.x, p.y, p.z))
+            .collect();
+        parry3d_f64::shape::TriMesh::new(vertices, part.mesh.triangles.clone()).unwrap()
+    };
+    let (flap_mesh, wing_mesh) = (parry_mesh(&flap.spec().name), parry_mesh("wing"));
+    let parry_pose = parry3d_f64::math::Pose::from(pose);
+    c.bench_function("distance_flap_to_wing_skin_nested_parry_query", |b| {
+        b.iter(|| {
+            parry3d_f64::query::distance(&parry_pose, &flap_mesh, &parry3d_f64::math::Pose::IDENTITY, &wing_mesh)
+                .unwrap()
+        })
     });
 }
 

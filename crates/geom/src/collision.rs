@@ -6,8 +6,9 @@
 //! inside a mesh reports a positive distance to the nearest face, while
 //! [`compute_intersects`] (meshes are built oriented) reports it as intersecting. Model solids as convex shapes (capsule, cuboid,
 //! cylinder, convex hull) or test containment with [`CollisionShape::contains_point`],
-//! which uses the mesh orientation (pseudo-normals). Distance queries between two large
-//! nested meshes are slow: prune with bounding boxes first.
+//! which uses the mesh orientation (pseudo-normals). Mesh-against-mesh distances go through
+//! `mesh_pair`, not parry's composite-vs-composite query, which is slow for nested meshes
+//! (the module says why).
 
 use glamx::DVec3;
 use nalgebra::{Isometry3, Point3, Vector3};
@@ -17,6 +18,8 @@ use parry3d_f64::shape::{SharedShape, TriMeshFlags};
 
 use crate::error::{require_range, Error, Result};
 use crate::mesh::TriMesh;
+
+mod mesh_pair;
 
 /// A shape for clearance queries, in its own local frame (placed by a pose at query time).
 #[derive(Clone)]
@@ -134,6 +137,20 @@ pub fn compute_distance(
     pose_b: &Isometry3<f64>,
 ) -> Result<Proximity> {
     let (pa, pb) = (to_pose(pose_a), to_pose(pose_b));
+    if let (Some(mesh_a), Some(mesh_b)) = (a.shape.as_trimesh(), b.shape.as_trimesh()) {
+        let closest = mesh_pair::mesh_pair_distance(mesh_a, &pa, mesh_b, &pb);
+        if !closest.distance.is_finite() || closest.distance == f64::MAX {
+            return Err(Error::NotFinite {
+                what: "collision distance (m)",
+                value: closest.distance,
+            });
+        }
+        return Ok(Proximity {
+            distance_m: closest.distance,
+            point_a_ac: to_point(closest.point_a),
+            point_b_ac: to_point(closest.point_b),
+        });
+    }
     let unsupported = |what: &str| Error::Collision {
         reason: format!(
             "{what} not supported between {:?} and {:?}",

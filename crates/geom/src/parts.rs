@@ -25,6 +25,7 @@ pub struct MeshResolution {
     /// Airfoil points per side (leading edge shared), cosine spaced; >= 3.
     pub points_per_side: usize,
     /// Spanwise stations per metre of span, in addition to every section and flap end; > 0.
+    /// The torque tube gets rings at the same spacing along its path.
     pub spanwise_stations_per_m: f64,
     /// Points round the torque tube; >= 3.
     pub tube_segments: usize,
@@ -195,7 +196,8 @@ impl WingModel {
             });
         }
         if let Some(tube) = &self.torque_tube {
-            let mesh = loft_closed(&tube.rings(resolution.tube_segments)?, "torque tube")?;
+            let spacing_m = 1.0 / resolution.spanwise_stations_per_m;
+            let mesh = loft_closed(&tube.rings(resolution.tube_segments, spacing_m)?, "torque tube")?;
             parts.push(Part {
                 name: "torque-tube".to_owned(),
                 kind: PartKind::TorqueTube,

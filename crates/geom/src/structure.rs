@@ -116,7 +116,10 @@ impl TorqueTubeSpec {
     /// Rings of `segments` points round the path: a circle at the start normal to the first
     /// segment, carried along each segment to the mitre (bisector) plane at each bend and to
     /// the end plane, so the tube is exactly a union of cylinders with mitred joints.
-    pub(crate) fn rings(&self, segments: usize) -> Result<Vec<Vec<Point3<f64>>>> {
+    /// Between mitres, rings are added so that no generator is longer than
+    /// `max_ring_spacing_m`: the surface is the same, but collision queries prune far
+    /// better on short triangles than on slivers as long as the tube.
+    pub(crate) fn rings(&self, segments: usize, max_ring_spacing_m: f64) -> Result<Vec<Vec<Point3<f64>>>> {
         self.validate()?;
         let directions = self.directions()?;
         let first = directions[0];
@@ -140,13 +143,24 @@ impl TorqueTubeSpec {
                 Some(next) => (direction.into_inner() + next.into_inner()).normalize(),
                 None => direction.into_inner(),
             };
-            ring = ring
+            let next_ring: Vec<Point3<f64>> = ring
                 .iter()
                 .map(|p| {
                     let s = (vertex - p).dot(&plane_normal) / direction.dot(&plane_normal);
                     p + direction.into_inner() * s
                 })
                 .collect();
+            let longest = ring
+                .iter()
+                .zip(&next_ring)
+                .map(|(p, q)| (q - p).norm())
+                .fold(0.0, f64::max);
+            let pieces = (longest / max_ring_spacing_m).ceil().max(1.0) as usize;
+            for j in 1..pieces {
+                let f = j as f64 / pieces as f64;
+                rings.push(ring.iter().zip(&next_ring).map(|(p, q)| p + (q - p) * f).collect());
+            }
+            ring = next_ring;
             rings.push(ring.clone());
         }
         Ok(rings)

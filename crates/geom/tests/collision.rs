@@ -82,3 +82,63 @@ fn mesh_cube_against_ball_and_containment() {
     assert!(CollisionShape::ball(-1.0).is_err());
     assert!(CollisionShape::convex_hull(&[Point3::origin(); 3]).is_err());
 }
+
+/// parry's own composite-vs-composite distance, the reference for the crate's mesh-pair
+/// search (which must find the same minimum over triangle pairs, only faster).
+fn parry_mesh_distance(a: &TriMesh, pose_a: &Isometry3<f64>, b: &TriMesh, pose_b: &Isometry3<f64>) -> f64 {
+    use parry3d_f64::shape::TriMesh as ParryMesh;
+    let to_parry = |m: &TriMesh| {
+        let vertices = m.vertices.iter().map(|p| glamx::DVec3::new(p.x, p.y, p.z)).collect();
+        ParryMesh::new(vertices, m.triangles.clone()).unwrap()
+    };
+    let pose = |p: &Isometry3<f64>| parry3d_f64::math::Pose::from(*p);
+    parry3d_f64::query::distance(&pose(pose_a), &to_parry(a), &pose(pose_b), &to_parry(b))
+        .unwrap()
+        .distance
+}
+
+#[test]
+fn mesh_pair_distance_equals_parry_for_nested_and_crossing_meshes() {
+    use flapwright_geom::parts::MeshResolution;
+    let model = super::fixture::model();
+    let resolution = MeshResolution {
+        points_per_side: 16,
+        spanwise_stations_per_m: 2.0,
+        tube_segments: 8,
+    };
+    let parts = model.compute_parts(resolution).unwrap();
+    let flap = &model.flaps()[0];
+    let (hinge_point, hinge_direction) = flap.hinge_axis_ac();
+    let flap_mesh = &parts.iter().find(|p| p.name == flap.spec().name).unwrap().mesh;
+    let flap_shape = CollisionShape::from_mesh(flap_mesh).unwrap();
+    let identity = Isometry3::identity();
+    let mut checked = 0;
+    for other in parts.iter().filter(|p| p.name != flap.spec().name) {
+        let other_shape = CollisionShape::from_mesh(&other.mesh).unwrap();
+        // Stowed (nested in the cove), deployed, and turned the wrong way into the wing.
+        for angle_deg in [0.0, 12.0, 40.0, -25.0] {
+            let turn = UnitQuaternion::from_axis_angle(&hinge_direction, f64::to_radians(angle_deg));
+            let pose = Translation3::from(hinge_point.coords) * turn * Translation3::from(-hinge_point.coords);
+            let ours = compute_distance(&flap_shape, &pose, &other_shape, &identity).unwrap();
+            let swapped = compute_distance(&other_shape, &identity, &flap_shape, &pose).unwrap();
+            let reference = parry_mesh_distance(flap_mesh, &pose, &other.mesh, &identity);
+            let what = format!("flap at {angle_deg} deg vs {}", other.name);
+            assert!(
+                (ours.distance_m - reference).abs() <= 1e-12,
+                "{what}: {} vs parry {reference}",
+                ours.distance_m
+            );
+            assert!((swapped.distance_m - reference).abs() <= 1e-12, "{what} (swapped)");
+            // Clear: the reported points are that far apart. Crossing: they are a contact's
+            // points, apart by a penetration depth. Either way each pair mirrors the other.
+            let gap = (ours.point_a_ac - ours.point_b_ac).norm();
+            if reference > 0.0 {
+                assert!((gap - ours.distance_m).abs() <= 1e-9, "{what}: points {gap} apart");
+            }
+            assert_relative_eq!(ours.point_a_ac, swapped.point_b_ac, epsilon = 1e-9);
+            checked += usize::from(reference > 0.0);
+        }
+    }
+    // Some poses must be clear and some crossing for the comparison to cover both branches.
+    assert!(checked > 0 && checked < 4 * (parts.len() - 1), "{checked} clear cases");
+}

@@ -1,6 +1,7 @@
 //! The whole-wing interference check: every moving part against every fixed part, the
 //! screws against the flap, contacts by design declared instead of skipped.
 
+use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::error::Result;
@@ -51,7 +52,7 @@ pub struct InterferenceReport {
     pub passes: bool,
 }
 
-/// Sweeps every pair for flap rotation in `[0, end_rad]`.
+/// Sweeps every pair for flap rotation in `[0, end_rad]`, pairs in parallel (rayon).
 pub fn check_assembly(
     assembly: &Assembly,
     end_rad: f64,
@@ -76,8 +77,9 @@ pub fn check_assembly(
             jobs.push((name, &station.screw, flap));
         }
     }
+    // Pairs are independent; rayon keeps their order in the result.
     let pairs = jobs
-        .into_iter()
+        .into_par_iter()
         .map(|(station, a, b)| {
             let clearance = sweep_pair(a, b, 0.0, end_rad, settings)?;
             let passes = clearance.min_clearance_m - clearance.residual_bound_m >= required_clearance_m;

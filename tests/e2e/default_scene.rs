@@ -59,6 +59,42 @@ fn no_arguments_designs_the_default_scene() {
         assert_eq!(part["watertight"], true, "{file}");
     }
 
+    // Gap and overlap at each station's three settings: finite, consistent with the local
+    // chord, and opening as the flap deploys (the default flap turns down and aft about a
+    // hinge below the wing, so its nose leaves the cove lip).
+    for station in report["stations"].as_array().unwrap() {
+        let name = station["name"].as_str().unwrap();
+        let position = &station["flap_position"];
+        let chord = position["local_chord_m"].as_f64().unwrap();
+        assert!(chord > 0.5 && chord < 5.0, "{name}: local chord {chord} m");
+        let settings = position["settings"].as_array().unwrap();
+        let names: Vec<&str> = settings.iter().map(|s| s["setting"].as_str().unwrap()).collect();
+        assert_eq!(names, ["stowed", "takeoff", "landing"], "{name}");
+        let value = |s: &serde_json::Value, key: &str| {
+            let v = s[key].as_f64().unwrap_or_else(|| panic!("{name}: {key} is a number"));
+            assert!(v.is_finite(), "{name}: {key}");
+            v
+        };
+        for s in settings {
+            for (metres, percent) in [("gap_m", "gap_percent_chord"), ("overlap_m", "overlap_percent_chord")] {
+                let expected = 100.0 * value(s, metres) / chord;
+                assert!((value(s, percent) - expected).abs() < 1e-9, "{name}: {percent}");
+            }
+        }
+        for pair in settings.windows(2) {
+            assert!(value(&pair[1], "gap_m") > value(&pair[0], "gap_m"), "{name}: gap opens");
+            assert!(
+                value(&pair[1], "overlap_m") < value(&pair[0], "overlap_m"),
+                "{name}: overlap shrinks"
+            );
+        }
+        let plots = std::fs::read_to_string(out.join(format!("plots-{name}.svg"))).unwrap();
+        assert!(
+            plots.contains("Gap and overlap behind the cove lip"),
+            "{name}: gap/overlap plot"
+        );
+    }
+
     // A second run gives the same report apart from the timings section.
     let again = run_flapwright(dir.path(), &[]);
     assert!(again.status.success());

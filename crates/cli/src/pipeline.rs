@@ -12,6 +12,7 @@ use crate::report::{Exports, PartReport, Report, SceneInfo, StageTiming, Station
 use crate::scene::Scene;
 
 pub mod exports;
+pub mod flap_position;
 mod geometry;
 mod interference;
 pub mod mechanisms;
@@ -107,6 +108,7 @@ pub fn design_with_progress(
     let mut parts: Vec<PartReport> = Vec::new();
     let mut warnings: Vec<String> = Vec::new();
     let mut interference_report = None;
+    let mut flap_positions = vec![None; scene.station.len()];
 
     let mechanisms = stages.run("synthesis", || mechanisms::synthesise_all(scene))?;
     let mut planes = vec![None; scene.station.len()];
@@ -127,6 +129,11 @@ pub fn design_with_progress(
             .iter()
             .map(|p| Some(flapwright_planes::StationReport::new(&p.station, &p.sections)))
             .collect();
+        if full {
+            flap_positions = stages.run("gap-overlap", || {
+                flap_position::flap_positions(&scene.station, &scene.flap, &placed)
+            })?;
+        }
         if outputs.interference || !full {
             let checked = stages.run("interference", || {
                 interference::check(scene, &model, &meshed, &mechanisms, &placed)
@@ -198,13 +205,17 @@ pub fn design_with_progress(
         .zip(planes)
         .zip(mechanism_reports)
         .zip(fairings)
-        .map(|(((station, plane), mechanism), fairing)| StationReport {
-            name: station.name.clone(),
-            flap: station.flap.clone(),
-            plane,
-            mechanism,
-            fairing,
-        })
+        .zip(flap_positions)
+        .map(
+            |((((station, plane), mechanism), fairing), flap_position)| StationReport {
+                name: station.name.clone(),
+                flap: station.flap.clone(),
+                plane,
+                flap_position,
+                mechanism,
+                fairing,
+            },
+        )
         .collect();
 
     let report = Report {

@@ -76,6 +76,8 @@ pub struct StationReport {
     pub flap: Option<String>,
     /// Plane, frame, skew, residuals and section cuts (absent without a wing).
     pub plane: Option<flapwright_planes::StationReport>,
+    /// Gap and overlap behind the main wing at the flap settings (design only).
+    pub flap_position: Option<crate::pipeline::flap_position::FlapPositionReport>,
     /// Mechanism dimensions, synthesis and one sweep per load case.
     pub mechanism: Option<crate::pipeline::mechanisms::MechanismReport>,
     /// Fairing depth: how far the mechanism reaches below the lower wing/flap contour.

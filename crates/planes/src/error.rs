@@ -72,6 +72,13 @@ pub enum Error {
         /// Second vertex of that edge.
         edge_end: u32,
     },
+    /// The stowed flap section does not reach behind the wing section's nose, so there is
+    /// no local chord to measure gap and overlap against.
+    #[error("local chord = {chord_m} m (wing nose to stowed flap trailing edge): the flap is not behind the wing")]
+    FlapNotBehindWing {
+        /// Wing nose x less flap trailing edge x, station frame (m).
+        chord_m: f64,
+    },
     /// A row of the boundary CSV could not be read.
     #[error("boundary CSV line {line}: column {column} is missing or not a number")]
     BoundaryCsvField {

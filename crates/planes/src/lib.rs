@@ -15,6 +15,8 @@
 //!   of each attachment point over the deployment ([`out_of_plane_residual_m`]).
 //! - [`StationFrame`]: the rigid transform between aircraft and station frames.
 //! - [`cut_mesh`] → [`Section`]: a part mesh cut by a station plane as closed 2D polygons.
+//! - [`FlapBehindWing`] → [`GapOverlap`]: gap and overlap of the flap behind the main
+//!   wing's trailing edge at any flap rotation (`003` section 2.1).
 //! - [`parse_boundary_csv`], [`boundary_deviation`]: the thesis Fig. 45 boundaries and the
 //!   distance of section polygons from them.
 //! - [`StationReport`]: the serializable per-station record of report.json.
@@ -42,9 +44,10 @@
 //!
 //! # Limitations
 //!
-//! Gap and overlap enter as a translation of the base point and the conical rotations
-//! θ_o, θ_g as given angles; computing them from the flap contour and the wing trailing
-//! edge (`003` Fig. 3 step 4) needs geom's flap section and is not done here. The
+//! In [`FlapDeployment`], gap and overlap enter as a translation of the base point and the
+//! conical rotations θ_o, θ_g as given angles; [`FlapBehindWing`] measures the gap and
+//! overlap a rotation gives in one plane, but nothing solves for the translation that
+//! meets target values (`003` Fig. 3 step 4). The
 //! deployment between settings is a linear interpolation of the setting parameters, a
 //! stand-in for the synthesised mechanism's path. Only the right wing is modelled.
 //!
@@ -64,6 +67,7 @@ pub mod boundary;
 pub mod conical;
 pub mod error;
 pub mod frame;
+pub mod gap_overlap;
 pub mod motion;
 pub mod plane;
 pub mod report;
@@ -76,6 +80,7 @@ pub use boundary::{boundary_deviation, distance_to_segment_m, parse_boundary_csv
 pub use conical::{setting_from_section_shifts, SectionShift};
 pub use error::{Error, Result};
 pub use frame::{StationFrame, StationPoint, DIRECTION_TOL, VERTICAL_SINE_TOL};
+pub use gap_overlap::{FlapBehindWing, GapOverlap, TRAILING_EDGE_TIE_CHORD_FRACTION};
 pub use motion::{FlapDeployment, FlapSetting};
 pub use plane::{unit_direction, HingeAxis, Plane, AXIS_PLANE_COSINE_TOL};
 pub use report::{FrameReport, SectionReport, StationReport};

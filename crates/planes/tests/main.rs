@@ -2,6 +2,7 @@
 
 mod boundaries;
 mod frames;
+mod gap_overlap;
 mod meshes;
 mod report;
 mod sections;

@@ -9,10 +9,12 @@ use flapwright_drawing::{
 use flapwright_interference::FairingDepth;
 use flapwright_mechanism::urdf::{build_robot, to_xml, trajectory, BaseLink, CutJoint, MeshRef, StationMechanism3d};
 use flapwright_mechanism::Sweep;
+use flapwright_planes::FlapBehindWing;
 use nalgebra::{Point2, Rotation2};
 use serde::Serialize;
 
 use crate::output::StagedDir;
+use crate::pipeline::flap_position::flap_behind_wing;
 use crate::pipeline::mechanisms::StationMechanism;
 use crate::pipeline::stations::PlacedStation;
 use crate::report::PartReport;
@@ -292,9 +294,13 @@ pub fn write_svgs(
         files.push(name);
         if let Some(cases) = sweeps[i] {
             let name = format!("plots-{}.svg", station.name);
+            let flap_behind_wing = match (placed[i], station.flap.as_deref()) {
+                (Some(p), Some(flap_name)) => flap_behind_wing(p, flap_name)?,
+                _ => None,
+            };
             let svg = render_plots_svg(
                 &format!("{}: station {} against the nut position s34", scene.name, station.name),
-                &plots(cases),
+                &plots(cases, flap_behind_wing.as_ref()),
             )
             .with_context(|| format!("plotting station {}", station.name))?;
             std::fs::write(out.file(&name), svg).with_context(|| format!("writing {name}"))?;
@@ -304,7 +310,7 @@ pub fn write_svgs(
     Ok(files)
 }
 
-fn plots(cases: &[Sweep]) -> Vec<Plot> {
+fn plots(cases: &[Sweep], flap_behind_wing: Option<&FlapBehindWing>) -> Vec<Plot> {
     let series = |case: &Sweep, name: String, y: &dyn Fn(&flapwright_mechanism::SweepSample) -> f64| Series {
         name,
         points: case.samples.iter().map(|s| (s.input_m * 1e3, y(s))).collect(),
@@ -318,7 +324,7 @@ fn plots(cases: &[Sweep]) -> Vec<Plot> {
             y_label: y_label.into(),
             series: cases.iter().map(|c| series(c, c.load_case.clone(), y)).collect(),
         };
-    vec![
+    let mut plots = vec![
         plot("Flap deflection", "deflection (deg)", first, &|s| s.deflection_deg),
         plot("Transmission angle", "transmission angle (deg)", first, &|s| {
             s.transmission_angle_deg
@@ -343,7 +349,25 @@ fn plots(cases: &[Sweep]) -> Vec<Plot> {
                 })
                 .collect(),
         },
-    ]
+    ];
+    if let Some(measure) = flap_behind_wing {
+        let at = |s: &flapwright_mechanism::SweepSample| measure.at_rotation(s.deflection_deg.to_radians());
+        plots.push(Plot {
+            title: "Gap and overlap behind the cove lip".into(),
+            x_label,
+            y_label: "% of local chord".into(),
+            series: first
+                .iter()
+                .flat_map(|c| {
+                    [
+                        series(c, "gap".into(), &|s| at(s).gap_percent_chord),
+                        series(c, "overlap".into(), &|s| at(s).overlap_percent_chord),
+                    ]
+                })
+                .collect(),
+        });
+    }
+    plots
 }
 
 /// How far ahead of the mechanism the station drawing shows the wing (m).

@@ -1,0 +1,156 @@
+//! Gap and overlap of the flap behind the main wing, measured in a station plane.
+//!
+//! Definitions (Zaccai, Bertels, Vos `003`, section 2.1, Fig. 3 step 4): the overlap comes
+//! from the flap section's forward-most point, the gap is the shortest distance from the
+//! main-wing trailing edge to the flap. Here, in the station frame (x towards the nose,
+//! y up, origin A0 on the hinge line):
+//!
+//! - overlap = x(flap's forward-most point) - x(main-wing trailing edge): positive while the
+//!   flap's nose is still under the wing;
+//! - gap = distance from the main-wing trailing edge to the flap outline, negative when the
+//!   trailing edge lies inside the flap section (the parts collide in this plane);
+//! - both also as % of the local clean chord c = x(wing nose) - x(stowed flap trailing
+//!   edge), the chord `003` quotes its settings in (B777 study: take-off 0 %c gap, 3 %c
+//!   overlap; landing 2 %c gap, 0 %c overlap).
+//!
+//! The main-wing trailing edge is the upper end of the cove: of the wing-section points
+//! within [`TRAILING_EDGE_TIE_CHORD_FRACTION`] of the aft-most one, the highest. With
+//! Flapwright's straight cove wall this picks the upper lip, where a shroud would end.
+//!
+//! The flap turns rigidly about A0 by the flap rotation; this holds exactly in a plane
+//! perpendicular to a fixed hinge line (the thesis stations) and is the usual planar
+//! reading elsewhere.
+
+use nalgebra::{Point2, Rotation2};
+use serde::Serialize;
+
+use crate::boundary::distance_to_segment_m;
+use crate::error::{finite, Error, Result};
+
+/// Wing-section points within this distance in x (fraction of the local chord) of the
+/// aft-most one are the trailing-edge region; the highest of them is the trailing edge.
+/// 1 % of the chord spans the cove wall's lean from twist and skew (a few mm) and stays
+/// well inside the upper skin's last panel.
+pub const TRAILING_EDGE_TIE_CHORD_FRACTION: f64 = 0.01;
+
+/// Gap and overlap at one flap rotation.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct GapOverlap {
+    /// Flap rotation from stowed (rad), trailing edge down positive.
+    pub rotation_rad: f64,
+    /// Gap (m); negative inside the flap.
+    pub gap_m: f64,
+    /// Gap, % of the local clean chord.
+    pub gap_percent_chord: f64,
+    /// Overlap (m); positive while the flap nose is ahead of the trailing edge.
+    pub overlap_m: f64,
+    /// Overlap, % of the local clean chord.
+    pub overlap_percent_chord: f64,
+}
+
+/// The main wing's trailing edge and the stowed flap in one station plane, ready to measure
+/// gap and overlap at any flap rotation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FlapBehindWing {
+    trailing_edge: Point2<f64>,
+    flap_stowed: Vec<Vec<Point2<f64>>>,
+    chord_m: f64,
+}
+
+fn extent_x(polygons: &[Vec<Point2<f64>>]) -> Option<(f64, f64)> {
+    polygons.iter().flatten().map(|p| p.x).fold(None, |acc, x| match acc {
+        None => Some((x, x)),
+        Some((lo, hi)) => Some((lo.min(x), hi.max(x))),
+    })
+}
+
+/// True when `point` is inside the closed polygon (crossing number; boundary either way).
+fn inside(polygon: &[Point2<f64>], point: &Point2<f64>) -> bool {
+    let mut crossings = false;
+    for (i, a) in polygon.iter().enumerate() {
+        let b = polygon[(i + 1) % polygon.len()];
+        if (a.y > point.y) != (b.y > point.y) {
+            let x = a.x + (point.y - a.y) / (b.y - a.y) * (b.x - a.x);
+            if x > point.x {
+                crossings = !crossings;
+            }
+        }
+    }
+    crossings
+}
+
+impl FlapBehindWing {
+    /// From the wing section's polygons and the stowed flap section's polygons (station
+    /// frame, m; closed, last point not repeated).
+    pub fn new(wing: &[Vec<Point2<f64>>], flap_stowed: &[Vec<Point2<f64>>]) -> Result<Self> {
+        let empty = |part: &'static str| Error::TooFew {
+            quantity: part,
+            value: 0,
+            minimum: 3,
+        };
+        for polygon in wing.iter().chain(flap_stowed) {
+            for p in polygon {
+                finite("section point x (m)", p.x)?;
+                finite("section point y (m)", p.y)?;
+            }
+        }
+        let (wing_aft, wing_nose) = extent_x(wing).ok_or_else(|| empty("wing section points"))?;
+        let (flap_trailing_edge, _) = extent_x(flap_stowed).ok_or_else(|| empty("flap section points"))?;
+        if flap_stowed.iter().any(|p| p.len() < 3) || wing.iter().any(|p| p.len() < 3) {
+            return Err(empty("points of a section polygon"));
+        }
+        let chord_m = wing_nose - flap_trailing_edge;
+        if chord_m <= 0.0 {
+            return Err(Error::FlapNotBehindWing { chord_m });
+        }
+        let tie = TRAILING_EDGE_TIE_CHORD_FRACTION * chord_m;
+        let trailing_edge = wing
+            .iter()
+            .flatten()
+            .filter(|p| p.x <= wing_aft + tie)
+            .max_by(|a, b| a.y.total_cmp(&b.y).then(b.x.total_cmp(&a.x)))
+            .copied()
+            .ok_or_else(|| empty("wing section points"))?;
+        Ok(Self {
+            trailing_edge,
+            flap_stowed: flap_stowed.to_vec(),
+            chord_m,
+        })
+    }
+
+    /// The main-wing trailing edge used (station frame, m).
+    pub fn trailing_edge(&self) -> Point2<f64> {
+        self.trailing_edge
+    }
+
+    /// The local clean chord (m).
+    pub fn chord_m(&self) -> f64 {
+        self.chord_m
+    }
+
+    /// Gap and overlap with the flap turned by `rotation_rad` about A0.
+    pub fn at_rotation(&self, rotation_rad: f64) -> GapOverlap {
+        let turn = Rotation2::new(rotation_rad);
+        let te = self.trailing_edge;
+        let mut distance = f64::INFINITY;
+        let mut is_inside = false;
+        let mut nose_x = f64::NEG_INFINITY;
+        for polygon in &self.flap_stowed {
+            let turned: Vec<Point2<f64>> = polygon.iter().map(|p| turn * p).collect();
+            for (i, a) in turned.iter().enumerate() {
+                distance = distance.min(distance_to_segment_m(&te, a, &turned[(i + 1) % turned.len()]));
+                nose_x = nose_x.max(a.x);
+            }
+            is_inside ^= inside(&turned, &te);
+        }
+        let gap_m = if is_inside { -distance } else { distance };
+        let overlap_m = nose_x - te.x;
+        GapOverlap {
+            rotation_rad,
+            gap_m,
+            gap_percent_chord: 100.0 * gap_m / self.chord_m,
+            overlap_m,
+            overlap_percent_chord: 100.0 * overlap_m / self.chord_m,
+        }
+    }
+}

@@ -1,0 +1,99 @@
+//! Gap and overlap against closed-form cases: a disc-shaped flap turning about A0 behind a
+//! box-shaped wing.
+
+use flapwright_planes::{Error, FlapBehindWing};
+use nalgebra::{Point2, Rotation2};
+
+/// Wing section: x from `aft` to the nose at 2.0, y from 0 to 0.1, with the upper lip
+/// `lean` further aft than the lower one (a leaning cove wall).
+fn wing(aft: f64, lean: f64) -> Vec<Vec<Point2<f64>>> {
+    vec![vec![
+        Point2::new(aft + lean, 0.0),
+        Point2::new(2.0, 0.0),
+        Point2::new(2.0, 0.1),
+        Point2::new(aft, 0.1),
+    ]]
+}
+
+/// A regular `n`-gon of circumradius `r` round `centre` (counter-clockwise).
+fn disc(centre: Point2<f64>, r: f64, n: usize) -> Vec<Vec<Point2<f64>>> {
+    vec![(0..n)
+        .map(|i| {
+            let a = std::f64::consts::TAU * i as f64 / n as f64;
+            centre + nalgebra::Vector2::new(a.cos(), a.sin()) * r
+        })
+        .collect()]
+}
+
+#[test]
+fn disc_flap_gap_and_overlap_are_analytic_at_every_rotation() {
+    let (centre, r, n) = (Point2::new(0.35, -0.1), 0.15, 720);
+    let measure = FlapBehindWing::new(&wing(0.5, 0.0), &disc(centre, r, n)).unwrap();
+    let te = Point2::new(0.5, 0.1);
+    assert_eq!(measure.trailing_edge(), te);
+    // Chord: wing nose 2.0 to the disc's aft-most point 0.2.
+    assert!((measure.chord_m() - (2.0 - (centre.x - r))).abs() < 1e-12);
+    // The polygon lies between its inscribed and circumscribed circles.
+    let r_in = r * (std::f64::consts::PI / n as f64).cos();
+    for k in 0..=40 {
+        let t = -0.3 + 1.2 * f64::from(k) / 40.0;
+        let c = Rotation2::new(t) * centre;
+        let result = measure.at_rotation(t);
+        let to_centre = (te - c).norm();
+        let gap_bounds = if to_centre > r {
+            (to_centre - r, to_centre - r_in)
+        } else {
+            (-(r - to_centre), -(r_in - to_centre))
+        };
+        assert!(
+            result.gap_m >= gap_bounds.0 - 1e-12 && result.gap_m <= gap_bounds.1 + 1e-12,
+            "t = {t}: gap {} outside {gap_bounds:?}",
+            result.gap_m
+        );
+        let overlap = (c.x + r_in - te.x, c.x + r - te.x);
+        assert!(result.overlap_m >= overlap.0 - 1e-12 && result.overlap_m <= overlap.1 + 1e-12);
+        assert!((result.gap_percent_chord - 100.0 * result.gap_m / measure.chord_m()).abs() < 1e-12);
+        assert!((result.overlap_percent_chord - 100.0 * result.overlap_m / measure.chord_m()).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn trailing_edge_inside_the_flap_gives_a_negative_gap() {
+    // Disc round the trailing edge itself, 20 mm radius: gap -20 mm.
+    let te = Point2::new(0.5, 0.1);
+    let measure = FlapBehindWing::new(&wing(0.5, 0.0), &disc(te, 0.02, 4000)).unwrap();
+    let result = measure.at_rotation(0.0);
+    assert!((result.gap_m + 0.02).abs() < 1e-6, "{}", result.gap_m);
+}
+
+#[test]
+fn the_upper_lip_of_a_leaning_cove_wall_is_the_trailing_edge() {
+    let flap = disc(Point2::new(0.3, 0.0), 0.1, 64);
+    // Lower lip 5 mm further aft than the upper one: still the upper lip (within 1 % c).
+    let leaning = FlapBehindWing::new(&wing(0.505, -0.005), &flap).unwrap();
+    assert_eq!(leaning.trailing_edge(), Point2::new(0.505, 0.1));
+    // A lower lip 0.2 m aft is a different wing: its aft-most point is the trailing edge.
+    let long_lower = FlapBehindWing::new(&wing(0.7, -0.2), &flap).unwrap();
+    assert_eq!(long_lower.trailing_edge(), Point2::new(0.7 - 0.2, 0.0));
+}
+
+#[test]
+fn bad_sections_are_errors() {
+    let flap = disc(Point2::new(0.3, 0.0), 0.1, 16);
+    assert!(matches!(FlapBehindWing::new(&[], &flap), Err(Error::TooFew { .. })));
+    assert!(matches!(
+        FlapBehindWing::new(&wing(0.5, 0.0), &[]),
+        Err(Error::TooFew { .. })
+    ));
+    let ahead = disc(Point2::new(3.0, 0.0), 0.1, 16);
+    assert!(matches!(
+        FlapBehindWing::new(&wing(0.5, 0.0), &ahead),
+        Err(Error::FlapNotBehindWing { .. })
+    ));
+    let mut nan = flap.clone();
+    nan[0][3].y = f64::NAN;
+    assert!(matches!(
+        FlapBehindWing::new(&wing(0.5, 0.0), &nan),
+        Err(Error::NotFinite { .. })
+    ));
+}

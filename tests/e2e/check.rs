@@ -79,6 +79,25 @@ fn torque_tube_in_the_screw_path_fails_and_junit_names_the_pair() {
     assert!(failing
         .iter()
         .all(|case| case.contains("clearance") && case.contains("flap rotation")));
+    // Overlapping pairs say how deep: the screw crosses the tube (radius 20 mm, 24 facets)
+    // so its surface reaches the tube's axis, about the inradius deep.
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("flapwright-check/report.json")).unwrap())
+            .unwrap();
+    let screw_tube = report["interference"]["pairs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| p["part_a"] == "inner.screw" && p["part_b"] == "torque-tube")
+        .expect("the inner screw against the tube is checked");
+    assert_eq!(screw_tube["min_clearance_m"], 0.0);
+    let depth = screw_tube["penetration_m"].as_f64().unwrap();
+    let resolution = screw_tube["penetration_resolution_m"].as_f64().unwrap();
+    assert!(resolution > 0.0 && resolution <= 1e-3, "{screw_tube}");
+    assert!(depth > 0.015 && depth <= 0.020, "{screw_tube}");
+    assert!(failing
+        .iter()
+        .any(|case| case.contains("overlap") && case.contains("deepest")));
 }
 
 #[test]

@@ -1,7 +1,36 @@
 //! JUnit XML for CI: one test case per station and part pair of the interference check.
 
-use flapwright_interference::InterferenceReport;
+use flapwright_interference::{InterferenceReport, PairClearance};
 use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
+
+/// One line on a failing pair: the parts, the clearance or how deep they overlap, the
+/// flap rotation and where (aircraft frame).
+pub fn describe_failure(c: &PairClearance, required_clearance_m: f64) -> String {
+    let [ax, ay, az] = c.point_a_ac;
+    let [bx, by, bz] = c.point_b_ac;
+    let at = c.at_parameter.to_degrees();
+    if c.min_clearance_m <= 0.0 {
+        format!(
+            "{} and {} overlap (clearance 0, required {:.2} mm): deepest {:.1} mm (surface sampled every {:.1} mm) at flap rotation {at:.2} deg, from ({ax:.4}, {ay:.4}, {az:.4}) on {} to ({bx:.4}, {by:.4}, {bz:.4}) on {} (aircraft frame, m)",
+            c.part_a,
+            c.part_b,
+            required_clearance_m * 1e3,
+            c.penetration_m * 1e3,
+            c.penetration_resolution_m * 1e3,
+            c.part_a,
+            c.part_b,
+        )
+    } else {
+        format!(
+            "{} and {}: clearance {:.2} mm (certified >= {:.2} mm) is below the required {:.2} mm at flap rotation {at:.2} deg; closest points (aircraft frame, m) ({ax:.4}, {ay:.4}, {az:.4}) and ({bx:.4}, {by:.4}, {bz:.4})",
+            c.part_a,
+            c.part_b,
+            c.min_clearance_m * 1e3,
+            (c.min_clearance_m - c.residual_bound_m) * 1e3,
+            required_clearance_m * 1e3,
+        )
+    }
+}
 
 /// The JUnit document of an interference report.
 pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> anyhow::Result<String> {
@@ -13,17 +42,7 @@ pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> anyh
             TestCaseStatus::success()
         } else {
             let mut status = TestCaseStatus::non_success(NonSuccessKind::Failure);
-            let [ax, ay, az] = c.point_a_ac;
-            let [bx, by, bz] = c.point_b_ac;
-            status.set_message(format!(
-                "{} and {}: clearance {:.2} mm (certified >= {:.2} mm) is below the required {:.2} mm at flap rotation {:.2} deg; closest points (aircraft frame, m) ({ax:.4}, {ay:.4}, {az:.4}) and ({bx:.4}, {by:.4}, {bz:.4})",
-                c.part_a,
-                c.part_b,
-                c.min_clearance_m * 1e3,
-                (c.min_clearance_m - c.residual_bound_m) * 1e3,
-                report.required_clearance_m * 1e3,
-                c.at_parameter.to_degrees(),
-            ));
+            status.set_message(describe_failure(c, report.required_clearance_m));
             status.set_type("interference");
             status
         };

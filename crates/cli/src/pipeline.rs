@@ -140,12 +140,8 @@ pub fn design_with_progress(
             })?;
             for pair in checked.pairs.iter().filter(|p| !p.passes) {
                 warnings.push(format!(
-                    "interference: {} and {} come within {:.4} m (required {:.4} m) at flap rotation {:.2} deg",
-                    pair.clearance.part_a,
-                    pair.clearance.part_b,
-                    pair.clearance.min_clearance_m,
-                    checked.required_clearance_m,
-                    pair.clearance.at_parameter.to_degrees()
+                    "interference: {}",
+                    crate::junit::describe_failure(&pair.clearance, checked.required_clearance_m)
                 ));
             }
             interference_report = Some(checked);

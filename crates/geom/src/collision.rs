@@ -4,9 +4,10 @@
 //! Pitfalls (from parry's design, checked by the crate's tests with parry3d-f64 0.31.1):
 //! for a triangle mesh, [`compute_distance`] measures to the *surface*: a part wholly
 //! inside a mesh reports a positive distance to the nearest face, while
-//! [`compute_intersects`] (meshes are built oriented) reports it as intersecting. Model solids as convex shapes (capsule, cuboid,
-//! cylinder, convex hull) or test containment with [`CollisionShape::contains_point`],
-//! which uses the mesh orientation (pseudo-normals). Mesh-against-mesh distances go through
+//! [`compute_intersects`] (meshes are built oriented) reports it as intersecting.
+//! [`compute_clearance`] treats every shape as a solid (containment through the mesh
+//! orientation, [`CollisionShape::contains_point`]) and measures how deep overlapping
+//! shapes reach into each other (`penetration` module). Mesh-against-mesh distances go through
 //! `mesh_pair`, not parry's composite-vs-composite query, which is slow for nested meshes
 //! (the module says why).
 
@@ -16,15 +17,28 @@ use parry3d_f64::math::Pose;
 use parry3d_f64::query::{self, ClosestPoints};
 use parry3d_f64::shape::{SharedShape, TriMeshFlags};
 
+use std::sync::Arc;
+
 use crate::error::{require_range, Error, Result};
 use crate::mesh::TriMesh;
 
 mod mesh_pair;
+mod penetration;
+
+pub use penetration::SAMPLE_BUDGET as PENETRATION_SAMPLE_BUDGET;
+
+/// Angular subdivisions of a ball, capsule or cylinder when its surface is sampled for
+/// penetration depth: the chords lie within r (1 - cos(pi/32)) = 0.5 % of the radius of
+/// the true surface.
+const PRIMITIVE_SUBDIVISIONS: u32 = 32;
 
 /// A shape for clearance queries, in its own local frame (placed by a pose at query time).
 #[derive(Clone)]
 pub struct CollisionShape {
     shape: SharedShape,
+    /// The surface as triangles in the local frame (primitives tessellated), sampled for
+    /// penetration depth.
+    surface: Arc<Vec<[DVec3; 3]>>,
 }
 
 impl std::fmt::Debug for CollisionShape {
@@ -63,6 +77,35 @@ fn positive(what: &'static str, value: f64) -> Result<f64> {
     require_range(what, value, f64::MIN_POSITIVE, f64::MAX)
 }
 
+fn triangles(vertices: &[DVec3], indices: &[[u32; 3]]) -> Arc<Vec<[DVec3; 3]>> {
+    Arc::new(indices.iter().map(|t| t.map(|i| vertices[i as usize])).collect())
+}
+
+impl CollisionShape {
+    /// Wraps a parry shape; a primitive's surface is tessellated once for penetration
+    /// sampling. Private: parry types stay out of the public API.
+    fn from_shared(shape: SharedShape) -> Self {
+        let n = PRIMITIVE_SUBDIVISIONS;
+        let (vertices, indices) = if let Some(ball) = shape.as_ball() {
+            ball.to_trimesh(n, n / 2)
+        } else if let Some(capsule) = shape.as_capsule() {
+            capsule.to_trimesh(n, n / 2)
+        } else if let Some(cuboid) = shape.as_cuboid() {
+            cuboid.to_trimesh()
+        } else if let Some(cylinder) = shape.as_cylinder() {
+            cylinder.to_trimesh(n)
+        } else if let Some(hull) = shape.as_convex_polyhedron() {
+            hull.to_trimesh()
+        } else if let Some(mesh) = shape.as_trimesh() {
+            (mesh.vertices().to_vec(), mesh.indices().to_vec())
+        } else {
+            (Vec::new(), Vec::new())
+        };
+        let surface = triangles(&vertices, &indices);
+        CollisionShape { shape, surface }
+    }
+}
+
 impl CollisionShape {
     /// A triangle mesh (its BVH built here, once). The mesh should be closed and outward
     /// oriented for [`Self::contains_point`] to be meaningful.
@@ -73,50 +116,49 @@ impl CollisionShape {
             .map_err(|e| Error::Collision {
                 reason: format!("triangle mesh rejected: {e:?}"),
             })?;
-        Ok(CollisionShape { shape })
+        Ok(Self::from_shared(shape))
     }
 
     /// A sphere of `radius_m` centred at the local origin.
     pub fn ball(radius_m: f64) -> Result<CollisionShape> {
-        Ok(CollisionShape {
-            shape: SharedShape::ball(positive("ball radius_m", radius_m)?),
-        })
+        Ok(Self::from_shared(SharedShape::ball(positive(
+            "ball radius_m",
+            radius_m,
+        )?)))
     }
 
     /// A capsule: segment `a`-`b` (local frame, m) swept by a sphere of `radius_m`.
     pub fn capsule(a: Point3<f64>, b: Point3<f64>, radius_m: f64) -> Result<CollisionShape> {
-        Ok(CollisionShape {
-            shape: SharedShape::capsule(to_glam(&a), to_glam(&b), positive("capsule radius_m", radius_m)?),
-        })
+        Ok(Self::from_shared(SharedShape::capsule(
+            to_glam(&a),
+            to_glam(&b),
+            positive("capsule radius_m", radius_m)?,
+        )))
     }
 
     /// A box centred at the local origin with the given half extents (m) along local x, y, z.
     pub fn cuboid(half_extents_m: Vector3<f64>) -> Result<CollisionShape> {
         let [x, y, z] = [half_extents_m.x, half_extents_m.y, half_extents_m.z];
-        Ok(CollisionShape {
-            shape: SharedShape::cuboid(
-                positive("cuboid half extent x (m)", x)?,
-                positive("cuboid half extent y (m)", y)?,
-                positive("cuboid half extent z (m)", z)?,
-            ),
-        })
+        Ok(Self::from_shared(SharedShape::cuboid(
+            positive("cuboid half extent x (m)", x)?,
+            positive("cuboid half extent y (m)", y)?,
+            positive("cuboid half extent z (m)", z)?,
+        )))
     }
 
     /// A cylinder centred at the local origin, axis along local **y** (parry's convention).
     pub fn cylinder(half_height_m: f64, radius_m: f64) -> Result<CollisionShape> {
-        Ok(CollisionShape {
-            shape: SharedShape::cylinder(
-                positive("cylinder half height (m)", half_height_m)?,
-                positive("cylinder radius_m", radius_m)?,
-            ),
-        })
+        Ok(Self::from_shared(SharedShape::cylinder(
+            positive("cylinder half height (m)", half_height_m)?,
+            positive("cylinder radius_m", radius_m)?,
+        )))
     }
 
     /// The convex hull of `points` (local frame, m).
     pub fn convex_hull(points: &[Point3<f64>]) -> Result<CollisionShape> {
         let points: Vec<DVec3> = points.iter().map(to_glam).collect();
         SharedShape::convex_hull(&points)
-            .map(|shape| CollisionShape { shape })
+            .map(Self::from_shared)
             .ok_or_else(|| Error::Collision {
                 reason: format!("convex hull of {} points is degenerate", points.len()),
             })
@@ -185,6 +227,123 @@ pub fn compute_distance(
         distance_m: distance.max(0.0),
         point_a_ac: to_point(p),
         point_b_ac: to_point(q),
+    })
+}
+
+/// Result of [`compute_clearance`]: two parts as solids.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Clearance {
+    /// Separation of the solids (m); 0 when they touch, cross, or one holds the other.
+    pub distance_m: f64,
+    /// How deep they overlap (m): the deepest point of either surface inside the other
+    /// solid, to its surface (`penetration` module); 0 when clear, or when the overlap is
+    /// shallower than the sampling resolution.
+    pub penetration_m: f64,
+    /// Grid spacing the penetration was sampled at (m): the deepest surface point is at
+    /// most this much deeper than reported. 0 when the solids are clear.
+    pub penetration_resolution_m: f64,
+    /// When clear, the closest point on a; when overlapping, a's end of the penetration
+    /// (its deepest point inside b, or the point of a's surface nearest to b's deepest
+    /// point). Aircraft frame, m.
+    pub point_a_ac: Point3<f64>,
+    /// The same for b.
+    pub point_b_ac: Point3<f64>,
+}
+
+impl Clearance {
+    /// Distance when clear, minus the penetration when overlapping: one number that
+    /// orders poses from the most clear to the deepest collision.
+    pub fn signed_m(&self) -> f64 {
+        if self.distance_m > 0.0 {
+            self.distance_m
+        } else {
+            -self.penetration_m
+        }
+    }
+}
+
+fn surface_ac(shape: &CollisionShape, pose: &Pose) -> Vec<[DVec3; 3]> {
+    shape
+        .surface
+        .iter()
+        .map(|t| t.map(|v| pose.transform_point(v)))
+        .collect()
+}
+
+/// True when some point of `inner`'s surface lies inside `outer` (for a mesh, by its
+/// orientation). With the surfaces apart, one such point means `inner` is wholly inside.
+fn holds(outer: &CollisionShape, pose_outer: &Pose, inner: &CollisionShape, pose_inner: &Pose) -> bool {
+    inner
+        .surface
+        .first()
+        .is_some_and(|t| outer.shape.contains_point(pose_outer, pose_inner.transform_point(t[0])))
+}
+
+/// Clearance between shape `a` at `pose_a` and shape `b` at `pose_b` as solids: unlike
+/// [`compute_distance`], a part wholly inside a closed, oriented mesh is overlapping, and
+/// overlapping parts report how deep they reach into each other, sampled on a surface grid
+/// of spacing `resolution_m` (coarser when the overlap is large: see
+/// [`PENETRATION_SAMPLE_BUDGET`]).
+pub fn compute_clearance(
+    a: &CollisionShape,
+    pose_a: &Isometry3<f64>,
+    b: &CollisionShape,
+    pose_b: &Isometry3<f64>,
+    resolution_m: f64,
+) -> Result<Clearance> {
+    let resolution_m = positive("penetration resolution_m", resolution_m)?;
+    let surfaces = compute_distance(a, pose_a, b, pose_b)?;
+    let (pa, pb) = (to_pose(pose_a), to_pose(pose_b));
+    let clear = Clearance {
+        distance_m: surfaces.distance_m,
+        penetration_m: 0.0,
+        penetration_resolution_m: 0.0,
+        point_a_ac: surfaces.point_a_ac,
+        point_b_ac: surfaces.point_b_ac,
+    };
+    if surfaces.distance_m > 0.0 && !holds(b, &pb, a, &pa) && !holds(a, &pa, b, &pb) {
+        return Ok(clear);
+    }
+    let deepest = |intruder: &CollisionShape, intruder_pose: &Pose, host: &CollisionShape, host_pose: &Pose| {
+        let exact_surface = intruder
+            .shape
+            .as_trimesh()
+            .is_none()
+            .then_some((&*intruder.shape, intruder_pose));
+        penetration::deepest_inside(
+            &surface_ac(intruder, intruder_pose),
+            exact_surface,
+            &*host.shape,
+            host_pose,
+            &host.shape.compute_aabb(host_pose),
+            resolution_m,
+        )
+    };
+    let (a_in_b, b_in_a) = (deepest(a, &pa, b, &pb), deepest(b, &pb, a, &pa));
+    let spacing = [a_in_b, b_in_a]
+        .iter()
+        .flatten()
+        .map(|d| d.spacing)
+        .fold(resolution_m, f64::max);
+    let overlapping = Clearance {
+        distance_m: 0.0,
+        penetration_resolution_m: spacing,
+        ..clear
+    };
+    Ok(match (a_in_b, b_in_a) {
+        (Some(d), other) if other.is_none_or(|o| d.depth >= o.depth) => Clearance {
+            penetration_m: d.depth,
+            point_a_ac: to_point(d.inside),
+            point_b_ac: to_point(d.surface),
+            ..overlapping
+        },
+        (_, Some(d)) => Clearance {
+            penetration_m: d.depth,
+            point_a_ac: to_point(d.surface),
+            point_b_ac: to_point(d.inside),
+            ..overlapping
+        },
+        _ => overlapping,
     })
 }
 

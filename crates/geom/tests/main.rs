@@ -5,6 +5,7 @@ mod dat;
 mod fixture;
 mod naca;
 mod parts;
+mod penetration;
 mod scene;
 mod volume;
 mod wing;

@@ -23,8 +23,9 @@
 //! needed, and the guarantee holds for any motion whose speed bound is honest.
 //!
 //! # Limitations
-//! Mesh distances are to surfaces (parry's triangle-mesh queries): a part wholly inside a
-//! mesh reports the distance to the nearest face. Model solids as convex shapes.
+//! Parts are solids through `flapwright_geom::collision::compute_clearance`: closed meshes
+//! must be outward oriented for a part wholly inside one to count as overlapping. The
+//! penetration depth is the deepest of the sampled poses, not refined between samples.
 //!
 //! # Pitfalls
 //! A speed bound that is too small voids the guarantee silently; derive it from the

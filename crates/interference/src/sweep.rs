@@ -11,7 +11,7 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use flapwright_geom::collision::compute_distance;
+use flapwright_geom::collision::{compute_clearance, Clearance};
 use nalgebra::Point3;
 use serde::Serialize;
 
@@ -76,14 +76,23 @@ pub struct PairClearance {
     pub part_a: String,
     /// Second part's name.
     pub part_b: String,
-    /// Smallest sampled distance (m); 0 when the parts touch or overlap.
+    /// Smallest sampled distance between the solids (m); 0 when the parts touch or
+    /// overlap (a part wholly inside a closed mesh overlaps).
     pub min_clearance_m: f64,
-    /// Deployment parameter where it occurs.
+    /// Deployment parameter where it occurs (where the overlap is deepest, when the parts
+    /// overlap).
     pub at_parameter: f64,
-    /// Closest point on part a, aircraft frame (m).
+    /// Closest point on part a, aircraft frame (m); when overlapping, a's end of the
+    /// deepest penetration.
     pub point_a_ac: [f64; 3],
-    /// Closest point on part b, aircraft frame (m).
+    /// Closest point on part b, aircraft frame (m); when overlapping, b's end.
     pub point_b_ac: [f64; 3],
+    /// Deepest overlap over the samples (m): how far the deepest surface point of one part
+    /// reaches inside the other; 0 when clear.
+    pub penetration_m: f64,
+    /// The deepest surface point at that sample is at most this much deeper (m): the
+    /// surface sampling grid; 0 when clear.
+    pub penetration_resolution_m: f64,
     /// The true minimum is at least `min_clearance_m - residual_bound_m` (m).
     pub residual_bound_m: f64,
     /// Distance evaluations spent.
@@ -120,9 +129,27 @@ impl Ord for Interval {
 
 struct Sample {
     t: f64,
-    distance_m: f64,
-    point_a: Point3<f64>,
-    point_b: Point3<f64>,
+    clearance: Clearance,
+}
+
+impl Sample {
+    /// An interval end: only its parameter and distance matter.
+    fn end(t: f64, distance_m: f64) -> Self {
+        Sample {
+            t,
+            clearance: Clearance {
+                distance_m,
+                penetration_m: 0.0,
+                penetration_resolution_m: 0.0,
+                point_a_ac: Point3::origin(),
+                point_b_ac: Point3::origin(),
+            },
+        }
+    }
+
+    fn distance_m(&self) -> f64 {
+        self.clearance.distance_m
+    }
 }
 
 /// Sweeps the clearance between `a` and `b` for deployment `t` in `[start, end]`.
@@ -143,26 +170,26 @@ pub fn sweep_pair(a: &Part, b: &Part, start: f64, end: f64, settings: &SweepSett
         speed += bound;
     }
     let evaluate = |t: f64| -> Result<Sample> {
-        let proximity =
-            compute_distance(&a.shape, &a.motion.pose_ac(t), &b.shape, &b.motion.pose_ac(t)).map_err(|source| {
-                Error::Query {
-                    part_a: a.name.clone(),
-                    part_b: b.name.clone(),
-                    parameter: t,
-                    source: Box::new(source),
-                }
-            })?;
-        Ok(Sample {
-            t,
-            distance_m: proximity.distance_m,
-            point_a: proximity.point_a_ac,
-            point_b: proximity.point_b_ac,
-        })
+        // Penetration is sampled as finely as the clearance is certified.
+        let clearance = compute_clearance(
+            &a.shape,
+            &a.motion.pose_ac(t),
+            &b.shape,
+            &b.motion.pose_ac(t),
+            settings.tolerance_m,
+        )
+        .map_err(|source| Error::Query {
+            part_a: a.name.clone(),
+            part_b: b.name.clone(),
+            parameter: t,
+            source: Box::new(source),
+        })?;
+        Ok(Sample { t, clearance })
     };
     let interval = |s: &Sample, e: &Sample| Interval {
-        lower_bound_m: 0.5 * (s.distance_m + e.distance_m - speed * (e.t - s.t)),
-        start: (s.t, s.distance_m),
-        end: (e.t, e.distance_m),
+        lower_bound_m: 0.5 * (s.distance_m() + e.distance_m() - speed * (e.t - s.t)),
+        start: (s.t, s.distance_m()),
+        end: (e.t, e.distance_m()),
     };
 
     let n = settings.initial_samples;
@@ -170,49 +197,50 @@ pub fn sweep_pair(a: &Part, b: &Part, start: f64, end: f64, settings: &SweepSett
         .map(|i| evaluate(start + (end - start) * i as f64 / (n - 1) as f64))
         .collect::<Result<Vec<_>>>()?;
     let mut evaluations = n;
+    // The deepest overlap if any, else the smallest clearance; ties to the first.
     let mut best = samples
         .iter()
-        .min_by(|x, y| x.distance_m.total_cmp(&y.distance_m).then(x.t.total_cmp(&y.t)))
+        .min_by(|x, y| {
+            (x.clearance.signed_m())
+                .total_cmp(&y.clearance.signed_m())
+                .then(x.t.total_cmp(&y.t))
+        })
         .map(|s| Sample { ..*s })
         .ok_or(Error::BadRange { start, end })?;
     let mut heap: BinaryHeap<Interval> = samples.windows(2).map(|w| interval(&w[0], &w[1])).collect();
 
     if speed > 0.0 {
         while let Some(worst) = heap.peek() {
-            let settled = worst.lower_bound_m >= best.distance_m - settings.tolerance_m;
-            if settled || evaluations >= settings.max_evaluations || best.distance_m <= 0.0 {
+            let settled = worst.lower_bound_m >= best.distance_m() - settings.tolerance_m;
+            if settled || evaluations >= settings.max_evaluations || best.distance_m() <= 0.0 {
                 break;
             }
             let worst = heap.pop().expect("peeked");
             let middle = evaluate(0.5 * (worst.start.0 + worst.end.0))?;
             evaluations += 1;
-            let left = Sample {
-                t: worst.start.0,
-                distance_m: worst.start.1,
-                point_a: Point3::origin(),
-                point_b: Point3::origin(),
-            };
-            let right = Sample {
-                t: worst.end.0,
-                distance_m: worst.end.1,
-                ..left
-            };
+            let (left, right) = (
+                Sample::end(worst.start.0, worst.start.1),
+                Sample::end(worst.end.0, worst.end.1),
+            );
             heap.push(interval(&left, &middle));
             heap.push(interval(&middle, &right));
-            if middle.distance_m < best.distance_m {
+            if middle.clearance.signed_m() < best.clearance.signed_m() {
                 best = middle;
             }
         }
     }
-    let lowest_bound = heap.peek().map_or(best.distance_m, |i| i.lower_bound_m);
+    let lowest_bound = heap.peek().map_or(best.distance_m(), |i| i.lower_bound_m);
+    let found = best.clearance;
     Ok(PairClearance {
         part_a: a.name.clone(),
         part_b: b.name.clone(),
-        min_clearance_m: best.distance_m,
+        min_clearance_m: found.distance_m,
         at_parameter: best.t,
-        point_a_ac: best.point_a.coords.into(),
-        point_b_ac: best.point_b.coords.into(),
-        residual_bound_m: (best.distance_m - lowest_bound).max(0.0),
+        point_a_ac: found.point_a_ac.coords.into(),
+        point_b_ac: found.point_b_ac.coords.into(),
+        penetration_m: found.penetration_m,
+        penetration_resolution_m: found.penetration_resolution_m,
+        residual_bound_m: (found.distance_m - lowest_bound).max(0.0),
         evaluations,
     })
 }

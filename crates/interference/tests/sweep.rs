@@ -18,18 +18,9 @@ fn rod_and_thin_plate() -> (Part, Part) {
         Translation3::new(1.5 * PLATE_ANGLE_RAD.cos(), 1.5 * PLATE_ANGLE_RAD.sin(), 0.0),
         UnitQuaternion::from_axis_angle(&Vector3::z_axis(), PLATE_ANGLE_RAD),
     );
-    struct Placed(Isometry3<f64>);
-    impl flapwright_interference::Motion for Placed {
-        fn pose_ac(&self, _t: f64) -> Isometry3<f64> {
-            self.0
-        }
-        fn speed_bound(&self) -> f64 {
-            0.0
-        }
-    }
     (
         Part::moving("rod", rod, TurnAboutZ { max_radius_m: 2.002 }),
-        Part::moving("plate", plate, Placed(plate_pose_at_angle)),
+        Part::moving("plate", plate, At(plate_pose_at_angle)),
     )
 }
 
@@ -72,38 +63,63 @@ fn plain_sampling_misses_it_and_says_so() {
     assert!(missed.residual_bound_m >= missed.min_clearance_m, "{missed:?}");
 }
 
+/// A point of the part's frame on the unit circle about z at angle t (speed 1, bound 1.1).
+struct Orbit;
+impl flapwright_interference::Motion for Orbit {
+    fn pose_ac(&self, t: f64) -> Isometry3<f64> {
+        Isometry3::translation(t.cos(), t.sin(), 0.0)
+    }
+    fn speed_bound(&self) -> f64 {
+        1.1
+    }
+}
+
+/// Placed once, not moving.
+struct At(Isometry3<f64>);
+impl flapwright_interference::Motion for At {
+    fn pose_ac(&self, _t: f64) -> Isometry3<f64> {
+        self.0
+    }
+    fn speed_bound(&self) -> f64 {
+        0.0
+    }
+}
+
 #[test]
 fn orbiting_ball_matches_the_analytic_clearance() {
     // Moving ball r = 0.1 on a unit circle, fixed ball r = 0.1 at (1, 0, 0); for
     // t in [0.3, 2] the closest approach is at t = 0.3: 2 sin(0.15) - 0.2.
     let moving = CollisionShape::ball(0.1).unwrap();
-    struct Orbit;
-    impl flapwright_interference::Motion for Orbit {
-        fn pose_ac(&self, t: f64) -> Isometry3<f64> {
-            Isometry3::translation(t.cos(), t.sin(), 0.0)
-        }
-        fn speed_bound(&self) -> f64 {
-            1.1
-        }
-    }
     let a = Part::moving("ball", moving, Orbit);
     let b = Part::fixed("fixed", CollisionShape::ball(0.1).unwrap());
     let b_pose = Isometry3::translation(1.0, 0.0, 0.0);
-    struct At(Isometry3<f64>);
-    impl flapwright_interference::Motion for At {
-        fn pose_ac(&self, _t: f64) -> Isometry3<f64> {
-            self.0
-        }
-        fn speed_bound(&self) -> f64 {
-            0.0
-        }
-    }
     let b = Part::moving(b.name, b.shape, At(b_pose));
     let result = sweep_pair(&a, &b, 0.3, 2.0, &SweepSettings::default()).unwrap();
     let expected = 2.0 * 0.15f64.sin() - 0.2;
     assert_relative_eq!(result.min_clearance_m, expected, max_relative = 1e-9);
     assert_relative_eq!(result.at_parameter, 0.3, epsilon = 1e-12);
     assert!(result.residual_bound_m <= SweepSettings::default().tolerance_m);
+}
+
+#[test]
+fn a_collision_reports_its_deepest_sample() {
+    // Ball r = 0.1 orbiting the unit circle through a fixed ball r = 0.3 at (1, 0, 0): at
+    // t = 0 (a sample of the default 9 over [-1, 1]) the centres meet and the moving ball's
+    // surface is 0.3 - 0.1 = 0.2 inside the fixed one; at t = +-0.25 only 0.151.
+    let a = Part::moving("ball", CollisionShape::ball(0.1).unwrap(), Orbit);
+    let b = Part::moving(
+        "fixed",
+        CollisionShape::ball(0.3).unwrap(),
+        At(Isometry3::translation(1.0, 0.0, 0.0)),
+    );
+    let settings = SweepSettings::default();
+    let result = sweep_pair(&a, &b, -1.0, 1.0, &settings).unwrap();
+    assert_eq!(result.min_clearance_m, 0.0);
+    assert_eq!(result.at_parameter, 0.0, "{result:?}");
+    // A lower bound within the surface grid, whose spacing is the sweep's tolerance.
+    assert!(result.penetration_m <= 0.2 + 1e-9, "{result:?}");
+    assert!(result.penetration_m >= 0.2 - 1.01 * settings.tolerance_m, "{result:?}");
+    assert_eq!(result.penetration_resolution_m, settings.tolerance_m);
 }
 
 #[test]

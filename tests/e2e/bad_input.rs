@@ -208,3 +208,9 @@ fn mechanism_that_cannot_be_synthesised() {
         &["station[0].mechanism", "collinearity"],
     );
 }
+
+#[test]
+fn negative_joint_play() {
+    let scene = format!("{}\n[interference]\njoint_play_m = -0.001\n", default_scene_text());
+    assert_rejected(&scene, &["interference.joint_play_m", "[0, 0.1]"]);
+}

@@ -33,10 +33,20 @@ fn default_scene_passes() {
             "refined to the tolerance: {pair}"
         );
     }
-    assert!(
-        !interference["declared_contacts"].as_array().unwrap().is_empty(),
-        "joints are declared, not skipped"
-    );
+    // Joints are checked to stay joined: the nut and the fitting at A on each screw.
+    let joints = interference["declared_contacts"].as_array().unwrap();
+    assert_eq!(joints.len(), 4, "{joints:?}");
+    let play = interference["joint_play_m"].as_f64().unwrap();
+    for joint in joints {
+        assert_eq!(joint["passes"], true, "{joint}");
+        assert!(joint["upper_bound_m"].as_f64().unwrap() <= play, "{joint}");
+        let name = format!(
+            "{} joined to {}",
+            joint["part_a"].as_str().unwrap(),
+            joint["part_b"].as_str().unwrap()
+        );
+        assert!(junit.contains(&name), "a test case for {name}");
+    }
     // The check runs only what it needs.
     let stages: Vec<&str> = report["stages"]
         .as_array()

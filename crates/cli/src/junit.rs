@@ -1,6 +1,6 @@
 //! JUnit XML for CI: one test case per station and part pair of the interference check.
 
-use flapwright_interference::{InterferenceReport, PairClearance};
+use flapwright_interference::{ContactResult, InterferenceReport, PairClearance};
 use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
 
 /// One line on a failing pair: the parts, the clearance or how deep they overlap, the
@@ -32,6 +32,21 @@ pub fn describe_failure(c: &PairClearance, required_clearance_m: f64) -> String 
     }
 }
 
+/// One line on a joint that comes apart.
+pub fn describe_joint_failure(c: &ContactResult, joint_play_m: f64) -> String {
+    let (d, s) = (&c.declared, &c.separation);
+    format!(
+        "{} and {} (joint {}) come {:.2} mm apart (certified <= {:.2} mm), more than the joint's play {:.2} mm, at flap rotation {:.2} deg",
+        d.part_a,
+        d.part_b,
+        d.joint,
+        s.max_separation_m * 1e3,
+        s.upper_bound_m * 1e3,
+        joint_play_m * 1e3,
+        s.at_parameter.to_degrees(),
+    )
+}
+
 /// The JUnit document of an interference report.
 pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> anyhow::Result<String> {
     let mut suite = TestSuite::new(format!("flapwright interference: {scene_name}"));
@@ -48,6 +63,20 @@ pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> anyh
         };
         let mut case = TestCase::new(name, status);
         case.set_classname(pair.station.clone().unwrap_or_else(|| "flap".into()));
+        suite.add_test_case(case);
+    }
+    for contact in &report.declared_contacts {
+        let status = if contact.passes {
+            TestCaseStatus::success()
+        } else {
+            let mut status = TestCaseStatus::non_success(NonSuccessKind::Failure);
+            status.set_message(describe_joint_failure(contact, report.joint_play_m));
+            status.set_type("joint");
+            status
+        };
+        let d = &contact.declared;
+        let mut case = TestCase::new(format!("{} joined to {}", d.part_a, d.part_b), status);
+        case.set_classname(d.station.clone());
         suite.add_test_case(case);
     }
     let mut junit = Report::new("flapwright check");

@@ -144,6 +144,12 @@ pub fn design_with_progress(
                     crate::junit::describe_failure(&pair.clearance, checked.required_clearance_m)
                 ));
             }
+            for contact in checked.declared_contacts.iter().filter(|c| !c.passes) {
+                warnings.push(format!(
+                    "joint: {}",
+                    crate::junit::describe_joint_failure(contact, checked.joint_play_m)
+                ));
+            }
             interference_report = Some(checked);
             let flap_names: Vec<String> = scene.flap.iter().map(|f| f.name.clone()).collect();
             fairings = stages.run("fairing", || {

@@ -1,12 +1,13 @@
 //! The whole-wing interference check: every moving part against every fixed part, the
-//! screws against the flap, contacts by design declared instead of skipped.
+//! screws against the flap; contacts by design (joints) checked to stay joined within the
+//! joint's play instead of being skipped.
 
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::part::Part;
-use crate::sweep::{sweep_pair, PairClearance, SweepSettings};
+use crate::sweep::{sweep_contact, sweep_pair, JointSeparation, PairClearance, SweepSettings};
 use crate::track::{DeclaredContact, TrackParts};
 
 /// What is checked: fixed structure, the flap, and each station's mechanism parts.
@@ -37,6 +38,29 @@ pub struct PairResult {
     pub passes: bool,
 }
 
+/// One joint checked: parts that touch by design must not come apart by more than the
+/// joint's play.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ContactResult {
+    /// The declared contact.
+    #[serde(flatten)]
+    pub declared: DeclaredContact,
+    /// Largest separation over the deployment.
+    #[serde(flatten)]
+    pub separation: JointSeparation,
+    /// The certified upper bound on the separation is within the play.
+    pub passes: bool,
+}
+
+/// What the check requires.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Requirements {
+    /// Smallest clearance between parts that must stay apart (m).
+    pub clearance_m: f64,
+    /// Largest separation of parts joined by design (m): the joint's play.
+    pub joint_play_m: f64,
+}
+
 /// The interference section of the report.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct InterferenceReport {
@@ -44,19 +68,23 @@ pub struct InterferenceReport {
     pub deployment_range_rad: [f64; 2],
     /// Required clearance (m).
     pub required_clearance_m: f64,
+    /// Allowed separation of parts joined by design (m).
+    pub joint_play_m: f64,
     /// Every pair checked.
     pub pairs: Vec<PairResult>,
-    /// Contacts by design (joints), not checked for clearance.
-    pub declared_contacts: Vec<DeclaredContact>,
-    /// Every pair passes.
+    /// Contacts by design (joints): checked to stay within the joint's play, not for
+    /// clearance.
+    pub declared_contacts: Vec<ContactResult>,
+    /// Every pair and every joint passes.
     pub passes: bool,
 }
 
-/// Sweeps every pair for flap rotation in `[0, end_rad]`, pairs in parallel (rayon).
+/// Sweeps every pair and every declared joint for flap rotation in `[0, end_rad]`, in
+/// parallel (rayon).
 pub fn check_assembly(
     assembly: &Assembly,
     end_rad: f64,
-    required_clearance_m: f64,
+    required: &Requirements,
     settings: &SweepSettings,
 ) -> Result<InterferenceReport> {
     let mut jobs: Vec<(Option<&str>, &Part, &Part)> = Vec::new();
@@ -82,7 +110,7 @@ pub fn check_assembly(
         .into_par_iter()
         .map(|(station, a, b)| {
             let clearance = sweep_pair(a, b, 0.0, end_rad, settings)?;
-            let passes = clearance.min_clearance_m - clearance.residual_bound_m >= required_clearance_m;
+            let passes = clearance.min_clearance_m - clearance.residual_bound_m >= required.clearance_m;
             Ok(PairResult {
                 station: station.map(str::to_string),
                 clearance,
@@ -90,11 +118,38 @@ pub fn check_assembly(
             })
         })
         .collect::<Result<Vec<_>>>()?;
-    let passes = pairs.iter().all(|p| p.passes);
+    let contacts = assembly
+        .stations
+        .iter()
+        .flat_map(|station| station.declared.iter().map(move |contact| (station, contact)))
+        .collect::<Vec<_>>()
+        .into_par_iter()
+        .map(|(station, contact)| {
+            let part = |name: &str| {
+                std::iter::once(&station.screw)
+                    .chain(&station.flap_rigid)
+                    .find(|p| p.name == name)
+                    .ok_or_else(|| Error::UnknownPart {
+                        name: name.to_string(),
+                        joint: contact.joint.clone(),
+                    })
+            };
+            let (a, b) = (part(&contact.part_a)?, part(&contact.part_b)?);
+            let separation = sweep_contact(a, b, 0.0, end_rad, required.joint_play_m, settings)?;
+            let passes = separation.upper_bound_m <= required.joint_play_m;
+            Ok(ContactResult {
+                declared: contact.clone(),
+                separation,
+                passes,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let passes = pairs.iter().all(|p| p.passes) && contacts.iter().all(|c| c.passes);
     Ok(InterferenceReport {
         deployment_range_rad: [0.0, end_rad],
-        required_clearance_m,
-        declared_contacts: assembly.stations.iter().flat_map(|s| s.declared.clone()).collect(),
+        required_clearance_m: required.clearance_m,
+        joint_play_m: required.joint_play_m,
+        declared_contacts: contacts,
         pairs,
         passes,
     })

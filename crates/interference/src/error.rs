@@ -34,6 +34,14 @@ pub enum Error {
         #[source]
         source: Box<flapwright_geom::Error>,
     },
+    /// A declared joint names a part the station does not have.
+    #[error("joint {joint} names part {name}, which its station does not have")]
+    UnknownPart {
+        /// Part name.
+        name: String,
+        /// The joint.
+        joint: String,
+    },
     /// A part's speed bound is negative or not finite, so no certified bound can be given.
     #[error("part {part}: speed bound {value} m per unit deployment must be finite and >= 0")]
     BadSpeedBound {

@@ -7,8 +7,10 @@
 //!   where it occurs, the closest points, and a residual bound.
 //! - [`track_parts`]: a circular-arc-track station's screw, nut and fittings as parts
 //!   ([`ScrewAboutMount`], [`AboutAxis`] motions with certified speed bounds).
+//! - [`sweep_contact`] → [`JointSeparation`]: largest separation of parts joined by design.
 //! - [`check_assembly`] → [`InterferenceReport`]: every moving part against the fixed
-//!   structure and the screws against the flap; joints are [`DeclaredContact`]s.
+//!   structure and the screws against the flap; joints ([`DeclaredContact`]s) must stay
+//!   within the joint's play ([`Requirements`]).
 //! - [`fairing_depth`]: how far the mechanism reaches below the lower wing/flap contour.
 //!
 //! # Units and frames
@@ -36,13 +38,14 @@ mod error;
 mod fairing;
 mod motion;
 mod part;
+mod refine;
 mod sweep;
 mod track;
 
-pub use check::{check_assembly, Assembly, InterferenceReport, PairResult};
+pub use check::{check_assembly, Assembly, ContactResult, InterferenceReport, PairResult, Requirements};
 pub use error::{Error, Result};
 pub use fairing::{fairing_depth, FairingDepth, PlanarCapsule};
 pub use motion::{AboutAxis, ScrewAboutMount};
 pub use part::{Fixed, Motion, Part};
-pub use sweep::{sweep_pair, PairClearance, SweepSettings};
+pub use sweep::{sweep_contact, sweep_pair, JointSeparation, PairClearance, SweepSettings, JOINT_PENETRATION_GRID_M};
 pub use track::{screw_outer_radius_m, track_parts, DeclaredContact, LinkSizes, TrackParts};

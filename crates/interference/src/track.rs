@@ -30,7 +30,7 @@ impl Default for LinkSizes {
     }
 }
 
-/// A contact that exists by design (a joint), reported instead of checked.
+/// A contact that exists by design (a joint): checked to stay joined, not for clearance.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DeclaredContact {
     /// Station.

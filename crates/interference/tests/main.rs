@@ -1,6 +1,7 @@
 //! Integration tests of the clearance sweep.
 
 mod brute_force;
+mod joint;
 mod sweep;
 
 use flapwright_interference::Motion;

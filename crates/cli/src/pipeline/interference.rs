@@ -7,7 +7,7 @@ use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::parts::{Part as MeshPart, PartKind, WingModel};
 use flapwright_interference::{
     check_assembly, fairing_depth, screw_outer_radius_m, track_parts, AboutAxis, Assembly, FairingDepth,
-    InterferenceReport, LinkSizes, Part, PlanarCapsule, SweepSettings,
+    InterferenceReport, LinkSizes, Part, PlanarCapsule, Requirements, SweepSettings,
 };
 use flapwright_planes::Section;
 use nalgebra::{Point2, Rotation2};
@@ -84,12 +84,11 @@ pub fn check(
         flaps,
         stations,
     };
-    Ok(check_assembly(
-        &assembly,
-        end_rad,
-        settings.required_clearance_m,
-        &sweep,
-    )?)
+    let required = Requirements {
+        clearance_m: settings.required_clearance_m,
+        joint_play_m: settings.joint_play_m,
+    };
+    Ok(check_assembly(&assembly, end_rad, &required, &sweep)?)
 }
 
 /// The mechanism's round solids in the station plane at flap rotation `t` (rad).

@@ -124,6 +124,16 @@ pub struct InterferenceScene {
     /// Distance evaluations per part pair at most.
     #[serde(default = "default_max_evaluations")]
     pub max_evaluations: usize,
+    /// Largest separation allowed between parts joined by design (the nut on its screw,
+    /// the fitting at the nut pivot), m.
+    #[serde(default = "default_joint_play")]
+    pub joint_play_m: f64,
+}
+
+/// 0.5 mm: the radial play of a plain trunnion bearing of this size is tenths of a
+/// millimetre; a nut that leaves its screw separates by far more.
+fn default_joint_play() -> f64 {
+    0.0005
 }
 
 fn default_clearance() -> f64 {
@@ -146,6 +156,7 @@ impl Default for InterferenceScene {
             initial_samples: default_initial_samples(),
             tolerance_m: default_tolerance(),
             max_evaluations: default_max_evaluations(),
+            joint_play_m: default_joint_play(),
         }
     }
 }

@@ -1,0 +1,141 @@
+//! Certified minimum of a Lipschitz function of the deployment, by sampling and bisection.
+//!
+//! If |g(t) - g(t')| <= L |t - t'|, then on [t_i, t_j]
+//! g(t) >= max(g_i - L (t - t_i), g_j - L (t_j - t)) >= (g_i + g_j - L (t_j - t_i)) / 2.
+//! The interval with the lowest such bound is bisected until every bound is within the
+//! tolerance of the smallest sample (or the budget is spent, or `stop` says the answer is
+//! already known). The true minimum then lies in [smallest - residual, smallest].
+//! Clearances minimise g = distance; joints that must hold maximise the separation by
+//! minimising g = -separation (also L-Lipschitz).
+
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+
+use crate::error::{Error, Result};
+use crate::sweep::SweepSettings;
+
+/// An interval between two samples (t, g) with its certified lower bound on g.
+struct Interval {
+    lower_bound: f64,
+    start: (f64, f64),
+    end: (f64, f64),
+}
+
+impl PartialEq for Interval {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+impl Eq for Interval {}
+impl PartialOrd for Interval {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Interval {
+    /// Max-heap on the *lowest* bound (reversed), ties by position for determinism.
+    fn cmp(&self, other: &Self) -> Ordering {
+        other
+            .lower_bound
+            .total_cmp(&self.lower_bound)
+            .then(other.start.0.total_cmp(&self.start.0))
+    }
+}
+
+/// What to minimise.
+pub(crate) trait Objective {
+    /// What one evaluation yields.
+    type Sample;
+    /// Evaluates at deployment `t`.
+    fn evaluate(&self, t: f64) -> Result<Self::Sample>;
+    /// The Lipschitz function g being minimised.
+    fn value(&self, sample: &Self::Sample) -> f64;
+    /// Ranks samples (ties in g may be broken further, e.g. by penetration depth).
+    fn rank(&self, sample: &Self::Sample) -> f64 {
+        self.value(sample)
+    }
+    /// True when the best sample already decides the question (refining cannot change it).
+    fn done(&self, _best: &Self::Sample) -> bool {
+        false
+    }
+    /// True when a certified lower bound this high on g answers the question, so the
+    /// minimum need not be located any closer.
+    fn bound_suffices(&self, _lowest_bound: f64) -> bool {
+        false
+    }
+}
+
+/// The sample with the smallest rank, its parameter, and the certificate.
+pub(crate) struct Minimum<S> {
+    pub t: f64,
+    pub sample: S,
+    /// The true minimum of g is at least the best sample's g less this.
+    pub residual: f64,
+    pub evaluations: usize,
+}
+
+/// Minimises `objective` over `t` in `[start, end]`, its g having Lipschitz constant
+/// `lipschitz`.
+pub(crate) fn certified_minimum<O: Objective>(
+    start: f64,
+    end: f64,
+    lipschitz: f64,
+    settings: &SweepSettings,
+    objective: &O,
+) -> Result<Minimum<O::Sample>> {
+    let interval = |s: (f64, f64), e: (f64, f64)| Interval {
+        lower_bound: 0.5 * (s.1 + e.1 - lipschitz * (e.0 - s.0)),
+        start: s,
+        end: e,
+    };
+    let n = settings.initial_samples;
+    let samples = (0..n)
+        .map(|i| {
+            let t = start + (end - start) * i as f64 / (n - 1) as f64;
+            objective.evaluate(t).map(|s| (t, s))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let mut heap: BinaryHeap<Interval> = samples
+        .windows(2)
+        .map(|w| interval((w[0].0, objective.value(&w[0].1)), (w[1].0, objective.value(&w[1].1))))
+        .collect();
+    // The smallest rank, ties to the first sample.
+    let (mut best_t, mut best) = samples
+        .into_iter()
+        .reduce(|x, y| {
+            if objective.rank(&y.1) < objective.rank(&x.1) {
+                y
+            } else {
+                x
+            }
+        })
+        .ok_or(Error::BadRange { start, end })?;
+    let mut evaluations = n;
+    if lipschitz > 0.0 {
+        while let Some(worst) = heap.peek() {
+            let settled = worst.lower_bound >= objective.value(&best) - settings.tolerance_m
+                || objective.bound_suffices(worst.lower_bound);
+            if settled || evaluations >= settings.max_evaluations || objective.done(&best) {
+                break;
+            }
+            let worst = heap.pop().expect("peeked");
+            let t = 0.5 * (worst.start.0 + worst.end.0);
+            let middle = objective.evaluate(t)?;
+            evaluations += 1;
+            let g = objective.value(&middle);
+            heap.push(interval(worst.start, (t, g)));
+            heap.push(interval((t, g), worst.end));
+            if objective.rank(&middle) < objective.rank(&best) {
+                (best_t, best) = (t, middle);
+            }
+        }
+    }
+    let best_value = objective.value(&best);
+    let lowest_bound = heap.peek().map_or(best_value, |i| i.lower_bound);
+    Ok(Minimum {
+        t: best_t,
+        sample: best,
+        residual: (best_value - lowest_bound).max(0.0),
+        evaluations,
+    })
+}

@@ -64,5 +64,5 @@ pub use error::{Error, Result};
 pub use flap::{Flap, FlapSectionSpec, FlapSpec, HingeSpec};
 pub use mesh::{Aabb, MeshCheck, TriMesh};
 pub use parts::{MeshResolution, Part, PartKind, SectionOutline, WingModel};
-pub use structure::{SparSpec, TorqueTubeSpec};
+pub use structure::{tube_mesh, SparSpec, TorqueTubeSpec};
 pub use wing::{PanelSpec, SectionAt, SweepReference, Wing, WingSectionSpec, WingSpec};

@@ -4,6 +4,8 @@ use nalgebra::{Point2, Point3, Unit, Vector3};
 
 use crate::airfoil::{Airfoil, Surface};
 use crate::error::{require_finite, require_range, Error, Result};
+use crate::loft::loft_closed;
+use crate::mesh::TriMesh;
 
 /// Largest accepted bend between consecutive torque-tube segments (deg): larger bends would
 /// fold the mitred joint onto itself.
@@ -165,4 +167,16 @@ impl TorqueTubeSpec {
         }
         Ok(rings)
     }
+}
+
+/// A closed round tube of `radius_m` along the polyline `path_ac` (bends up to
+/// [`MAX_TUBE_BEND_DEG`] each, mitred), `segments` points round, rings at most
+/// `max_ring_spacing_m` apart: the torque tube's loft, for any swept round solid (slot
+/// tracks follow their arcs with it).
+pub fn tube_mesh(path_ac: &[Point3<f64>], radius_m: f64, segments: usize, max_ring_spacing_m: f64) -> Result<TriMesh> {
+    let spec = TorqueTubeSpec {
+        path_ac: path_ac.to_vec(),
+        radius_m,
+    };
+    loft_closed(&spec.rings(segments, max_ring_spacing_m)?, "tube")
 }

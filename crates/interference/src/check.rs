@@ -52,6 +52,29 @@ pub struct ContactResult {
     pub passes: bool,
 }
 
+/// Why links may cross the wing skin.
+const SKIN_CUT: &str = "the skin is cut for the mechanism, which lives in the fairing (see the fairing depth)";
+/// Why tracks may cross the wing skin.
+const TRACK_IN_COVE: &str = "tracks are fixed in the cove and pass through its skin";
+/// Why tracks may cross the flap.
+const FLAP_SLOTTED: &str = "the flap is slotted for its own tracks";
+/// Why same-station parts are not checked against each other.
+const STACKED: &str =
+    "same-station parts are stacked spanwise (side plates, clevises); the planar model has no spanwise layout to check them in";
+
+/// A pair the check leaves out, and why (listed so nothing is skipped silently).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct UncheckedPair {
+    /// Station.
+    pub station: String,
+    /// First part.
+    pub part_a: String,
+    /// Second part.
+    pub part_b: String,
+    /// Why.
+    pub reason: String,
+}
+
 /// What the check requires.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Requirements {
@@ -75,6 +98,8 @@ pub struct InterferenceReport {
     /// Contacts by design (joints): checked to stay within the joint's play, not for
     /// clearance.
     pub declared_contacts: Vec<ContactResult>,
+    /// Pairs left out by design, with the reason.
+    pub unchecked_pairs: Vec<UncheckedPair>,
     /// Every pair and every joint passes.
     pub passes: bool,
 }
@@ -93,16 +118,68 @@ pub fn check_assembly(
             jobs.push((None, flap, fixed));
         }
     }
+    let structure: Vec<&Part> = assembly
+        .fixed
+        .iter()
+        .filter(|f| !assembly.skins.contains(&f.name))
+        .collect();
+    let skins: Vec<&Part> = assembly
+        .fixed
+        .iter()
+        .filter(|f| assembly.skins.contains(&f.name))
+        .collect();
+    let mut unchecked = Vec::new();
     for station in &assembly.stations {
         let name = Some(station.station.as_str());
-        let links = std::iter::once(&station.screw).chain(&station.flap_rigid);
-        for link in links {
-            for fixed in assembly.fixed.iter().filter(|f| !assembly.skins.contains(&f.name)) {
+        let mut skip = |a: &Part, b: &Part, reason: &str| {
+            unchecked.push(UncheckedPair {
+                station: station.station.clone(),
+                part_a: a.name.clone(),
+                part_b: b.name.clone(),
+                reason: reason.into(),
+            })
+        };
+        let jack = [&station.screw, &station.jack_body];
+        let links: Vec<&Part> = jack.into_iter().chain(&station.flap_rigid).collect();
+        for &link in &links {
+            for &fixed in &structure {
                 jobs.push((name, link, fixed));
+            }
+            for &skin in &skins {
+                skip(link, skin, SKIN_CUT);
+            }
+        }
+        for track in &station.tracks {
+            for &fixed in &structure {
+                jobs.push((name, track, fixed));
+            }
+            for &skin in &skins {
+                skip(track, skin, TRACK_IN_COVE);
             }
         }
         for flap in &assembly.flaps {
-            jobs.push((name, &station.screw, flap));
+            for part in jack {
+                jobs.push((name, part, flap));
+            }
+            for track in &station.tracks {
+                skip(track, flap, FLAP_SLOTTED);
+            }
+        }
+        // Same-station parts that may cross in the station plane, unless joined by design.
+        let joined = |a: &Part, b: &Part| {
+            station
+                .declared
+                .iter()
+                .any(|c| (c.part_a == a.name && c.part_b == b.name) || (c.part_a == b.name && c.part_b == a.name))
+        };
+        let moving_vs_other = jack
+            .into_iter()
+            .flat_map(|j| station.flap_rigid.iter().map(move |r| (j, r)));
+        let against_tracks = links.iter().flat_map(|&l| station.tracks.iter().map(move |t| (l, t)));
+        for (a, b) in moving_vs_other.chain(against_tracks) {
+            if !joined(a, b) {
+                skip(a, b, STACKED);
+            }
         }
     }
     // Pairs are independent; rayon keeps their order in the result.
@@ -126,8 +203,10 @@ pub fn check_assembly(
         .into_par_iter()
         .map(|(station, contact)| {
             let part = |name: &str| {
-                std::iter::once(&station.screw)
+                [&station.screw, &station.jack_body]
+                    .into_iter()
                     .chain(&station.flap_rigid)
+                    .chain(&station.tracks)
                     .find(|p| p.name == name)
                     .ok_or_else(|| Error::UnknownPart {
                         name: name.to_string(),
@@ -150,6 +229,7 @@ pub fn check_assembly(
         required_clearance_m: required.clearance_m,
         joint_play_m: required.joint_play_m,
         declared_contacts: contacts,
+        unchecked_pairs: unchecked,
         pairs,
         passes,
     })

@@ -42,7 +42,7 @@ mod refine;
 mod sweep;
 mod track;
 
-pub use check::{check_assembly, Assembly, ContactResult, InterferenceReport, PairResult, Requirements};
+pub use check::{check_assembly, Assembly, ContactResult, InterferenceReport, PairResult, Requirements, UncheckedPair};
 pub use error::{Error, Result};
 pub use fairing::{fairing_depth, FairingDepth, PlanarCapsule};
 pub use motion::{AboutAxis, ScrewAboutMount};

@@ -88,10 +88,15 @@ pub(crate) fn certified_minimum<O: Objective>(
         start: s,
         end: e,
     };
-    let n = settings.initial_samples;
+    // Parts that do not move (a track against a spar) need one evaluation.
+    let n = if lipschitz > 0.0 { settings.initial_samples } else { 1 };
     let samples = (0..n)
         .map(|i| {
-            let t = start + (end - start) * i as f64 / (n - 1) as f64;
+            let t = if n > 1 {
+                start + (end - start) * i as f64 / (n - 1) as f64
+            } else {
+                start
+            };
             objective.evaluate(t).map(|s| (t, s))
         })
         .collect::<Result<Vec<_>>>()?;

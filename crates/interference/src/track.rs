@@ -1,7 +1,8 @@
-//! The moving parts of a circular-arc-track station (thesis `000`, Fig. 10) as collision
-//! parts: screw B0-B (capsule), nut at A (ball), and the flap's fittings A-D, F-D, G-D
-//! (capsules) that carry the pins and the nut pivot. Deployment parameter: flap rotation
-//! t = θ12 - θ12,i (rad).
+//! The parts of a circular-arc-track station (thesis `000`, Fig. 10) as collision parts:
+//! moving, the screw B0-B (capsule), the jack body round B0 turning with it (capsule), the
+//! nut at A (ball) and the flap's fittings A-D, F-D, G-D (capsules) that carry the pins
+//! and the nut pivot; fixed, the two slot tracks (round tubes swept along the pins' arcs
+//! about A0). Deployment parameter: flap rotation t = θ12 - θ12,i (rad).
 
 use flapwright_geom::collision::CollisionShape;
 use flapwright_mechanism::CircularArcTrack;
@@ -12,13 +13,20 @@ use crate::error::{Error, Result};
 use crate::motion::{AboutAxis, ScrewAboutMount};
 use crate::part::Part;
 
-/// Sizes of the solids that stand for the links (m).
+/// Sizes of the solids that stand for the links (m). The defaults are representative of
+/// the thesis's small-aircraft flap; the sizing stage does not feed them back yet.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LinkSizes {
     /// Radius of the fitting capsules A-D, F-D, G-D.
     pub fitting_radius_m: f64,
     /// Radius of the nut ball at A.
     pub nut_radius_m: f64,
+    /// Radius of a slot track's swept solid (pin radius plus the track's wall).
+    pub track_radius_m: f64,
+    /// Length and radius of the jack body (gearbox housing) centred on B0 along the screw.
+    pub jack_body_length_m: f64,
+    /// See `jack_body_length_m`.
+    pub jack_body_radius_m: f64,
 }
 
 impl Default for LinkSizes {
@@ -26,8 +34,32 @@ impl Default for LinkSizes {
         Self {
             fitting_radius_m: 0.008,
             nut_radius_m: 0.020,
+            // An 8 mm pin in a track with a 4 mm wall.
+            track_radius_m: 0.012,
+            // Reaches 55 mm from B0: clear of the nut (20 mm) at the shortest stroke, 80 mm.
+            jack_body_length_m: 0.060,
+            jack_body_radius_m: 0.025,
         }
     }
+}
+
+/// Largest angle (rad) between points of a track's centre line: 2 degrees keeps the
+/// chord within R (1 - cos 1°) = 0.015 % of the radius of the arc.
+const TRACK_STEP_RAD: f64 = std::f64::consts::PI / 90.0;
+
+/// Points round the track of a pin at `radius_m` about A0 from `start_rad` over
+/// `range_rad`, extended by `extra_m` of arc at both ends so the pin's end positions sit
+/// inside the track.
+fn track_centre_line(radius_m: f64, start_rad: f64, range_rad: f64, extra_m: f64) -> Vec<Point2<f64>> {
+    let extra_rad = extra_m / radius_m;
+    let (from, to) = (start_rad - extra_rad, start_rad + range_rad + extra_rad);
+    let steps = (((to - from) / TRACK_STEP_RAD).ceil() as usize).max(1);
+    (0..=steps)
+        .map(|i| {
+            let angle = from + (to - from) * i as f64 / steps as f64;
+            Point2::new(radius_m * angle.cos(), radius_m * angle.sin())
+        })
+        .collect()
 }
 
 /// A contact that exists by design (a joint): checked to stay joined, not for clearance.
@@ -50,9 +82,14 @@ pub struct TrackParts {
     pub station: String,
     /// The screw (turns about B0).
     pub screw: Part,
+    /// The jack body round B0 (turns with the screw).
+    pub jack_body: Part,
     /// Parts rigid with the flap: nut and fittings.
     pub flap_rigid: Vec<Part>,
-    /// Contacts by design: the nut rides on the screw; the screw passes the fitting at A.
+    /// The slot tracks (fixed): outer (pin F), inner (pin G).
+    pub tracks: Vec<Part>,
+    /// Contacts by design: the nut rides on the screw; the screw passes the fitting at A;
+    /// the pins F and G ride in their tracks; the screw turns in the jack body.
     pub declared: Vec<DeclaredContact>,
 }
 
@@ -84,17 +121,50 @@ pub fn track_parts(
     let direction = (a - b0).normalize();
     let b = b0 + direction * spec.screw_length_m;
     let screw_radius = screw_outer_radius_m(track);
+    let turning_about_b0 = |max_reach_m: f64| ScrewAboutMount {
+        aircraft_from_station: *aircraft_from_station,
+        mount_st: b0,
+        nut_pivot_stowed_st: a,
+        max_reach_m,
+        min_extension_m: synthesis.stroke_start_m,
+    };
     let screw = Part::moving(
         format!("{station}.screw"),
         CollisionShape::capsule(to_ac(&b0), to_ac(&b), screw_radius).map_err(query)?,
-        ScrewAboutMount {
-            aircraft_from_station: *aircraft_from_station,
-            mount_st: b0,
-            nut_pivot_stowed_st: a,
-            max_reach_m: spec.screw_length_m + screw_radius,
-            min_extension_m: synthesis.stroke_start_m,
-        },
+        turning_about_b0(spec.screw_length_m + screw_radius),
     );
+    let half_body = direction * (0.5 * sizes.jack_body_length_m);
+    let jack_body = Part::moving(
+        format!("{station}.jack-body"),
+        CollisionShape::capsule(
+            to_ac(&(b0 - half_body)),
+            to_ac(&(b0 + half_body)),
+            sizes.jack_body_radius_m,
+        )
+        .map_err(query)?,
+        turning_about_b0(0.5 * sizes.jack_body_length_m + sizes.jack_body_radius_m),
+    );
+    let mut tracks = Vec::new();
+    for (name, radius_m, start_rad) in [
+        ("outer-track", spec.outer_slot_radius_m, spec.outer_slot_start_angle_rad),
+        (
+            "inner-track",
+            spec.inner_slot_radius_m,
+            spec.outer_slot_start_angle_rad + spec.inner_slot_offset_angle_rad,
+        ),
+    ] {
+        let centre_line: Vec<Point3<f64>> =
+            track_centre_line(radius_m, start_rad, spec.rotation_range_rad, sizes.track_radius_m)
+                .iter()
+                .map(to_ac)
+                .collect();
+        let mesh = flapwright_geom::tube_mesh(&centre_line, sizes.track_radius_m, 16, sizes.track_radius_m * 4.0)
+            .map_err(query)?;
+        tracks.push(Part::fixed(
+            format!("{station}.{name}"),
+            CollisionShape::from_mesh(&mesh).map_err(query)?,
+        ));
+    }
     let axis_point = aircraft_from_station.transform_point(&Point3::origin());
     let axis: Unit<Vector3<f64>> = Unit::new_normalize(aircraft_from_station.transform_vector(&Vector3::z()));
     let flap_motion = |points: &[Point2<f64>], radius: f64| AboutAxis {
@@ -122,19 +192,26 @@ pub fn track_parts(
             flap_motion(&[pin, d], sizes.fitting_radius_m),
         ));
     }
-    let declared = ["nut", "fitting-A"]
-        .iter()
-        .map(|other| DeclaredContact {
-            station: station.to_string(),
-            part_a: format!("{station}.screw"),
-            part_b: format!("{station}.{other}"),
-            joint: "A (nut on the screw, pivoting on the flap)".into(),
-        })
-        .collect();
+    let contact = |a: &str, b: &str, joint: &str| DeclaredContact {
+        station: station.to_string(),
+        part_a: format!("{station}.{a}"),
+        part_b: format!("{station}.{b}"),
+        joint: joint.into(),
+    };
+    let nut_pivot = "A (nut on the screw, pivoting on the flap)";
+    let declared = vec![
+        contact("screw", "nut", nut_pivot),
+        contact("screw", "fitting-A", nut_pivot),
+        contact("screw", "jack-body", "B0 (screw turning in the jack body)"),
+        contact("fitting-F", "outer-track", "F (pin in the outer slot)"),
+        contact("fitting-G", "inner-track", "G (pin in the inner slot)"),
+    ];
     Ok(TrackParts {
         station: station.to_string(),
         screw,
+        jack_body,
         flap_rigid,
+        tracks,
         declared,
     })
 }

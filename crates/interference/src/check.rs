@@ -27,7 +27,8 @@ pub struct Assembly {
 /// One checked pair.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PairResult {
-    /// Station of the moving part (absent for the flap).
+    /// Station of the parts ("inner/outer" for parts of two stations; absent for the flap
+    /// against the wing structure).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub station: Option<String>,
     /// Clearance over the deployment.
@@ -112,7 +113,7 @@ pub fn check_assembly(
     required: &Requirements,
     settings: &SweepSettings,
 ) -> Result<InterferenceReport> {
-    let mut jobs: Vec<(Option<&str>, &Part, &Part)> = Vec::new();
+    let mut jobs: Vec<(Option<String>, &Part, &Part)> = Vec::new();
     for flap in &assembly.flaps {
         for fixed in &assembly.fixed {
             jobs.push((None, flap, fixed));
@@ -130,7 +131,7 @@ pub fn check_assembly(
         .collect();
     let mut unchecked = Vec::new();
     for station in &assembly.stations {
-        let name = Some(station.station.as_str());
+        let name = || Some(station.station.clone());
         let mut skip = |a: &Part, b: &Part, reason: &str| {
             unchecked.push(UncheckedPair {
                 station: station.station.clone(),
@@ -143,7 +144,7 @@ pub fn check_assembly(
         let links: Vec<&Part> = jack.into_iter().chain(&station.flap_rigid).collect();
         for &link in &links {
             for &fixed in &structure {
-                jobs.push((name, link, fixed));
+                jobs.push((name(), link, fixed));
             }
             for &skin in &skins {
                 skip(link, skin, SKIN_CUT);
@@ -151,7 +152,7 @@ pub fn check_assembly(
         }
         for track in &station.tracks {
             for &fixed in &structure {
-                jobs.push((name, track, fixed));
+                jobs.push((name(), track, fixed));
             }
             for &skin in &skins {
                 skip(track, skin, TRACK_IN_COVE);
@@ -159,7 +160,7 @@ pub fn check_assembly(
         }
         for flap in &assembly.flaps {
             for part in jack {
-                jobs.push((name, part, flap));
+                jobs.push((name(), part, flap));
             }
             for track in &station.tracks {
                 skip(track, flap, FLAP_SLOTTED);
@@ -182,6 +183,17 @@ pub fn check_assembly(
             }
         }
     }
+    // Parts of different stations, moving or fixed, against each other.
+    for (i, first) in assembly.stations.iter().enumerate() {
+        for second in &assembly.stations[i + 1..] {
+            let label = || Some(format!("{}/{}", first.station, second.station));
+            for a in first.parts() {
+                for b in second.parts() {
+                    jobs.push((label(), a, b));
+                }
+            }
+        }
+    }
     // Pairs are independent; rayon keeps their order in the result.
     let pairs = jobs
         .into_par_iter()
@@ -189,7 +201,7 @@ pub fn check_assembly(
             let clearance = sweep_pair(a, b, 0.0, end_rad, settings)?;
             let passes = clearance.min_clearance_m - clearance.residual_bound_m >= required.clearance_m;
             Ok(PairResult {
-                station: station.map(str::to_string),
+                station,
                 clearance,
                 passes,
             })
@@ -203,10 +215,8 @@ pub fn check_assembly(
         .into_par_iter()
         .map(|(station, contact)| {
             let part = |name: &str| {
-                [&station.screw, &station.jack_body]
-                    .into_iter()
-                    .chain(&station.flap_rigid)
-                    .chain(&station.tracks)
+                station
+                    .parts()
                     .find(|p| p.name == name)
                     .ok_or_else(|| Error::UnknownPart {
                         name: name.to_string(),

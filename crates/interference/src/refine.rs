@@ -3,7 +3,8 @@
 //! If |g(t) - g(t')| <= L |t - t'|, then on [t_i, t_j]
 //! g(t) >= max(g_i - L (t - t_i), g_j - L (t_j - t)) >= (g_i + g_j - L (t_j - t_i)) / 2.
 //! The interval with the lowest such bound is bisected until every bound is within the
-//! tolerance of the smallest sample (or the budget is spent, or `stop` says the answer is
+//! tolerance (absolute, or relative to the smallest sample's |g|, whichever is larger) of
+//! the smallest sample (or the budget is spent, or `stop` says the answer is
 //! already known). The true minimum then lies in [smallest - residual, smallest].
 //! Clearances minimise g = distance; joints that must hold maximise the separation by
 //! minimising g = -separation (also L-Lipschitz).
@@ -118,8 +119,9 @@ pub(crate) fn certified_minimum<O: Objective>(
     let mut evaluations = n;
     if lipschitz > 0.0 {
         while let Some(worst) = heap.peek() {
-            let settled = worst.lower_bound >= objective.value(&best) - settings.tolerance_m
-                || objective.bound_suffices(worst.lower_bound);
+            let best_value = objective.value(&best);
+            let tolerance = settings.tolerance_m.max(settings.relative_tolerance * best_value.abs());
+            let settled = worst.lower_bound >= best_value - tolerance || objective.bound_suffices(worst.lower_bound);
             if settled || evaluations >= settings.max_evaluations || objective.done(&best) {
                 break;
             }

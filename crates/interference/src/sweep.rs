@@ -24,8 +24,13 @@ use crate::refine::{certified_minimum, Objective};
 pub struct SweepSettings {
     /// Evenly spaced samples before any refinement (>= 2).
     pub initial_samples: usize,
-    /// Refine until the certified lower bound is within this of the sampled minimum (m).
+    /// Refine until the certified lower bound is within this of the sampled minimum (m),
+    /// or within `relative_tolerance` of it, whichever is larger.
     pub tolerance_m: f64,
+    /// Relative part of the refinement tolerance: parts a metre apart need not have their
+    /// clearance located to the millimetre (the bound is then 1 % of the clearance), while
+    /// pairs near any sensible required clearance keep `tolerance_m`.
+    pub relative_tolerance: f64,
     /// Stop refining after this many distance evaluations per pair; the residual bound
     /// then says how much is uncertain.
     pub max_evaluations: usize,
@@ -36,6 +41,7 @@ impl Default for SweepSettings {
         Self {
             initial_samples: 9,
             tolerance_m: 1e-3,
+            relative_tolerance: 1e-2,
             max_evaluations: 400,
         }
     }
@@ -55,6 +61,13 @@ impl SweepSettings {
                 setting: "tolerance_m",
                 value: self.tolerance_m,
                 allowed: "(0, inf)",
+            });
+        }
+        if !(0.0..1.0).contains(&self.relative_tolerance) {
+            return Err(Error::SettingOutOfRange {
+                setting: "relative_tolerance",
+                value: self.relative_tolerance,
+                allowed: "[0, 1)",
             });
         }
         if self.max_evaluations < self.initial_samples {
@@ -93,7 +106,9 @@ pub struct PairClearance {
     /// The deepest surface point at that sample is at most this much deeper (m): the
     /// surface sampling grid; 0 when clear.
     pub penetration_resolution_m: f64,
-    /// The true minimum is at least `min_clearance_m - residual_bound_m` (m).
+    /// The true minimum is at least `min_clearance_m - residual_bound_m` (m); at most the
+    /// larger of the tolerance and the relative tolerance times the clearance, unless the
+    /// evaluation budget ran out.
     pub residual_bound_m: f64,
     /// Distance evaluations spent.
     pub evaluations: usize,

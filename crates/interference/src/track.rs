@@ -93,6 +93,16 @@ pub struct TrackParts {
     pub declared: Vec<DeclaredContact>,
 }
 
+impl TrackParts {
+    /// Every part of the station: screw, jack body, nut, fittings, tracks.
+    pub fn parts(&self) -> impl Iterator<Item = &Part> {
+        [&self.screw, &self.jack_body]
+            .into_iter()
+            .chain(&self.flap_rigid)
+            .chain(&self.tracks)
+    }
+}
+
 /// Outer radius of a square thread of mean radius r and lead l: r + l/4 (thread depth l/2).
 pub fn screw_outer_radius_m(track: &CircularArcTrack) -> f64 {
     let screw = &track.spec().screw;

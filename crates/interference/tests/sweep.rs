@@ -101,17 +101,58 @@ fn orbiting_ball_matches_the_analytic_clearance() {
     assert!(result.residual_bound_m <= SweepSettings::default().tolerance_m);
 }
 
+/// A ball r = 0.1 on the unit-circle orbit, and a fixed ball of `radius_m` at (x_m, 0, 0).
+fn orbiting_ball_and_fixed_ball(radius_m: f64, x_m: f64) -> (Part, Part) {
+    (
+        Part::moving("ball", CollisionShape::ball(0.1).unwrap(), Orbit),
+        Part::moving(
+            "fixed",
+            CollisionShape::ball(radius_m).unwrap(),
+            At(Isometry3::translation(x_m, 0.0, 0.0)),
+        ),
+    )
+}
+
+#[test]
+fn far_pairs_stop_at_the_relative_tolerance_with_a_true_bound() {
+    // Ball r = 0.1 orbiting the unit circle, fixed ball r = 0.1 at (-3, 0, 0); over
+    // t in [-1, 2.5] the closest approach is at t = 2.5: |(cos 2.5 + 3, sin 2.5)| - 0.2,
+    // about 2.26 m. Absolute 1e-5 would refine to 10 um; relative 1e-2 stops near 23 mm.
+    let (a, b) = orbiting_ball_and_fixed_ball(0.1, -3.0);
+    let expected = (2.5f64.cos() + 3.0).hypot(2.5f64.sin()) - 0.2;
+    let run = |relative_tolerance| {
+        let settings = SweepSettings {
+            initial_samples: 3,
+            tolerance_m: 1e-5,
+            relative_tolerance,
+            ..SweepSettings::default()
+        };
+        sweep_pair(&a, &b, -1.0, 2.5, &settings).unwrap()
+    };
+    let fine = run(0.0);
+    let relative = run(1e-2);
+    for result in [&fine, &relative] {
+        // The certificate holds either way: the true minimum is within the bound below.
+        assert!(result.min_clearance_m >= expected - 1e-12, "{result:?}");
+        assert!(
+            result.min_clearance_m - result.residual_bound_m <= expected + 1e-12,
+            "{result:?}"
+        );
+    }
+    assert!(fine.residual_bound_m <= 1e-5, "{fine:?}");
+    assert!(
+        relative.residual_bound_m <= 1e-2 * relative.min_clearance_m,
+        "{relative:?}"
+    );
+    assert!(relative.evaluations < fine.evaluations, "{relative:?} vs {fine:?}");
+}
+
 #[test]
 fn a_collision_reports_its_deepest_sample() {
     // Ball r = 0.1 orbiting the unit circle through a fixed ball r = 0.3 at (1, 0, 0): at
     // t = 0 (a sample of the default 9 over [-1, 1]) the centres meet and the moving ball's
     // surface is 0.3 - 0.1 = 0.2 inside the fixed one; at t = +-0.25 only 0.151.
-    let a = Part::moving("ball", CollisionShape::ball(0.1).unwrap(), Orbit);
-    let b = Part::moving(
-        "fixed",
-        CollisionShape::ball(0.3).unwrap(),
-        At(Isometry3::translation(1.0, 0.0, 0.0)),
-    );
+    let (a, b) = orbiting_ball_and_fixed_ball(0.3, 1.0);
     let settings = SweepSettings::default();
     let result = sweep_pair(&a, &b, -1.0, 1.0, &settings).unwrap();
     assert_eq!(result.min_clearance_m, 0.0);
@@ -132,4 +173,9 @@ fn bad_settings_are_typed_errors() {
     assert!(sweep_pair(&rod, &plate, -1.0, 1.0, &bad).is_err());
     assert!(sweep_pair(&rod, &plate, 1.0, -1.0, &SweepSettings::default()).is_err());
     assert!(sweep_pair(&rod, &plate, f64::NAN, 1.0, &SweepSettings::default()).is_err());
+    let bad_relative = SweepSettings {
+        relative_tolerance: 1.0,
+        ..SweepSettings::default()
+    };
+    assert!(sweep_pair(&rod, &plate, -1.0, 1.0, &bad_relative).is_err());
 }

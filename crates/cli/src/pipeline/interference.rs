@@ -76,6 +76,7 @@ pub fn check(
     let sweep = SweepSettings {
         initial_samples: settings.initial_samples,
         tolerance_m: settings.tolerance_m,
+        relative_tolerance: settings.relative_tolerance,
         max_evaluations: settings.max_evaluations,
     };
     let assembly = Assembly {

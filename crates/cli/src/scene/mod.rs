@@ -121,6 +121,10 @@ pub struct InterferenceScene {
     /// Refine until the certified bound is within this of the sampled minimum, m.
     #[serde(default = "default_tolerance")]
     pub tolerance_m: f64,
+    /// Relative refinement tolerance: a clearance is located to the larger of
+    /// `tolerance_m` and this fraction of itself.
+    #[serde(default = "default_relative_tolerance")]
+    pub relative_tolerance: f64,
     /// Distance evaluations per part pair at most.
     #[serde(default = "default_max_evaluations")]
     pub max_evaluations: usize,
@@ -145,6 +149,9 @@ fn default_initial_samples() -> usize {
 fn default_tolerance() -> f64 {
     0.001
 }
+fn default_relative_tolerance() -> f64 {
+    0.01
+}
 fn default_max_evaluations() -> usize {
     400
 }
@@ -155,6 +162,7 @@ impl Default for InterferenceScene {
             required_clearance_m: default_clearance(),
             initial_samples: default_initial_samples(),
             tolerance_m: default_tolerance(),
+            relative_tolerance: default_relative_tolerance(),
             max_evaluations: default_max_evaluations(),
             joint_play_m: default_joint_play(),
         }

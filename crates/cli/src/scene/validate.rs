@@ -609,6 +609,13 @@ impl Checker<'_> {
             false,
         );
         self.positive("interference.tolerance_m", interference.tolerance_m);
+        self.in_range(
+            "interference.relative_tolerance",
+            interference.relative_tolerance,
+            0.0,
+            0.5,
+            false,
+        );
         self.in_range("interference.joint_play_m", interference.joint_play_m, 0.0, 0.1, false);
         self.count_in("interference.initial_samples", interference.initial_samples, 2, 100_000);
         self.count_in(

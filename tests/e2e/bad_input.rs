@@ -214,3 +214,15 @@ fn negative_joint_play() {
     let scene = format!("{}\n[interference]\njoint_play_m = -0.001\n", default_scene_text());
     assert_rejected(&scene, &["interference.joint_play_m", "[0, 0.1]"]);
 }
+
+#[test]
+fn fairing_resolution_below_two() {
+    let scene = format!(
+        "{}\n[resolution]\nfairing_samples = 1\nfairing_points_per_capsule = 0\n",
+        default_scene_text()
+    );
+    assert_rejected(
+        &scene,
+        &["resolution.fairing_samples", "resolution.fairing_points_per_capsule"],
+    );
+}

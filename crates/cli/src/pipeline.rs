@@ -153,10 +153,12 @@ pub fn design_with_progress(
             interference_report = Some(checked);
             let flap_names: Vec<String> = scene.flap.iter().map(|f| f.name.clone()).collect();
             fairings = stages.run("fairing", || {
-                Ok(interference::fairing_depths(&mechanisms, &placed, &flap_names)
-                    .into_iter()
-                    .map(Some)
-                    .collect())
+                Ok(
+                    interference::fairing_depths(&mechanisms, &placed, &flap_names, &scene.resolution)
+                        .into_iter()
+                        .map(Some)
+                        .collect(),
+                )
             })?;
         }
     }

@@ -6,10 +6,11 @@
 
 use flapwright_geom::collision::CollisionShape;
 use flapwright_mechanism::CircularArcTrack;
-use nalgebra::{Isometry3, Point2, Point3, Unit, Vector3};
+use nalgebra::{Isometry3, Point2, Point3, Rotation2, Unit, Vector2, Vector3};
 use serde::Serialize;
 
 use crate::error::{Error, Result};
+use crate::fairing::PlanarCapsule;
 use crate::motion::{AboutAxis, ScrewAboutMount};
 use crate::part::Part;
 
@@ -109,6 +110,64 @@ pub fn screw_outer_radius_m(track: &CircularArcTrack) -> f64 {
     screw.mean_radius_m + 0.25 * screw.lead_m
 }
 
+/// The station's solids in its plane (station frame, stowed): one description that
+/// [`track_parts`] places in 3D and [`planar_track_parts`] turns in the plane, so the
+/// interference check and the fairing depth measure the same hardware.
+struct Layout {
+    /// Screw mount B0.
+    b0: Point2<f64>,
+    /// Nut pivot A, stowed.
+    a: Point2<f64>,
+    /// Flap centre of mass D, stowed: where the fittings meet.
+    d: Point2<f64>,
+    screw_length_m: f64,
+    screw_radius_m: f64,
+    /// Fittings rigid with the flap: name and pin (stowed), each a capsule pin-D.
+    fittings: [(&'static str, Point2<f64>); 3],
+    /// Slot tracks (fixed): name and centre line.
+    tracks: [(&'static str, Vec<Point2<f64>>); 2],
+}
+
+impl Layout {
+    fn of(track: &CircularArcTrack, sizes: &LinkSizes) -> Self {
+        let synthesis = track.synthesis();
+        let spec = track.spec();
+        let a = synthesis.nut_pivot_stowed_m;
+        let centre_line =
+            |radius_m, start_rad| track_centre_line(radius_m, start_rad, spec.rotation_range_rad, sizes.track_radius_m);
+        Self {
+            b0: synthesis.screw_mount_m,
+            a,
+            d: spec.centre_of_mass_stowed_m,
+            screw_length_m: spec.screw_length_m,
+            screw_radius_m: screw_outer_radius_m(track),
+            fittings: [
+                ("fitting-A", a),
+                ("fitting-F", synthesis.outer_pin_stowed_m),
+                ("fitting-G", synthesis.inner_pin_stowed_m),
+            ],
+            tracks: [
+                (
+                    "outer-track",
+                    centre_line(spec.outer_slot_radius_m, spec.outer_slot_start_angle_rad),
+                ),
+                (
+                    "inner-track",
+                    centre_line(
+                        spec.inner_slot_radius_m,
+                        spec.outer_slot_start_angle_rad + spec.inner_slot_offset_angle_rad,
+                    ),
+                ),
+            ],
+        }
+    }
+
+    /// Unit vector from B0 along the screw when the nut pivot is at `a`.
+    fn screw_direction(&self, a: Point2<f64>) -> Vector2<f64> {
+        (a - self.b0).normalize()
+    }
+}
+
 /// Builds the station's parts, placed by `aircraft_from_station` (the station frame: origin
 /// A0 on the hinge axis, z along it).
 pub fn track_parts(
@@ -117,8 +176,7 @@ pub fn track_parts(
     track: &CircularArcTrack,
     sizes: &LinkSizes,
 ) -> Result<TrackParts> {
-    let synthesis = track.synthesis();
-    let spec = track.spec();
+    let layout = Layout::of(track, sizes);
     let to_ac = |p: &Point2<f64>| aircraft_from_station.transform_point(&Point3::new(p.x, p.y, 0.0));
     let query = |source| Error::Query {
         part_a: format!("{station}.parts"),
@@ -126,22 +184,21 @@ pub fn track_parts(
         parameter: 0.0,
         source: Box::new(source),
     };
-    let b0 = synthesis.screw_mount_m;
-    let a = synthesis.nut_pivot_stowed_m;
-    let direction = (a - b0).normalize();
-    let b = b0 + direction * spec.screw_length_m;
-    let screw_radius = screw_outer_radius_m(track);
+    let (b0, a) = (layout.b0, layout.a);
+    let direction = layout.screw_direction(a);
+    let b = b0 + direction * layout.screw_length_m;
+    let screw_radius = layout.screw_radius_m;
     let turning_about_b0 = |max_reach_m: f64| ScrewAboutMount {
         aircraft_from_station: *aircraft_from_station,
         mount_st: b0,
         nut_pivot_stowed_st: a,
         max_reach_m,
-        min_extension_m: synthesis.stroke_start_m,
+        min_extension_m: track.synthesis().stroke_start_m,
     };
     let screw = Part::moving(
         format!("{station}.screw"),
         CollisionShape::capsule(to_ac(&b0), to_ac(&b), screw_radius).map_err(query)?,
-        turning_about_b0(spec.screw_length_m + screw_radius),
+        turning_about_b0(layout.screw_length_m + screw_radius),
     );
     let half_body = direction * (0.5 * sizes.jack_body_length_m);
     let jack_body = Part::moving(
@@ -155,19 +212,8 @@ pub fn track_parts(
         turning_about_b0(0.5 * sizes.jack_body_length_m + sizes.jack_body_radius_m),
     );
     let mut tracks = Vec::new();
-    for (name, radius_m, start_rad) in [
-        ("outer-track", spec.outer_slot_radius_m, spec.outer_slot_start_angle_rad),
-        (
-            "inner-track",
-            spec.inner_slot_radius_m,
-            spec.outer_slot_start_angle_rad + spec.inner_slot_offset_angle_rad,
-        ),
-    ] {
-        let centre_line: Vec<Point3<f64>> =
-            track_centre_line(radius_m, start_rad, spec.rotation_range_rad, sizes.track_radius_m)
-                .iter()
-                .map(to_ac)
-                .collect();
+    for (name, centre_line) in &layout.tracks {
+        let centre_line: Vec<Point3<f64>> = centre_line.iter().map(to_ac).collect();
         let mesh = flapwright_geom::tube_mesh(&centre_line, sizes.track_radius_m, 16, sizes.track_radius_m * 4.0)
             .map_err(query)?;
         tracks.push(Part::fixed(
@@ -182,7 +228,7 @@ pub fn track_parts(
         direction_ac: axis,
         max_radius_m: points.iter().map(|p| p.coords.norm()).fold(0.0, f64::max) + radius,
     };
-    let d = spec.centre_of_mass_stowed_m;
+    let d = layout.d;
     let mut flap_rigid = vec![Part::moving(
         format!("{station}.nut"),
         CollisionShape::ball(sizes.nut_radius_m).map_err(query)?,
@@ -191,11 +237,7 @@ pub fn track_parts(
             centre_ac: to_ac(&a),
         },
     )];
-    for (name, pin) in [
-        ("fitting-A", a),
-        ("fitting-F", synthesis.outer_pin_stowed_m),
-        ("fitting-G", synthesis.inner_pin_stowed_m),
-    ] {
+    for (name, pin) in layout.fittings {
         flap_rigid.push(Part::moving(
             format!("{station}.{name}"),
             CollisionShape::capsule(to_ac(&pin), to_ac(&d), sizes.fitting_radius_m).map_err(query)?,
@@ -224,6 +266,48 @@ pub fn track_parts(
         tracks,
         declared,
     })
+}
+
+/// The station's solids in the station plane at flap rotation `t` (rad): screw and jack
+/// body turning about B0 to follow the nut, nut and fittings turning with the flap about
+/// A0, and the fixed tracks as chains of capsules; the same solids as [`track_parts`].
+pub fn planar_track_parts(track: &CircularArcTrack, sizes: &LinkSizes, t: f64) -> Vec<PlanarCapsule> {
+    let layout = Layout::of(track, sizes);
+    let turn = Rotation2::new(t);
+    let a = turn * layout.a;
+    let d = turn * layout.d;
+    let direction = layout.screw_direction(a);
+    let half_body = direction * (0.5 * sizes.jack_body_length_m);
+    let capsule = |part, from, to, radius_m| PlanarCapsule {
+        part,
+        from,
+        to,
+        radius_m,
+    };
+    let mut parts = vec![
+        capsule(
+            "screw",
+            layout.b0,
+            layout.b0 + direction * layout.screw_length_m,
+            layout.screw_radius_m,
+        ),
+        capsule(
+            "jack-body",
+            layout.b0 - half_body,
+            layout.b0 + half_body,
+            sizes.jack_body_radius_m,
+        ),
+        capsule("nut", a, a, sizes.nut_radius_m),
+    ];
+    for (name, pin) in layout.fittings {
+        parts.push(capsule(name, turn * pin, d, sizes.fitting_radius_m));
+    }
+    for (name, centre_line) in &layout.tracks {
+        for segment in centre_line.windows(2) {
+            parts.push(capsule(name, segment[0], segment[1], sizes.track_radius_m));
+        }
+    }
+    parts
 }
 
 /// A ball centred at a point that turns with the flap: its local frame is placed at the

@@ -2,6 +2,7 @@
 
 mod brute_force;
 mod joint;
+mod planar;
 mod sweep;
 
 use flapwright_interference::Motion;

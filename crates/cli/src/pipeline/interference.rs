@@ -6,20 +6,15 @@ use anyhow::{Context, Result};
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::parts::{Part as MeshPart, PartKind, WingModel};
 use flapwright_interference::{
-    check_assembly, fairing_depth, screw_outer_radius_m, track_parts, AboutAxis, Assembly, FairingDepth,
-    InterferenceReport, LinkSizes, Part, PlanarCapsule, Requirements, SweepSettings,
+    check_assembly, fairing_depth, planar_track_parts, track_parts, AboutAxis, Assembly, FairingDepth,
+    InterferenceReport, LinkSizes, Part, Requirements, SweepSettings,
 };
 use flapwright_planes::Section;
-use nalgebra::{Point2, Rotation2};
+use nalgebra::Point2;
 
 use crate::pipeline::mechanisms::StationMechanism;
 use crate::pipeline::stations::PlacedStation;
-use crate::scene::Scene;
-
-/// Flap rotation samples for the fairing depth.
-const FAIRING_SAMPLES: usize = 41;
-/// Points per capsule for the fairing depth.
-const FAIRING_POINTS_PER_CAPSULE: usize = 16;
+use crate::scene::{ResolutionScene, Scene};
 
 /// Builds the assembly and sweeps every pair.
 pub fn check(
@@ -92,73 +87,13 @@ pub fn check(
     Ok(check_assembly(&assembly, end_rad, &required, &sweep)?)
 }
 
-/// The mechanism's round solids in the station plane at flap rotation `t` (rad).
-fn planar_parts(mechanism: &StationMechanism, sizes: &LinkSizes, t: f64) -> Vec<PlanarCapsule> {
-    let track = &mechanism.track;
-    let synthesis = track.synthesis();
-    let spec = track.spec();
-    let turn = Rotation2::new(t);
-    let a = turn * synthesis.nut_pivot_stowed_m;
-    let d = turn * spec.centre_of_mass_stowed_m;
-    let b0 = synthesis.screw_mount_m;
-    let b = b0 + (a - b0).normalize() * spec.screw_length_m;
-    let mut parts = vec![
-        PlanarCapsule {
-            part: "screw",
-            from: b0,
-            to: b,
-            radius_m: screw_outer_radius_m(track),
-        },
-        PlanarCapsule {
-            part: "nut",
-            from: a,
-            to: a,
-            radius_m: sizes.nut_radius_m,
-        },
-    ];
-    for (name, pin) in [
-        ("fitting-A", synthesis.nut_pivot_stowed_m),
-        ("fitting-F", synthesis.outer_pin_stowed_m),
-        ("fitting-G", synthesis.inner_pin_stowed_m),
-    ] {
-        parts.push(PlanarCapsule {
-            part: name,
-            from: turn * pin,
-            to: d,
-            radius_m: sizes.fitting_radius_m,
-        });
-    }
-    // The slots are fixed tracks: arcs of radius b1 and c1 over the rotation range.
-    let arcs = [
-        ("outer-slot", spec.outer_slot_radius_m, spec.outer_slot_start_angle_rad),
-        (
-            "inner-slot",
-            spec.inner_slot_radius_m,
-            spec.outer_slot_start_angle_rad + spec.inner_slot_offset_angle_rad,
-        ),
-    ];
-    for (name, radius, start) in arcs {
-        let steps = 12;
-        for k in 0..steps {
-            let angle = |j: usize| start + spec.rotation_range_rad * j as f64 / steps as f64;
-            let point = |phi: f64| Point2::new(radius * phi.cos(), radius * phi.sin());
-            parts.push(PlanarCapsule {
-                part: name,
-                from: point(angle(k)),
-                to: point(angle(k + 1)),
-                radius_m: sizes.fitting_radius_m,
-            });
-        }
-    }
-    parts
-}
-
 /// Fairing depth of each station: the mechanism against the lower contour of the wing and
 /// the stowed flap cut by the station plane.
 pub fn fairing_depths(
     mechanisms: &[StationMechanism],
     placed: &[PlacedStation],
     flap_names: &[String],
+    resolution: &ResolutionScene,
 ) -> Vec<FairingDepth> {
     let sizes = LinkSizes::default();
     mechanisms
@@ -182,11 +117,11 @@ pub fn fairing_depths(
                 });
             let flap_chord_m = (flap_chord_m.1 - flap_chord_m.0).max(0.0);
             let end = mechanism.track.spec().rotation_range_rad;
-            let parameters: Vec<f64> = (0..FAIRING_SAMPLES)
-                .map(|i| end * i as f64 / (FAIRING_SAMPLES - 1) as f64)
-                .collect();
-            fairing_depth(&contour, flap_chord_m, &parameters, FAIRING_POINTS_PER_CAPSULE, |t| {
-                planar_parts(mechanism, &sizes, t)
+            let samples = resolution.fairing_samples;
+            let parameters: Vec<f64> = (0..samples).map(|i| end * i as f64 / (samples - 1) as f64).collect();
+            let points = resolution.fairing_points_per_capsule;
+            fairing_depth(&contour, flap_chord_m, &parameters, points, |t| {
+                planar_track_parts(&mechanism.track, &sizes, t)
             })
         })
         .collect()

@@ -487,6 +487,12 @@ pub struct ResolutionScene {
     /// Deployment samples per station sweep.
     #[serde(default = "default_samples")]
     pub deployment_samples: usize,
+    /// Flap rotations at which the fairing depth is measured.
+    #[serde(default = "default_fairing_samples")]
+    pub fairing_samples: usize,
+    /// Points along each round solid (capsule axis) at which the fairing depth is measured.
+    #[serde(default = "default_fairing_points_per_capsule")]
+    pub fairing_points_per_capsule: usize,
 }
 
 fn default_points_per_side() -> usize {
@@ -495,12 +501,20 @@ fn default_points_per_side() -> usize {
 fn default_samples() -> usize {
     51
 }
+fn default_fairing_samples() -> usize {
+    21
+}
+fn default_fairing_points_per_capsule() -> usize {
+    8
+}
 
 impl Default for ResolutionScene {
     fn default() -> Self {
         Self {
             airfoil_points_per_side: default_points_per_side(),
             deployment_samples: default_samples(),
+            fairing_samples: default_fairing_samples(),
+            fairing_points_per_capsule: default_fairing_points_per_capsule(),
         }
     }
 }

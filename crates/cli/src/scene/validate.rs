@@ -94,6 +94,13 @@ impl Scene {
             2000,
         );
         check.count_in("resolution.deployment_samples", res.deployment_samples, 2, 1_000_000);
+        check.count_in("resolution.fairing_samples", res.fairing_samples, 2, 100_000);
+        check.count_in(
+            "resolution.fairing_points_per_capsule",
+            res.fairing_points_per_capsule,
+            2,
+            10_000,
+        );
         check.problems
     }
 }

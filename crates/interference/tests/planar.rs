@@ -1,0 +1,56 @@
+//! The fairing's planar solids are the interference check's 3D parts cut by the station
+//! plane: same places, same radii, at every flap rotation.
+
+use flapwright_interference::{planar_track_parts, track_parts, LinkSizes, PlanarCapsule, TrackParts};
+use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec};
+use nalgebra::{Isometry3, Point2, Point3, Vector2};
+
+fn thesis_parts() -> (CircularArcTrack, TrackParts, LinkSizes) {
+    let track = CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study()).unwrap();
+    let sizes = LinkSizes::default();
+    // Station frame = aircraft frame, so the plane is z = 0.
+    let parts = track_parts("st", &Isometry3::identity(), &track, &sizes).unwrap();
+    (track, parts, sizes)
+}
+
+/// Points across the middle of a planar capsule at `fraction` of its radius from its axis.
+fn across_the_middle(capsule: &PlanarCapsule, fraction: f64) -> [Point3<f64>; 2] {
+    let middle = capsule.from + (capsule.to - capsule.from) * 0.5;
+    let along = capsule.to - capsule.from;
+    let normal = if along.norm() > 0.0 {
+        Vector2::new(-along.y, along.x).normalize()
+    } else {
+        Vector2::x()
+    };
+    let at = |p: Point2<f64>| Point3::new(p.x, p.y, 0.0);
+    let offset = normal * (fraction * capsule.radius_m);
+    [at(middle + offset), at(middle - offset)]
+}
+
+#[test]
+fn planar_parts_are_the_3d_parts_in_the_station_plane() {
+    let (track, parts, sizes) = thesis_parts();
+    let end = track.spec().rotation_range_rad;
+    let mut named = std::collections::BTreeSet::new();
+    for t in [0.0, 0.3 * end, end] {
+        for capsule in planar_track_parts(&track, &sizes, t) {
+            named.insert(capsule.part);
+            let name = format!("st.{}", capsule.part);
+            let part = parts
+                .parts()
+                .find(|p| p.name == name)
+                .unwrap_or_else(|| panic!("{name}"));
+            let pose = part.motion.pose_ac(t);
+            // Inside at 90 % of the radius, outside at 110 % (the track tubes have 16
+            // facets: inradius cos(pi/16) = 98 % of the radius).
+            for point in across_the_middle(&capsule, 0.9) {
+                assert!(part.shape.contains_point(&pose, &point), "{name} at t = {t}: {point}");
+            }
+            for point in across_the_middle(&capsule, 1.1) {
+                assert!(!part.shape.contains_point(&pose, &point), "{name} at t = {t}: {point}");
+            }
+        }
+    }
+    let every_part: std::collections::BTreeSet<_> = parts.parts().map(|p| p.name.trim_start_matches("st.")).collect();
+    assert_eq!(named, every_part, "every 3D part has its planar solids");
+}

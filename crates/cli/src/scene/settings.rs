@@ -1,0 +1,217 @@
+//! Settings tables: `[sizing]`, `[[materials]]`, `[interference]`, `[outputs]`,
+//! `[resolution]`.
+
+use serde::Deserialize;
+
+/// `[sizing]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SizingScene {
+    /// Material of the screws (sized as rods for strength and buckling): a preset
+    /// (`steel-4340`, `aluminium-7075-t6`, `titanium-ti-6al-4v`) or a `[[materials]]` name.
+    #[serde(default = "default_screw_material")]
+    pub screw_material: String,
+    /// Material of the torque tubes.
+    #[serde(default = "default_tube_material")]
+    pub torque_tube_material: String,
+    /// Efficiency of each station gearbox, (0, 1].
+    #[serde(default = "default_gearbox_efficiency")]
+    pub gearbox_efficiency: f64,
+    /// Torque tube inner / outer radius, [0, 1) (0: solid).
+    #[serde(default = "default_wall_ratio")]
+    pub torque_tube_inner_to_outer_ratio: f64,
+    /// Euler end-fixity factor K of the screws (1: pinned-pinned).
+    #[serde(default = "default_end_fixity")]
+    pub screw_end_fixity_factor: f64,
+}
+
+fn default_screw_material() -> String {
+    "steel-4340".into()
+}
+fn default_tube_material() -> String {
+    "aluminium-7075-t6".into()
+}
+fn default_gearbox_efficiency() -> f64 {
+    0.9
+}
+fn default_wall_ratio() -> f64 {
+    0.8
+}
+fn default_end_fixity() -> f64 {
+    1.0
+}
+
+impl Default for SizingScene {
+    fn default() -> Self {
+        Self {
+            screw_material: default_screw_material(),
+            torque_tube_material: default_tube_material(),
+            gearbox_efficiency: default_gearbox_efficiency(),
+            torque_tube_inner_to_outer_ratio: default_wall_ratio(),
+            screw_end_fixity_factor: default_end_fixity(),
+        }
+    }
+}
+
+/// `[interference]`: the clearance check (defaults chosen from the error-vs-time study in
+/// the README).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct InterferenceScene {
+    /// Smallest acceptable clearance between parts, m.
+    #[serde(default = "default_clearance")]
+    pub required_clearance_m: f64,
+    /// Evenly spaced deployment samples before refinement.
+    #[serde(default = "default_initial_samples")]
+    pub initial_samples: usize,
+    /// Refine until the certified bound is within this of the sampled minimum, m.
+    #[serde(default = "default_tolerance")]
+    pub tolerance_m: f64,
+    /// Relative refinement tolerance: a clearance is located to the larger of
+    /// `tolerance_m` and this fraction of itself.
+    #[serde(default = "default_relative_tolerance")]
+    pub relative_tolerance: f64,
+    /// Distance evaluations per part pair at most.
+    #[serde(default = "default_max_evaluations")]
+    pub max_evaluations: usize,
+    /// Largest separation allowed between parts joined by design (the nut on its screw,
+    /// the fitting at the nut pivot), m.
+    #[serde(default = "default_joint_play")]
+    pub joint_play_m: f64,
+}
+
+/// 0.5 mm: the radial play of a plain trunnion bearing of this size is tenths of a
+/// millimetre; a nut that leaves its screw separates by far more.
+fn default_joint_play() -> f64 {
+    0.0005
+}
+
+fn default_clearance() -> f64 {
+    0.003
+}
+fn default_initial_samples() -> usize {
+    9
+}
+fn default_tolerance() -> f64 {
+    0.001
+}
+fn default_relative_tolerance() -> f64 {
+    0.01
+}
+fn default_max_evaluations() -> usize {
+    400
+}
+
+impl Default for InterferenceScene {
+    fn default() -> Self {
+        Self {
+            required_clearance_m: default_clearance(),
+            initial_samples: default_initial_samples(),
+            tolerance_m: default_tolerance(),
+            relative_tolerance: default_relative_tolerance(),
+            max_evaluations: default_max_evaluations(),
+            joint_play_m: default_joint_play(),
+        }
+    }
+}
+
+/// `[[materials]]`: a custom material.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialScene {
+    /// Name used in `[sizing]`.
+    pub name: String,
+    /// Density, kg/m^3.
+    pub density_kg_m3: f64,
+    /// Allowable tensile (and compressive) stress, Pa.
+    pub allowable_tensile_pa: f64,
+    /// Allowable shear stress, Pa.
+    pub allowable_shear_pa: f64,
+    /// Young's modulus, Pa.
+    pub youngs_modulus_pa: f64,
+}
+
+/// `[outputs]`: which results to produce; a stage that no requested output needs is skipped.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutputsScene {
+    /// Binary STL of every part.
+    #[serde(default = "yes")]
+    pub stl: bool,
+    /// Mechanism kinematics and forces.
+    #[serde(default = "yes")]
+    pub kinematics: bool,
+    /// Rods, screw jacks, torque tubes, drive power, masses (needs kinematics).
+    #[serde(default = "yes")]
+    pub sizing: bool,
+    /// Clearance check and fairing depth (needs a wing).
+    #[serde(default = "yes")]
+    pub interference: bool,
+    /// URDF of the wing and its mechanisms, with a trajectory file (needs a wing; writes the
+    /// STL files it refers to).
+    #[serde(default = "yes")]
+    pub urdf: bool,
+    /// SVG drawing and plots per station.
+    #[serde(default = "yes")]
+    pub svg: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl Default for OutputsScene {
+    fn default() -> Self {
+        Self {
+            stl: true,
+            kinematics: true,
+            sizing: true,
+            interference: true,
+            urdf: true,
+            svg: true,
+        }
+    }
+}
+
+/// `[resolution]`: discretisation knobs (defaults chosen from the error-vs-time tables in
+/// the README).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ResolutionScene {
+    /// Airfoil points per side (upper/lower).
+    #[serde(default = "default_points_per_side")]
+    pub airfoil_points_per_side: usize,
+    /// Deployment samples per station sweep.
+    #[serde(default = "default_samples")]
+    pub deployment_samples: usize,
+    /// Flap rotations at which the fairing depth is measured.
+    #[serde(default = "default_fairing_samples")]
+    pub fairing_samples: usize,
+    /// Points along each round solid (capsule axis) at which the fairing depth is measured.
+    #[serde(default = "default_fairing_points_per_capsule")]
+    pub fairing_points_per_capsule: usize,
+}
+
+fn default_points_per_side() -> usize {
+    60
+}
+fn default_samples() -> usize {
+    51
+}
+fn default_fairing_samples() -> usize {
+    21
+}
+fn default_fairing_points_per_capsule() -> usize {
+    8
+}
+
+impl Default for ResolutionScene {
+    fn default() -> Self {
+        Self {
+            airfoil_points_per_side: default_points_per_side(),
+            deployment_samples: default_samples(),
+            fairing_samples: default_fairing_samples(),
+            fairing_points_per_capsule: default_fairing_points_per_capsule(),
+        }
+    }
+}

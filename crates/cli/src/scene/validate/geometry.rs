@@ -1,0 +1,262 @@
+//! Checks of the aircraft: airfoils, wing, flaps, spars and torque tube.
+
+use super::Checker;
+use crate::scene::{AirfoilRef, FlapScene, Scene, WingScene};
+
+impl Checker<'_> {
+    fn airfoil(&mut self, path: &str, text: &str) {
+        match AirfoilRef::parse(text) {
+            Err(message) => self.fail(path, message),
+            Ok(AirfoilRef::File(name)) => {
+                if AirfoilRef::locate(&name, self.scene_dir).is_none() {
+                    self.fail(
+                        path,
+                        format!(
+                            "= \"{name}\": file not found next to the scene nor among the bundled airfoils ({})",
+                            crate::scene::airfoil_ref::BUNDLED_AIRFOILS
+                                .iter()
+                                .map(|(n, _)| *n)
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ),
+                    );
+                }
+            }
+            Ok(AirfoilRef::Naca(_)) => {}
+        }
+    }
+
+    pub(super) fn wing(&mut self, wing: &WingScene) {
+        self.finite_point("wing.root_leading_edge_m", &wing.root_leading_edge_m);
+        self.in_range(
+            "wing.twist_axis_chord_fraction",
+            wing.twist_axis_chord_fraction,
+            0.0,
+            1.0,
+            false,
+        );
+        if wing.sections.len() < 2 {
+            self.fail(
+                "wing.sections",
+                format!("has {} section(s): a wing needs at least 2", wing.sections.len()),
+            );
+        }
+        let mut previous_y: Option<f64> = None;
+        for (i, section) in wing.sections.iter().enumerate() {
+            let path = format!("wing.sections[{i}]");
+            if self.in_range(
+                &format!("{path}.y_m"),
+                section.y_m,
+                f64::NEG_INFINITY,
+                f64::INFINITY,
+                true,
+            ) {
+                if let Some(prev) = previous_y {
+                    if section.y_m <= prev {
+                        self.fail(
+                            format!("{path}.y_m"),
+                            format!(
+                                "= {}: sections must be in increasing spanwise order (previous y_m = {prev})",
+                                section.y_m
+                            ),
+                        );
+                    }
+                }
+                previous_y = Some(section.y_m);
+            }
+            self.positive(&format!("{path}.chord_m"), section.chord_m);
+            self.in_range(&format!("{path}.twist_deg"), section.twist_deg, -45.0, 45.0, false);
+            self.airfoil(&format!("{path}.airfoil"), &section.airfoil);
+        }
+        if let (Some(first), Some(last)) = (wing.sections.first(), wing.sections.last()) {
+            if wing.sections.len() >= 2 && first.y_m.is_finite() && last.y_m == first.y_m {
+                self.fail("wing.sections", "zero span: first and last sections have the same y_m");
+            }
+        }
+        let expected_panels = wing.sections.len().saturating_sub(1);
+        if wing.panels.len() != expected_panels {
+            self.fail(
+                "wing.panels",
+                format!(
+                    "has {} panel(s): must have one per gap between sections ({expected_panels})",
+                    wing.panels.len()
+                ),
+            );
+        }
+        for (i, panel) in wing.panels.iter().enumerate() {
+            self.in_range(
+                &format!("wing.panels[{i}].sweep_deg"),
+                panel.sweep_deg,
+                -80.0,
+                80.0,
+                true,
+            );
+            self.in_range(
+                &format!("wing.panels[{i}].dihedral_deg"),
+                panel.dihedral_deg,
+                -45.0,
+                45.0,
+                true,
+            );
+        }
+    }
+
+    pub(super) fn flap(&mut self, path: &str, flap: &FlapScene, wing: &WingScene) {
+        let (root, tip) = span_of(wing);
+        let inboard_ok = self.in_range(&format!("{path}.y_inboard_m"), flap.y_inboard_m, root, tip, false);
+        let outboard_ok = self.in_range(&format!("{path}.y_outboard_m"), flap.y_outboard_m, root, tip, false);
+        if inboard_ok && outboard_ok && flap.y_outboard_m <= flap.y_inboard_m {
+            self.fail(
+                format!("{path}.y_outboard_m"),
+                format!(
+                    "= {}: must be greater than y_inboard_m = {}",
+                    flap.y_outboard_m, flap.y_inboard_m
+                ),
+            );
+        }
+        for (key, value) in [
+            ("chord_fraction_inboard", flap.chord_fraction_inboard),
+            ("chord_fraction_outboard", flap.chord_fraction_outboard),
+        ] {
+            self.in_range(&format!("{path}.{key}"), value, 0.0, 0.8, true);
+        }
+        if let Some(gap) = flap.side_gap_m {
+            let quarter_span = 0.25 * (flap.y_outboard_m - flap.y_inboard_m).abs();
+            self.in_range(&format!("{path}.side_gap_m"), gap, 0.0, quarter_span, false);
+        }
+        if let Some(airfoil) = &flap.airfoil {
+            self.airfoil(&format!("{path}.airfoil"), airfoil);
+        }
+        let hinge = &flap.hinge;
+        let hinge_path = format!("{path}.hinge");
+        match (hinge.inboard_point_m, hinge.outboard_point_m, hinge.chord_fraction) {
+            (Some(a), Some(b), None) => {
+                let ok_a = self.finite_point(&format!("{hinge_path}.inboard_point_m"), &a);
+                let ok_b = self.finite_point(&format!("{hinge_path}.outboard_point_m"), &b);
+                let length = ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt();
+                if ok_a && ok_b && length < 1e-6 {
+                    self.fail(
+                        hinge_path.clone(),
+                        format!("axis has length {length} m: the two points must be distinct (>= 1e-6 m)"),
+                    );
+                } else if ok_a && ok_b && (b[1] - a[1]) <= 0.0 {
+                    self.fail(
+                        format!("{hinge_path}.outboard_point_m"),
+                        "must be further outboard (larger y) than inboard_point_m",
+                    );
+                }
+                if hinge.depth_below_chord_fraction.is_some() {
+                    self.fail(
+                        format!("{hinge_path}.depth_below_chord_fraction"),
+                        "goes with chord_fraction, not with axis points",
+                    );
+                }
+            }
+            (None, None, Some(fraction)) => {
+                self.in_range(&format!("{hinge_path}.chord_fraction"), fraction, 0.0, 1.5, false);
+                if let Some(depth) = hinge.depth_below_chord_fraction {
+                    self.in_range(
+                        &format!("{hinge_path}.depth_below_chord_fraction"),
+                        depth,
+                        -0.5,
+                        1.0,
+                        false,
+                    );
+                }
+            }
+            _ => self.fail(
+                hinge_path,
+                "give either inboard_point_m and outboard_point_m, or chord_fraction (with optional depth_below_chord_fraction)",
+            ),
+        }
+        let settings = &flap.settings;
+        let takeoff_ok = self.in_range(
+            &format!("{path}.settings.takeoff_deg"),
+            settings.takeoff_deg,
+            0.0,
+            90.0,
+            false,
+        );
+        let landing_ok = self.in_range(
+            &format!("{path}.settings.landing_deg"),
+            settings.landing_deg,
+            0.0,
+            90.0,
+            true,
+        );
+        if takeoff_ok && landing_ok && settings.takeoff_deg > settings.landing_deg {
+            self.fail(
+                format!("{path}.settings.takeoff_deg"),
+                format!(
+                    "= {}: must not exceed landing_deg = {}",
+                    settings.takeoff_deg, settings.landing_deg
+                ),
+            );
+        }
+    }
+
+    pub(super) fn structure(&mut self, scene: &Scene, wing: &WingScene) {
+        let (root, tip) = span_of(wing);
+        for (i, spar) in scene.structure.spars.iter().enumerate() {
+            let path = format!("structure.spars[{i}]");
+            let fraction_ok = self.in_range(&format!("{path}.chord_fraction"), spar.chord_fraction, 0.0, 1.0, true);
+            self.positive(&format!("{path}.thickness_m"), spar.thickness_m);
+            let start_ok = self.in_range(&format!("{path}.y_start_m"), spar.y_start_m, root, tip, false);
+            let end_ok = self.in_range(&format!("{path}.y_end_m"), spar.y_end_m, root, tip, false);
+            if start_ok && end_ok && spar.y_end_m <= spar.y_start_m {
+                self.fail(
+                    format!("{path}.y_end_m"),
+                    format!("= {}: must be greater than y_start_m", spar.y_end_m),
+                );
+            }
+            if !(fraction_ok && start_ok && end_ok) {
+                continue;
+            }
+            for flap in &scene.flap {
+                let overlaps = spar.y_start_m < flap.y_outboard_m && spar.y_end_m > flap.y_inboard_m;
+                let flap_front = 1.0 - flap.chord_fraction_inboard.max(flap.chord_fraction_outboard);
+                if overlaps && spar.chord_fraction >= flap_front {
+                    self.fail(
+                        format!("{path}.chord_fraction"),
+                        format!(
+                            "= {}: the spar lies in flap \"{}\" (flap starts at chord fraction {flap_front:.3}); must be < {flap_front:.3}",
+                            spar.chord_fraction, flap.name
+                        ),
+                    );
+                }
+            }
+        }
+        self.unique_names("structure.spars", scene.structure.spars.iter().map(|s| s.name.as_str()));
+        if let Some(tube) = &scene.structure.torque_tube {
+            let path = "structure.torque_tube";
+            self.positive(&format!("{path}.radius_m"), tube.radius_m);
+            if tube.path_m.len() < 2 {
+                self.fail(
+                    format!("{path}.path_m"),
+                    format!("has {} point(s): needs at least 2", tube.path_m.len()),
+                );
+            }
+            for (i, point) in tube.path_m.iter().enumerate() {
+                self.finite_point(&format!("{path}.path_m[{i}]"), point);
+            }
+            for (i, pair) in tube.path_m.windows(2).enumerate() {
+                let length = ((pair[1][0] - pair[0][0]).powi(2)
+                    + (pair[1][1] - pair[0][1]).powi(2)
+                    + (pair[1][2] - pair[0][2]).powi(2))
+                .sqrt();
+                if length < 1e-6 {
+                    self.fail(
+                        format!("{path}.path_m[{}]", i + 1),
+                        "repeats the previous point: segments must be longer than 1e-6 m",
+                    );
+                }
+            }
+        }
+    }
+}
+
+fn span_of(wing: &WingScene) -> (f64, f64) {
+    let root = wing.sections.first().map_or(0.0, |s| s.y_m);
+    let tip = wing.sections.last().map_or(0.0, |s| s.y_m);
+    (root, tip)
+}

@@ -1,0 +1,126 @@
+//! Checks of the stations' mechanisms and the load cases.
+
+use super::Checker;
+use crate::scene::{MechanismScene, Scene};
+
+impl Checker<'_> {
+    pub(super) fn stations(&mut self, scene: &Scene) {
+        self.unique_names("station", scene.station.iter().map(|s| s.name.as_str()));
+        for (i, station) in scene.station.iter().enumerate() {
+            let path = format!("station[{i}]");
+            match (&station.flap, &scene.wing) {
+                (Some(name), Some(_)) => match scene.flap.iter().find(|f| &f.name == name) {
+                    None => self.fail(
+                        format!("{path}.flap"),
+                        format!(
+                            "= \"{name}\": no flap of that name (flaps: {})",
+                            scene
+                                .flap
+                                .iter()
+                                .map(|f| f.name.as_str())
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ),
+                    ),
+                    Some(flap) => {
+                        let span = flap.y_outboard_m - flap.y_inboard_m;
+                        match station.axis_offset_m {
+                            None => self.fail(format!("{path}.axis_offset_m"), "is required for a station on a flap"),
+                            Some(offset) => {
+                                if span.is_finite() && span > 0.0 {
+                                    self.in_range(&format!("{path}.axis_offset_m"), offset, 0.0, 2.0 * span, false);
+                                }
+                            }
+                        }
+                    }
+                },
+                (None, Some(_)) => self.fail(format!("{path}.flap"), "is required when the scene has a wing"),
+                (Some(_), None) => self.fail(
+                    format!("{path}.flap"),
+                    "a 2D-only scene (no [wing]) has no flaps to name",
+                ),
+                (None, None) => {}
+            }
+            let MechanismScene::CircularArcTrack(m) = &station.mechanism;
+            let mpath = format!("{path}.mechanism");
+            for (key, value) in [
+                ("base_distance_m", m.base_distance_m),
+                ("crank_length_m", m.crank_length_m),
+                ("outer_slot_radius_m", m.outer_slot_radius_m),
+                ("inner_slot_radius_m", m.inner_slot_radius_m),
+                ("flap_mass_kg", m.flap_mass_kg),
+                ("screw_lead_m", m.screw_lead_m),
+                ("screw_mean_radius_m", m.screw_mean_radius_m),
+                ("nut_speed_mps", m.nut_speed_mps),
+            ] {
+                self.positive(&format!("{mpath}.{key}"), value);
+            }
+            if let Some(a3) = m.screw_length_m {
+                self.positive(&format!("{mpath}.screw_length_m"), a3);
+            }
+            self.in_range(
+                &format!("{mpath}.base_angle_deg"),
+                m.base_angle_deg,
+                -360.0,
+                360.0,
+                false,
+            );
+            self.in_range(
+                &format!("{mpath}.slot_start_angle_deg"),
+                m.slot_start_angle_deg,
+                -360.0,
+                360.0,
+                false,
+            );
+            self.in_range(
+                &format!("{mpath}.slot_offset_angle_deg"),
+                m.slot_offset_angle_deg,
+                -360.0,
+                360.0,
+                false,
+            );
+            self.in_range(
+                &format!("{mpath}.rotation_range_deg"),
+                m.rotation_range_deg,
+                0.0,
+                180.0,
+                true,
+            );
+            self.in_range(&format!("{mpath}.screw_friction"), m.screw_friction, 0.0, 1.0, false);
+            self.finite_point(&format!("{mpath}.flap_centre_of_mass_m"), &m.flap_centre_of_mass_m);
+            if m.inner_slot_radius_m.is_finite() && m.inner_slot_radius_m >= m.outer_slot_radius_m {
+                // Thesis section 5.3, red-cell condition 2.
+                self.fail(
+                    format!("{mpath}.inner_slot_radius_m"),
+                    format!(
+                        "= {}: must be smaller than outer_slot_radius_m = {} (thesis 5.3, condition 2)",
+                        m.inner_slot_radius_m, m.outer_slot_radius_m
+                    ),
+                );
+            }
+        }
+    }
+
+    pub(super) fn loads(&mut self, scene: &Scene) {
+        if let Some(factor) = scene.loads.safety_factor {
+            self.in_range("loads.safety_factor", factor, 1.0, 10.0, false);
+        }
+        self.unique_names("loads.cases", scene.loads.cases.iter().map(|c| c.name.as_str()));
+        for (i, case) in scene.loads.cases.iter().enumerate() {
+            let path = format!("loads.cases[{i}]");
+            match (case.moment_nm, case.moment_stowed_nm, case.moment_deployed_nm) {
+                (Some(m), None, None) => {
+                    self.in_range(&format!("{path}.moment_nm"), m, -1e9, 1e9, false);
+                }
+                (None, Some(a), Some(b)) => {
+                    self.in_range(&format!("{path}.moment_stowed_nm"), a, -1e9, 1e9, false);
+                    self.in_range(&format!("{path}.moment_deployed_nm"), b, -1e9, 1e9, false);
+                }
+                _ => self.fail(
+                    path,
+                    "give either moment_nm, or moment_stowed_nm and moment_deployed_nm",
+                ),
+            }
+        }
+    }
+}

@@ -1,0 +1,162 @@
+//! The aircraft: `[wing]` with its sections and panels, `[[flap]]`, `[structure]`.
+
+use serde::Deserialize;
+
+/// Which reference line the panel sweep angles are measured on.
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum SweepReferenceScene {
+    /// Leading-edge sweep.
+    #[default]
+    LeadingEdge,
+    /// Quarter-chord sweep.
+    QuarterChord,
+}
+
+/// `[wing]`: sections root to tip and the panels between them.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WingScene {
+    /// Leading edge of the root section, aircraft frame (x aft, y outboard, z up), m.
+    #[serde(default)]
+    pub root_leading_edge_m: [f64; 3],
+    /// Line on which the panel sweep angles are measured.
+    #[serde(default)]
+    pub sweep_reference: SweepReferenceScene,
+    /// Chord fraction about which sections are twisted (0 = leading edge).
+    #[serde(default = "quarter")]
+    pub twist_axis_chord_fraction: f64,
+    /// Sections, root to tip (at least two).
+    pub sections: Vec<WingSectionScene>,
+    /// One panel between each pair of consecutive sections.
+    pub panels: Vec<PanelScene>,
+}
+
+fn quarter() -> f64 {
+    0.25
+}
+
+/// `[[wing.sections]]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WingSectionScene {
+    /// Spanwise position (aircraft y), m.
+    pub y_m: f64,
+    /// Chord, m.
+    pub chord_m: f64,
+    /// Twist, positive nose up, deg.
+    #[serde(default)]
+    pub twist_deg: f64,
+    /// `"NACA 2412"`, `"NACA 23012"` or a `.dat` file (Selig or Lednicer).
+    pub airfoil: String,
+}
+
+/// `[[wing.panels]]`: the part of the wing between two consecutive sections.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PanelScene {
+    /// Sweep angle on the wing's sweep reference line, deg.
+    #[serde(default)]
+    pub sweep_deg: f64,
+    /// Dihedral angle, deg (negative: anhedral).
+    #[serde(default)]
+    pub dihedral_deg: f64,
+}
+
+/// `[[flap]]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FlapScene {
+    /// Flap name; stations refer to it.
+    pub name: String,
+    /// Inboard end, aircraft y, m.
+    pub y_inboard_m: f64,
+    /// Outboard end, aircraft y, m.
+    pub y_outboard_m: f64,
+    /// Flap chord / local wing chord at the inboard end.
+    pub chord_fraction_inboard: f64,
+    /// Flap chord / local wing chord at the outboard end.
+    pub chord_fraction_outboard: f64,
+    /// Own flap section nested in the cove (`"n63212.dat"`); absent: the flap is cut out of
+    /// the wing section.
+    pub airfoil: Option<String>,
+    /// Spanwise gap between each flap side and the wing, m (default: 0.5 % of the local
+    /// chord). A hinge line that is not perpendicular to the streamwise flap sides moves
+    /// the sides spanwise as the flap deploys.
+    pub side_gap_m: Option<f64>,
+    /// The flap rotation axis.
+    pub hinge: HingeScene,
+    /// Flap settings, deg of rotation about the hinge axis (trailing edge down positive).
+    #[serde(default)]
+    pub settings: SettingsScene,
+}
+
+/// `[flap.hinge]`: either two points or a chord fraction and depth.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HingeScene {
+    /// Inboard axis point, aircraft frame, m.
+    pub inboard_point_m: Option<[f64; 3]>,
+    /// Outboard axis point, aircraft frame, m.
+    pub outboard_point_m: Option<[f64; 3]>,
+    /// Hinge at this fraction of the local wing chord ...
+    pub chord_fraction: Option<f64>,
+    /// ... and this far below the chord line, as a fraction of the local wing chord.
+    pub depth_below_chord_fraction: Option<f64>,
+}
+
+/// `[flap.settings]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SettingsScene {
+    /// Take-off deflection, deg.
+    pub takeoff_deg: f64,
+    /// Landing deflection (fully deployed), deg.
+    pub landing_deg: f64,
+}
+
+impl Default for SettingsScene {
+    fn default() -> Self {
+        Self {
+            takeoff_deg: 15.0,
+            landing_deg: 35.0,
+        }
+    }
+}
+
+/// `[structure]`.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct StructureScene {
+    /// Spars as plates at a chord fraction.
+    #[serde(default)]
+    pub spars: Vec<SparScene>,
+    /// The flap drive torque tube.
+    pub torque_tube: Option<TorqueTubeScene>,
+}
+
+/// `[[structure.spars]]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SparScene {
+    /// Part name.
+    pub name: String,
+    /// Chord fraction of the spar's mid-plane.
+    pub chord_fraction: f64,
+    /// Web thickness, m.
+    pub thickness_m: f64,
+    /// Inboard end, aircraft y, m.
+    pub y_start_m: f64,
+    /// Outboard end, aircraft y, m.
+    pub y_end_m: f64,
+}
+
+/// `[structure.torque_tube]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TorqueTubeScene {
+    /// Polyline of the tube axis, aircraft frame, m.
+    pub path_m: Vec<[f64; 3]>,
+    /// Outer radius, m.
+    pub radius_m: f64,
+}

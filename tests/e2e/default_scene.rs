@@ -93,6 +93,31 @@ fn no_arguments_designs_the_default_scene() {
             plots.contains("Gap and overlap behind the cove lip"),
             "{name}: gap/overlap plot"
         );
+        // The clearance chart names the station's closest pair from the check.
+        let closest = report["interference"]["pairs"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|p| p["station"] == name)
+            .min_by(|a, b| {
+                let signed = |p: &serde_json::Value| {
+                    p["min_clearance_m"].as_f64().unwrap() - p["penetration_m"].as_f64().unwrap()
+                };
+                signed(a).total_cmp(&signed(b))
+            })
+            .unwrap();
+        let short = |part: &serde_json::Value| {
+            part.as_str()
+                .unwrap()
+                .trim_start_matches(&format!("{name}."))
+                .to_string()
+        };
+        let legend = format!("{} vs {}", short(&closest["part_a"]), short(&closest["part_b"]));
+        assert!(
+            plots.contains("Clearance of the closest pairs"),
+            "{name}: clearance plot"
+        );
+        assert!(plots.contains(&legend), "{name}: clearance plot shows {legend}");
     }
 
     // A second run gives the same report apart from the timings section.

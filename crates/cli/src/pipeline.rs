@@ -16,6 +16,7 @@ pub mod flap_position;
 mod geometry;
 mod interference;
 pub mod mechanisms;
+mod plots;
 mod sizing;
 pub mod stations;
 
@@ -199,7 +200,15 @@ pub fn design_with_progress(
             .map(|m| m.as_ref().map(|m| m.load_cases.as_slice()))
             .collect();
         exported.svg = stages.run("svg", || {
-            exports::write_svgs(scene, &mechanisms, &placed_refs, &sweeps, &fairings, out)
+            exports::write_svgs(
+                scene,
+                &mechanisms,
+                &placed_refs,
+                &sweeps,
+                &fairings,
+                interference_report.as_ref(),
+                out,
+            )
         })?;
     }
     drop(meshed);

@@ -73,6 +73,8 @@ pub(crate) struct Minimum<S> {
     /// The true minimum of g is at least the best sample's g less this.
     pub residual: f64,
     pub evaluations: usize,
+    /// Every evaluation as (t, rank), in t order.
+    pub trace: Vec<(f64, f64)>,
 }
 
 /// Minimises `objective` over `t` in `[start, end]`, its g having Lipschitz constant
@@ -101,6 +103,7 @@ pub(crate) fn certified_minimum<O: Objective>(
             objective.evaluate(t).map(|s| (t, s))
         })
         .collect::<Result<Vec<_>>>()?;
+    let mut trace: Vec<(f64, f64)> = samples.iter().map(|(t, s)| (*t, objective.rank(s))).collect();
     let mut heap: BinaryHeap<Interval> = samples
         .windows(2)
         .map(|w| interval((w[0].0, objective.value(&w[0].1)), (w[1].0, objective.value(&w[1].1))))
@@ -130,6 +133,7 @@ pub(crate) fn certified_minimum<O: Objective>(
             let middle = objective.evaluate(t)?;
             evaluations += 1;
             let g = objective.value(&middle);
+            trace.push((t, objective.rank(&middle)));
             heap.push(interval(worst.start, (t, g)));
             heap.push(interval((t, g), worst.end));
             if objective.rank(&middle) < objective.rank(&best) {
@@ -139,10 +143,12 @@ pub(crate) fn certified_minimum<O: Objective>(
     }
     let best_value = objective.value(&best);
     let lowest_bound = heap.peek().map_or(best_value, |i| i.lower_bound);
+    trace.sort_by(|x, y| x.0.total_cmp(&y.0));
     Ok(Minimum {
         t: best_t,
         sample: best,
         residual: (best_value - lowest_bound).max(0.0),
         evaluations,
+        trace,
     })
 }

@@ -112,6 +112,11 @@ pub struct PairClearance {
     pub residual_bound_m: f64,
     /// Distance evaluations spent.
     pub evaluations: usize,
+    /// Every evaluation as (deployment value, signed clearance in m: minus the sampled
+    /// penetration depth while the parts overlap), in deployment order. For plots; not
+    /// written to the report.
+    #[serde(skip)]
+    pub trace: Vec<(f64, f64)>,
 }
 
 /// The largest separation of two parts joined by design over the deployment.
@@ -255,6 +260,7 @@ pub fn sweep_pair(a: &Part, b: &Part, start: f64, end: f64, settings: &SweepSett
         penetration_resolution_m: best.penetration_resolution_m,
         residual_bound_m: found.residual,
         evaluations: found.evaluations,
+        trace: found.trace,
     })
 }
 

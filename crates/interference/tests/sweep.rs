@@ -99,6 +99,12 @@ fn orbiting_ball_matches_the_analytic_clearance() {
     assert_relative_eq!(result.min_clearance_m, expected, max_relative = 1e-9);
     assert_relative_eq!(result.at_parameter, 0.3, epsilon = 1e-12);
     assert!(result.residual_bound_m <= SweepSettings::default().tolerance_m);
+    // Every evaluation is traced, in deployment order, and each is the analytic clearance.
+    assert_eq!(result.trace.len(), result.evaluations);
+    assert!(result.trace.windows(2).all(|w| w[0].0 < w[1].0), "{:?}", result.trace);
+    for &(t, clearance) in &result.trace {
+        assert_relative_eq!(clearance, 2.0 * (0.5 * t).sin() - 0.2, max_relative = 1e-9);
+    }
 }
 
 /// A ball r = 0.1 on the unit-circle orbit, and a fixed ball of `radius_m` at (x_m, 0, 0).
@@ -161,6 +167,8 @@ fn a_collision_reports_its_deepest_sample() {
     assert!(result.penetration_m <= 0.2 + 1e-9, "{result:?}");
     assert!(result.penetration_m >= 0.2 - 1.01 * settings.tolerance_m, "{result:?}");
     assert_eq!(result.penetration_resolution_m, settings.tolerance_m);
+    // The trace reads the overlap as negative clearance: minus the depth at t = 0.
+    assert!(result.trace.contains(&(0.0, -result.penetration_m)), "{:?}", result.trace);
 }
 
 #[test]

@@ -3,19 +3,19 @@
 
 use anyhow::{Context, Result};
 use flapwright_drawing::{
-    convex_hull, render_plots_svg, render_station_svg, Dimension, Joint, Link, MechanismSnapshot, PartStyle, Plot,
-    SectionOutline, Series, SlotArc, StationDrawing,
+    convex_hull, render_plots_svg, render_station_svg, Dimension, Joint, Link, MechanismSnapshot, PartStyle,
+    SectionOutline, SlotArc, StationDrawing,
 };
-use flapwright_interference::FairingDepth;
+use flapwright_interference::{FairingDepth, InterferenceReport};
 use flapwright_mechanism::urdf::{build_robot, to_xml, trajectory, BaseLink, CutJoint, MeshRef, StationMechanism3d};
 use flapwright_mechanism::Sweep;
-use flapwright_planes::FlapBehindWing;
 use nalgebra::{Point2, Rotation2};
 use serde::Serialize;
 
 use crate::output::StagedDir;
 use crate::pipeline::flap_position::flap_behind_wing;
 use crate::pipeline::mechanisms::StationMechanism;
+use crate::pipeline::plots::station_plots;
 use crate::pipeline::stations::PlacedStation;
 use crate::report::PartReport;
 use crate::scene::Scene;
@@ -170,6 +170,7 @@ pub fn write_svgs(
     placed: &[Option<&PlacedStation>],
     sweeps: &[Option<&[Sweep]>],
     fairings: &[Option<FairingDepth>],
+    interference: Option<&InterferenceReport>,
     out: &StagedDir,
 ) -> Result<Vec<String>> {
     let flap_names: Vec<String> = scene.flap.iter().map(|f| f.name.clone()).collect();
@@ -299,8 +300,8 @@ pub fn write_svgs(
                 _ => None,
             };
             let svg = render_plots_svg(
-                &format!("{}: station {} against the nut position s34", scene.name, station.name),
-                &plots(cases, flap_behind_wing.as_ref()),
+                &format!("{}: station {}", scene.name, station.name),
+                &station_plots(cases, flap_behind_wing.as_ref(), interference, &station.name),
             )
             .with_context(|| format!("plotting station {}", station.name))?;
             std::fs::write(out.file(&name), svg).with_context(|| format!("writing {name}"))?;
@@ -308,66 +309,6 @@ pub fn write_svgs(
         }
     }
     Ok(files)
-}
-
-fn plots(cases: &[Sweep], flap_behind_wing: Option<&FlapBehindWing>) -> Vec<Plot> {
-    let series = |case: &Sweep, name: String, y: &dyn Fn(&flapwright_mechanism::SweepSample) -> f64| Series {
-        name,
-        points: case.samples.iter().map(|s| (s.input_m * 1e3, y(s))).collect(),
-    };
-    let x_label = "nut position s34 (mm)".to_string();
-    let first = &cases[..cases.len().min(1)];
-    let plot =
-        |title: &str, y_label: &str, cases: &[Sweep], y: &dyn Fn(&flapwright_mechanism::SweepSample) -> f64| Plot {
-            title: title.into(),
-            x_label: x_label.clone(),
-            y_label: y_label.into(),
-            series: cases.iter().map(|c| series(c, c.load_case.clone(), y)).collect(),
-        };
-    let mut plots = vec![
-        plot("Flap deflection", "deflection (deg)", first, &|s| s.deflection_deg),
-        plot("Transmission angle", "transmission angle (deg)", first, &|s| {
-            s.transmission_angle_deg
-        }),
-        plot("Actuator force", "F_input (N)", cases, &|s| s.actuator_force_n),
-        plot("Screw raise torque", "T_R (N m)", cases, &|s| s.raise_torque_nm),
-        plot("Screw lower torque", "T_L (N m)", cases, &|s| s.lower_torque_nm),
-        Plot {
-            title: format!(
-                "Slot reactions ({})",
-                first.first().map_or("", |c| c.load_case.as_str())
-            ),
-            x_label: x_label.clone(),
-            y_label: "reaction (N)".into(),
-            series: first
-                .iter()
-                .flat_map(|c| {
-                    [
-                        series(c, "G12F, outer slot".into(), &|s| s.joint_reactions_n.outer_pin_f_n),
-                        series(c, "G12G, inner slot".into(), &|s| s.joint_reactions_n.inner_pin_g_n),
-                    ]
-                })
-                .collect(),
-        },
-    ];
-    if let Some(measure) = flap_behind_wing {
-        let at = |s: &flapwright_mechanism::SweepSample| measure.at_rotation(s.deflection_deg.to_radians());
-        plots.push(Plot {
-            title: "Gap and overlap behind the cove lip".into(),
-            x_label,
-            y_label: "% of local chord".into(),
-            series: first
-                .iter()
-                .flat_map(|c| {
-                    [
-                        series(c, "gap".into(), &|s| at(s).gap_percent_chord),
-                        series(c, "overlap".into(), &|s| at(s).overlap_percent_chord),
-                    ]
-                })
-                .collect(),
-        });
-    }
-    plots
 }
 
 /// How far ahead of the mechanism the station drawing shows the wing (m).

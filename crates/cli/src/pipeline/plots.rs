@@ -1,0 +1,130 @@
+//! The plots page of a station: what the kinematics, the gap and overlap measure and the
+//! interference check found, as charts (drawing crate).
+
+use flapwright_drawing::{Plot, Series};
+use flapwright_interference::{InterferenceReport, PairResult};
+use flapwright_mechanism::Sweep;
+use flapwright_planes::FlapBehindWing;
+
+/// The plots of one station: kinematics and loads against the nut position (first load
+/// case, or every case where they differ), gap and overlap when the station has a flap
+/// section, and the clearance of its closest pairs when the interference check ran.
+pub fn station_plots(
+    cases: &[Sweep],
+    flap_behind_wing: Option<&FlapBehindWing>,
+    interference: Option<&InterferenceReport>,
+    station: &str,
+) -> Vec<Plot> {
+    let series = |case: &Sweep, name: String, y: &dyn Fn(&flapwright_mechanism::SweepSample) -> f64| Series {
+        name,
+        points: case.samples.iter().map(|s| (s.input_m * 1e3, y(s))).collect(),
+    };
+    let x_label = "nut position s34 (mm)".to_string();
+    let first = &cases[..cases.len().min(1)];
+    let plot =
+        |title: &str, y_label: &str, cases: &[Sweep], y: &dyn Fn(&flapwright_mechanism::SweepSample) -> f64| Plot {
+            title: title.into(),
+            x_label: x_label.clone(),
+            y_label: y_label.into(),
+            series: cases.iter().map(|c| series(c, c.load_case.clone(), y)).collect(),
+        };
+    let mut plots = vec![
+        plot("Flap deflection", "deflection (deg)", first, &|s| s.deflection_deg),
+        plot("Transmission angle", "transmission angle (deg)", first, &|s| {
+            s.transmission_angle_deg
+        }),
+        plot("Actuator force", "F_input (N)", cases, &|s| s.actuator_force_n),
+        plot("Screw raise torque", "T_R (N m)", cases, &|s| s.raise_torque_nm),
+        plot("Screw lower torque", "T_L (N m)", cases, &|s| s.lower_torque_nm),
+        Plot {
+            title: format!(
+                "Slot reactions ({})",
+                first.first().map_or("", |c| c.load_case.as_str())
+            ),
+            x_label: x_label.clone(),
+            y_label: "reaction (N)".into(),
+            series: first
+                .iter()
+                .flat_map(|c| {
+                    [
+                        series(c, "G12F, outer slot".into(), &|s| s.joint_reactions_n.outer_pin_f_n),
+                        series(c, "G12G, inner slot".into(), &|s| s.joint_reactions_n.inner_pin_g_n),
+                    ]
+                })
+                .collect(),
+        },
+    ];
+    if let Some(measure) = flap_behind_wing {
+        let at = |s: &flapwright_mechanism::SweepSample| measure.at_rotation(s.deflection_deg.to_radians());
+        plots.push(Plot {
+            title: "Gap and overlap behind the cove lip".into(),
+            x_label: x_label.clone(),
+            y_label: "% of local chord".into(),
+            series: first
+                .iter()
+                .flat_map(|c| {
+                    [
+                        series(c, "gap".into(), &|s| at(s).gap_percent_chord),
+                        series(c, "overlap".into(), &|s| at(s).overlap_percent_chord),
+                    ]
+                })
+                .collect(),
+        });
+    }
+    plots.extend(interference.and_then(|report| clearance_plot(report, station)));
+    plots
+}
+
+/// How many of a station's pairs its clearance plot shows, closest first.
+const CLEARANCE_PLOT_PAIRS: usize = 4;
+
+/// Signed clearance against flap rotation of the station's closest pairs, from every
+/// distance evaluation of the check (the initial samples and the refinements near each
+/// minimum, so the lines are densest where the clearance is smallest), with the required
+/// clearance.
+fn clearance_plot(report: &InterferenceReport, station: &str) -> Option<Plot> {
+    let signed = |pair: &PairResult| pair.clearance.min_clearance_m - pair.clearance.penetration_m;
+    let mut pairs: Vec<&PairResult> = report
+        .pairs
+        .iter()
+        .filter(|p| p.station.as_deref() == Some(station) && !p.clearance.trace.is_empty())
+        .collect();
+    pairs.sort_by(|a, b| signed(a).total_cmp(&signed(b)));
+    let [start, end] = report.deployment_range_rad.map(f64::to_degrees);
+    let prefix = format!("{station}.");
+    let short = |name: &str| name.strip_prefix(&prefix).unwrap_or(name).to_string();
+    let mut series: Vec<Series> = pairs
+        .iter()
+        .take(CLEARANCE_PLOT_PAIRS)
+        .map(|pair| {
+            let clearance = &pair.clearance;
+            let mut points: Vec<(f64, f64)> = clearance
+                .trace
+                .iter()
+                .map(|&(t, d)| (t.to_degrees(), d * 1e3))
+                .collect();
+            if let [(_, only)] = points[..] {
+                // Parts that do not move are evaluated once.
+                points = vec![(start, only), (end, only)];
+            }
+            Series {
+                name: format!("{} vs {}", short(&clearance.part_a), short(&clearance.part_b)),
+                points,
+            }
+        })
+        .collect();
+    if series.is_empty() {
+        return None;
+    }
+    let required_mm = report.required_clearance_m * 1e3;
+    series.push(Series {
+        name: "required".into(),
+        points: vec![(start, required_mm), (end, required_mm)],
+    });
+    Some(Plot {
+        title: "Clearance of the closest pairs".into(),
+        x_label: "flap rotation (deg)".into(),
+        y_label: "clearance (mm), < 0: overlap".into(),
+        series,
+    })
+}

@@ -5,12 +5,14 @@
 //!   over the deployment parameter `t` (pose and a certified speed bound).
 //! - [`sweep_pair`] → [`PairClearance`]: smallest clearance of a pair over the deployment,
 //!   where it occurs, the closest points, and a residual bound.
-//! - [`track_parts`]: a circular-arc-track station's screw, nut and fittings as parts
-//!   ([`ScrewAboutMount`], [`AboutAxis`] motions with certified speed bounds).
+//! - [`track_parts`]: a circular-arc-track station's screw, jack body, nut, fittings and
+//!   slot tracks as parts ([`ScrewAboutMount`], [`AboutAxis`] motions with certified speed
+//!   bounds), with the joints between them ([`DeclaredContact`]).
 //! - [`sweep_contact`] → [`JointSeparation`]: largest separation of parts joined by design.
-//! - [`check_assembly`] → [`InterferenceReport`]: every moving part against the fixed
-//!   structure and the screws against the flap; joints ([`DeclaredContact`]s) must stay
-//!   within the joint's play ([`Requirements`]).
+//! - [`check_assembly`] → [`InterferenceReport`]: every station part against the fixed
+//!   structure, the screws and jack bodies against the flap, the flap against the
+//!   structure, and the parts of different stations against each other; joints must stay
+//!   within the joint's play ([`Requirements`]); pairs left out are listed with the reason.
 //! - [`fairing_depth`]: how far the mechanism reaches below the lower wing/flap contour;
 //!   [`planar_track_parts`] gives a station's solids in its plane for it.
 //!
@@ -29,6 +31,8 @@
 //! Parts are solids through `flapwright_geom::collision::compute_clearance`: closed meshes
 //! must be outward oriented for a part wholly inside one to count as overlapping. The
 //! penetration depth is the deepest of the sampled poses, not refined between samples.
+//! Parts of one station are not checked against each other (the planar model puts links
+//! that are stacked spanwise in one plane).
 //!
 //! # Pitfalls
 //! A speed bound that is too small voids the guarantee silently; derive it from the

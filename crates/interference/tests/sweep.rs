@@ -168,7 +168,11 @@ fn a_collision_reports_its_deepest_sample() {
     assert!(result.penetration_m >= 0.2 - 1.01 * settings.tolerance_m, "{result:?}");
     assert_eq!(result.penetration_resolution_m, settings.tolerance_m);
     // The trace reads the overlap as negative clearance: minus the depth at t = 0.
-    assert!(result.trace.contains(&(0.0, -result.penetration_m)), "{:?}", result.trace);
+    assert!(
+        result.trace.contains(&(0.0, -result.penetration_m)),
+        "{:?}",
+        result.trace
+    );
 }
 
 #[test]

@@ -4,7 +4,7 @@
 
 use crate::labels::{LabelPlacer, PageBox};
 use crate::model::{Dimension, MechanismSnapshot, SlotArc};
-use crate::style::{css_name, num, points_attribute, setting_style, text, text_width, Anchor, INK};
+use crate::style::{css_name, line, num, points_attribute, setting_style, text, text_width, Anchor, INK};
 use crate::view::ScreenMap;
 use svg::node::element::{Circle, Group, Line, Polygon};
 
@@ -143,17 +143,6 @@ fn ground_symbol(x: f64, y: f64) -> Group {
         group = group.add(line(x0, base, x0 - 4.0, base + 4.0, INK, 1.0));
     }
     group
-}
-
-/// A plain line element.
-fn line(x1: f64, y1: f64, x2: f64, y2: f64, colour: &str, width: f64) -> Line {
-    Line::new()
-        .set("x1", num(x1))
-        .set("y1", num(y1))
-        .set("x2", num(x2))
-        .set("y2", num(y2))
-        .set("stroke", colour.to_owned())
-        .set("stroke-width", num(width))
 }
 
 /// Filled arrowhead with its tip at (x, y) pointing along unit vector (ux, uy).

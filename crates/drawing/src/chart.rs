@@ -2,9 +2,9 @@
 //! legend placed in the emptiest corner.
 
 use crate::plot::Plot;
-use crate::style::{css_name, num, points_attribute, series_style, text, text_width, Anchor, INK};
+use crate::style::{css_name, line, num, points_attribute, series_style, text, text_width, Anchor, INK};
 use crate::ticks::{format_tick, padded_ticks};
-use svg::node::element::{Circle, Group, Line, Polyline, Rectangle};
+use svg::node::element::{Circle, Group, Polyline, Rectangle};
 
 /// Width of one chart cell, px.
 pub(crate) const CHART_WIDTH_PX: f64 = 560.0;
@@ -30,17 +30,6 @@ const PAD_FRACTION: f64 = 0.04;
 const X_TICKS: usize = 8;
 /// Wanted number of y tick intervals.
 const Y_TICKS: usize = 6;
-
-/// A plain line.
-fn line(x1: f64, y1: f64, x2: f64, y2: f64, colour: &str, width: f64) -> Line {
-    Line::new()
-        .set("x1", num(x1))
-        .set("y1", num(y1))
-        .set("x2", num(x2))
-        .set("y2", num(y2))
-        .set("stroke", colour.to_owned())
-        .set("stroke-width", num(width))
-}
 
 /// Chart number `index` of `plot` with its cell's top-left corner at (`left`, `top`).
 ///

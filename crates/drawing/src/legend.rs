@@ -3,8 +3,8 @@
 
 use crate::layers::{part_class, ENVELOPE_FILL, ENVELOPE_STROKE, FAIRING_COLOUR, FAIRING_DASH};
 use crate::model::{PartStyle, StationDrawing};
-use crate::style::{num, setting_style, text, Anchor, INK};
-use svg::node::element::{Group, Line, Polygon, Rectangle};
+use crate::style::{line, num, setting_style, text, Anchor, INK};
+use svg::node::element::{Group, Polygon, Rectangle};
 
 /// Row height of the legend, px.
 pub(crate) const ROW_PX: f64 = 22.0;
@@ -14,17 +14,6 @@ const FONT_PX: f64 = 13.0;
 pub(crate) const NOTE_WIDTH_PX: f64 = 400.0;
 /// Height of the note block, px.
 pub(crate) const NOTE_HEIGHT_PX: f64 = 150.0;
-
-/// A plain stroked line.
-fn stroke(x1: f64, y1: f64, x2: f64, y2: f64, colour: &str, width: f64) -> Line {
-    Line::new()
-        .set("x1", num(x1))
-        .set("y1", num(y1))
-        .set("x2", num(x2))
-        .set("y2", num(y2))
-        .set("stroke", colour.to_owned())
-        .set("stroke-width", num(width))
-}
 
 /// A filled swatch box 36 x 12 px with its left end at x, centred on row y.
 fn swatch(x: f64, y: f64, fill: &str, outline: &str) -> Rectangle {
@@ -93,8 +82,7 @@ pub(crate) fn legend(drawing: &StationDrawing, x: f64, y: f64, column_px: f64) -
     for (index, setting) in drawing.settings.iter().enumerate() {
         let style = setting_style(index);
         let row_y = y + ROW_PX * (index as f64 + 1.0);
-        let mut sample =
-            stroke(x, row_y - 4.0, x + 44.0, row_y - 4.0, style.colour, 3.2).set("stroke-linecap", "round");
+        let mut sample = line(x, row_y - 4.0, x + 44.0, row_y - 4.0, style.colour, 3.2).set("stroke-linecap", "round");
         if let Some(dash) = style.dash {
             sample = sample.set("stroke-dasharray", dash);
         }
@@ -129,10 +117,10 @@ pub(crate) fn legend(drawing: &StationDrawing, x: f64, y: f64, column_px: f64) -
                     .set("stroke-dasharray", "4 3"),
             ),
             Swatch::Fairing => Group::new()
-                .add(stroke(px, row_y, px + 44.0, row_y, FAIRING_COLOUR, 2.2).set("stroke-dasharray", FAIRING_DASH)),
+                .add(line(px, row_y, px + 44.0, row_y, FAIRING_COLOUR, 2.2).set("stroke-dasharray", FAIRING_DASH)),
             Swatch::Slot => Group::new()
-                .add(stroke(px + 6.0, row_y, px + 38.0, row_y, "#4d4d4d", 12.0).set("stroke-linecap", "round"))
-                .add(stroke(px + 6.0, row_y, px + 38.0, row_y, "#f7f7f7", 9.0).set("stroke-linecap", "round")),
+                .add(line(px + 6.0, row_y, px + 38.0, row_y, "#4d4d4d", 12.0).set("stroke-linecap", "round"))
+                .add(line(px + 6.0, row_y, px + 38.0, row_y, "#f7f7f7", 9.0).set("stroke-linecap", "round")),
             Swatch::Part(kind) => {
                 let (fill, outline) = match kind {
                     PartStyle::WingSkin => ("#d4d4d4", INK),
@@ -164,7 +152,7 @@ pub(crate) fn legend(drawing: &StationDrawing, x: f64, y: f64, column_px: f64) -
                         .set("stroke", INK)
                         .set("stroke-width", "1.2"),
                 )
-                .add(stroke(px + 12.0, row_y + 5.0, px + 32.0, row_y + 5.0, INK, 1.4)),
+                .add(line(px + 12.0, row_y + 5.0, px + 32.0, row_y + 5.0, INK, 1.4)),
         };
         group = group
             .add(sample)
@@ -213,7 +201,7 @@ pub(crate) fn note_block(x: f64, y: f64, px_per_m: f64) -> Group {
     // Axis triad at the lower right.
     let (ox, oy) = (x + NOTE_WIDTH_PX - 70.0, y + NOTE_HEIGHT_PX - 22.0);
     group = group
-        .add(stroke(ox, oy, ox + 40.0, oy, INK, 1.5))
+        .add(line(ox, oy, ox + 40.0, oy, INK, 1.5))
         .add(
             Polygon::new()
                 .set(
@@ -230,7 +218,7 @@ pub(crate) fn note_block(x: f64, y: f64, px_per_m: f64) -> Group {
                 )
                 .set("fill", INK),
         )
-        .add(stroke(ox, oy, ox, oy - 40.0, INK, 1.5))
+        .add(line(ox, oy, ox, oy - 40.0, INK, 1.5))
         .add(
             Polygon::new()
                 .set(

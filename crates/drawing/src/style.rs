@@ -1,6 +1,6 @@
 //! Colours, line styles, fonts and small SVG element helpers shared by all drawings.
 
-use svg::node::element::{Text, Title};
+use svg::node::element::{Line, Text, Title};
 
 /// Font stack: DejaVu Sans first (installed on the build machines), then generic.
 pub(crate) const FONT_FAMILY: &str = "DejaVu Sans, Arial, Helvetica, sans-serif";
@@ -174,4 +174,15 @@ mod tests {
         assert_eq!(css_name("Take-off 15°"), "take-off-15-");
         assert_eq!(css_name(""), "unnamed");
     }
+}
+
+/// A plain stroked line from (x1, y1) to (x2, y2), px.
+pub(crate) fn line(x1: f64, y1: f64, x2: f64, y2: f64, colour: &str, width: f64) -> Line {
+    Line::new()
+        .set("x1", num(x1))
+        .set("y1", num(y1))
+        .set("x2", num(x2))
+        .set("y2", num(y2))
+        .set("stroke", colour.to_owned())
+        .set("stroke-width", num(width))
 }

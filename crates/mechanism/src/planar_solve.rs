@@ -142,6 +142,17 @@ impl PlanarModel {
             let gamma = -(-normal.dot(&d) * wa * wa + 2.0 * wa * perp(normal).dot(&d_rate) + normal.dot(&quad));
             (normal.dot(&d), gamma)
         };
+        // θ_a - θ_b (the ground's angle is 0): value and Jacobian; linear, so ν = γ = 0.
+        let relative_angle = |row: &mut Vec<f64>, a: usize, b: usize| {
+            let mut angle = |body: usize, sign: f64| {
+                if body == 0 {
+                    return 0.0;
+                }
+                row[3 * (body - 1) + 2] += sign;
+                q[3 * (body - 1) + 2]
+            };
+            angle(a, 1.0) - angle(b, -1.0)
+        };
         // ½(|P_a - P_b|² - ρ²): value, Jacobian, γ.
         let half_square = |row: &mut Vec<f64>, a: &BodyPoint, b: &BodyPoint, radius: f64| {
             let (ra, pa, wa) = frames.point(a);
@@ -176,20 +187,7 @@ impl PlanarModel {
                     angle_offset_rad,
                     ..
                 } => {
-                    let angle = |body: usize| {
-                        if body == 0 {
-                            0.0
-                        } else {
-                            q[3 * (body - 1) + 2]
-                        }
-                    };
-                    if a.body != 0 {
-                        row[3 * (a.body - 1) + 2] += 1.0;
-                    }
-                    if b.body != 0 {
-                        row[3 * (b.body - 1) + 2] -= 1.0;
-                    }
-                    let value = angle(a.body) - angle(b.body) - angle_offset_rad;
+                    let value = relative_angle(&mut row, a.body, b.body) - angle_offset_rad;
                     push(&mut k, value, &mut row, 0.0, 0.0);
                     let (value, gamma) = normal_distance(&mut row, a, *axis_local, b);
                     push(&mut k, value, &mut row, 0.0, gamma);
@@ -224,20 +222,7 @@ impl PlanarModel {
                 );
             }
             Driver::RelativeAngle { a, b, offset_rad } => {
-                let angle = |body: usize| {
-                    if body == 0 {
-                        0.0
-                    } else {
-                        q[3 * (body - 1) + 2]
-                    }
-                };
-                if a.body != 0 {
-                    row[3 * (a.body - 1) + 2] += 1.0;
-                }
-                if b.body != 0 {
-                    row[3 * (b.body - 1) + 2] -= 1.0;
-                }
-                let value = angle(a.body) - angle(b.body) - offset_rad - s;
+                let value = relative_angle(&mut row, a.body, b.body) - offset_rad - s;
                 push(&mut k, value, &mut row, s_rate, s_accel);
             }
         }

@@ -157,6 +157,17 @@ pub(crate) fn css_name(label: &str) -> String {
     }
 }
 
+/// A plain stroked line from (x1, y1) to (x2, y2), px.
+pub(crate) fn line(x1: f64, y1: f64, x2: f64, y2: f64, colour: &str, width: f64) -> Line {
+    Line::new()
+        .set("x1", num(x1))
+        .set("y1", num(y1))
+        .set("x2", num(x2))
+        .set("y2", num(y2))
+        .set("stroke", colour.to_owned())
+        .set("stroke-width", num(width))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -174,15 +185,4 @@ mod tests {
         assert_eq!(css_name("Take-off 15°"), "take-off-15-");
         assert_eq!(css_name(""), "unnamed");
     }
-}
-
-/// A plain stroked line from (x1, y1) to (x2, y2), px.
-pub(crate) fn line(x1: f64, y1: f64, x2: f64, y2: f64, colour: &str, width: f64) -> Line {
-    Line::new()
-        .set("x1", num(x1))
-        .set("y1", num(y1))
-        .set("x2", num(x2))
-        .set("y2", num(y2))
-        .set("stroke", colour.to_owned())
-        .set("stroke-width", num(width))
 }

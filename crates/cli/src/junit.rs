@@ -20,7 +20,7 @@ pub fn describe_failure(c: &PairClearance, required_clearance_m: f64) -> String 
             c.part_a,
             c.part_b,
         )
-    } else {
+    } else if c.min_clearance_m < required_clearance_m {
         format!(
             "{} and {}: clearance {:.2} mm (certified >= {:.2} mm) is below the required {:.2} mm at flap rotation {at:.2} deg; closest points (aircraft frame, m) ({ax:.4}, {ay:.4}, {az:.4}) and ({bx:.4}, {by:.4}, {bz:.4})",
             c.part_a,
@@ -28,6 +28,17 @@ pub fn describe_failure(c: &PairClearance, required_clearance_m: f64) -> String 
             c.min_clearance_m * 1e3,
             (c.min_clearance_m - c.residual_bound_m) * 1e3,
             required_clearance_m * 1e3,
+        )
+    } else {
+        // The samples clear the requirement but the bound between them does not.
+        format!(
+            "{} and {}: smallest sampled clearance {:.2} mm (at flap rotation {at:.2} deg) is not certified: between samples it may be as low as {:.2} mm, below the required {:.2} mm, after {} evaluations; lower interference.tolerance_m or raise interference.max_evaluations",
+            c.part_a,
+            c.part_b,
+            c.min_clearance_m * 1e3,
+            (c.min_clearance_m - c.residual_bound_m) * 1e3,
+            required_clearance_m * 1e3,
+            c.evaluations,
         )
     }
 }
@@ -82,4 +93,50 @@ pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> anyh
     let mut junit = Report::new("flapwright check");
     junit.add_test_suite(suite);
     Ok(junit.to_string()?)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pair(min_clearance_m: f64, residual_bound_m: f64, penetration_m: f64) -> PairClearance {
+        PairClearance {
+            part_a: "inner.screw".into(),
+            part_b: "torque-tube".into(),
+            min_clearance_m,
+            at_parameter: 0.1,
+            point_a_ac: [0.0; 3],
+            point_b_ac: [0.0; 3],
+            penetration_m,
+            penetration_resolution_m: 0.001,
+            residual_bound_m,
+            evaluations: 9,
+            trace: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn each_way_of_failing_says_what_failed() {
+        let overlap = describe_failure(&pair(0.0, 0.0, 0.0194), 0.003);
+        assert!(
+            overlap.contains("overlap") && overlap.contains("deepest 19.4 mm"),
+            "{overlap}"
+        );
+        let close = describe_failure(&pair(0.002, 0.0005, 0.0), 0.003);
+        assert!(
+            close.contains("clearance 2.00 mm") && close.contains("below the required 3.00 mm"),
+            "{close}"
+        );
+        // Sampled clearance above the requirement, certified bound below it.
+        let uncertain = describe_failure(&pair(0.015, 0.018, 0.0), 0.003);
+        assert!(
+            uncertain.contains("not certified") && uncertain.contains("-3.00 mm"),
+            "{uncertain}"
+        );
+        assert!(
+            uncertain.contains("interference.tolerance_m"),
+            "says what to change: {uncertain}"
+        );
+        assert!(!uncertain.contains("15.00 mm (certified"), "{uncertain}");
+    }
 }

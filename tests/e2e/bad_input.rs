@@ -226,3 +226,31 @@ fn fairing_resolution_below_two() {
         &["resolution.fairing_samples", "resolution.fairing_points_per_capsule"],
     );
 }
+
+#[test]
+fn stations_of_one_flap_with_different_rotation_ranges() {
+    // The flap is rigid: the outer station cannot stop at 25 deg while the inner turns
+    // the flap to 35 deg (its pins would leave their tracks).
+    let text = default_scene_text();
+    let outer = text.find("name = \"outer\"").expect("outer station");
+    let (head, tail) = text.split_at(outer);
+    let scene = format!(
+        "{head}{}",
+        tail.replacen("rotation_range_deg = 35.0", "rotation_range_deg = 25.0", 1)
+    );
+    assert_rejected(
+        &scene,
+        &[
+            "station[1].mechanism.rotation_range_deg",
+            "station[0].mechanism.rotation_range_deg = 35",
+        ],
+    );
+}
+
+#[test]
+fn landing_setting_beyond_the_mechanism_range() {
+    assert_rejected(
+        &default_with("landing_deg = 35.0", "landing_deg = 40.0"),
+        &["flap[0].settings.landing_deg = 40", "rotation_range_deg = 35"],
+    );
+}

@@ -99,6 +99,44 @@ impl Checker<'_> {
                 );
             }
         }
+        self.one_rotation_per_flap(scene);
+    }
+
+    /// A flap is one rigid body: its stations turn it through the same range, and that
+    /// range reaches the landing setting.
+    fn one_rotation_per_flap(&mut self, scene: &Scene) {
+        for (f, flap) in scene.flap.iter().enumerate() {
+            let mut first: Option<(usize, f64)> = None;
+            for (i, station) in scene.station.iter().enumerate() {
+                if station.flap.as_deref() != Some(flap.name.as_str()) {
+                    continue;
+                }
+                let MechanismScene::CircularArcTrack(m) = &station.mechanism;
+                let range = m.rotation_range_deg;
+                match first {
+                    None => first = Some((i, range)),
+                    Some((j, first_range)) if (range - first_range).abs() > 1e-9 => self.fail(
+                        format!("station[{i}].mechanism.rotation_range_deg"),
+                        format!(
+                            "= {range}: must equal station[{j}].mechanism.rotation_range_deg = {first_range}: both stations turn the one rigid flap \"{}\"",
+                            flap.name
+                        ),
+                    ),
+                    Some(_) => {}
+                }
+            }
+            if let Some((j, range)) = first {
+                let landing = flap.settings.landing_deg;
+                if landing > range + 1e-9 {
+                    self.fail(
+                        format!("flap[{f}].settings.landing_deg"),
+                        format!(
+                            "= {landing}: beyond the rotation range of its mechanisms, station[{j}].mechanism.rotation_range_deg = {range}"
+                        ),
+                    );
+                }
+            }
+        }
     }
 
     pub(super) fn loads(&mut self, scene: &Scene) {

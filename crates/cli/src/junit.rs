@@ -58,37 +58,42 @@ pub fn describe_joint_failure(c: &ContactResult, joint_play_m: f64) -> String {
     )
 }
 
+/// One JUnit test case: passed, or failed with the kind of failure and its text.
+fn test_case(name: String, class: String, failure: Option<(&str, String)>) -> TestCase {
+    let status = match failure {
+        None => TestCaseStatus::success(),
+        Some((kind, message)) => {
+            let mut status = TestCaseStatus::non_success(NonSuccessKind::Failure);
+            status.set_message(message);
+            status.set_type(kind);
+            status
+        }
+    };
+    let mut case = TestCase::new(name, status);
+    case.set_classname(class);
+    case
+}
+
 /// The JUnit document of an interference report.
 pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> anyhow::Result<String> {
     let mut suite = TestSuite::new(format!("flapwright interference: {scene_name}"));
     for pair in &report.pairs {
         let c = &pair.clearance;
-        let name = format!("{} vs {}", c.part_a, c.part_b);
-        let status = if pair.passes {
-            TestCaseStatus::success()
-        } else {
-            let mut status = TestCaseStatus::non_success(NonSuccessKind::Failure);
-            status.set_message(describe_failure(c, report.required_clearance_m));
-            status.set_type("interference");
-            status
-        };
-        let mut case = TestCase::new(name, status);
-        case.set_classname(pair.station.clone().unwrap_or_else(|| "flap".into()));
-        suite.add_test_case(case);
+        let failure = (!pair.passes).then(|| ("interference", describe_failure(c, report.required_clearance_m)));
+        suite.add_test_case(test_case(
+            format!("{} vs {}", c.part_a, c.part_b),
+            pair.station.clone().unwrap_or_else(|| "flap".into()),
+            failure,
+        ));
     }
     for contact in &report.declared_contacts {
-        let status = if contact.passes {
-            TestCaseStatus::success()
-        } else {
-            let mut status = TestCaseStatus::non_success(NonSuccessKind::Failure);
-            status.set_message(describe_joint_failure(contact, report.joint_play_m));
-            status.set_type("joint");
-            status
-        };
         let d = &contact.declared;
-        let mut case = TestCase::new(format!("{} joined to {}", d.part_a, d.part_b), status);
-        case.set_classname(d.station.clone());
-        suite.add_test_case(case);
+        let failure = (!contact.passes).then(|| ("joint", describe_joint_failure(contact, report.joint_play_m)));
+        suite.add_test_case(test_case(
+            format!("{} joined to {}", d.part_a, d.part_b),
+            d.station.clone(),
+            failure,
+        ));
     }
     let mut junit = Report::new("flapwright check");
     junit.add_test_suite(suite);

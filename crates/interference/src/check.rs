@@ -1,6 +1,7 @@
-//! The whole-wing interference check: every moving part against every fixed part, the
-//! screws against the flap; contacts by design (joints) checked to stay joined within the
-//! joint's play instead of being skipped.
+//! The whole-wing interference check: which pairs are checked (station parts against the
+//! structure, jacks against the flap, the flap against the structure, parts of different
+//! stations against each other), which are left out and why, and joints (contacts by
+//! design) checked to stay joined within the joint's play instead of being skipped.
 
 use rayon::prelude::*;
 use serde::Serialize;
@@ -105,15 +106,12 @@ pub struct InterferenceReport {
     pub passes: bool,
 }
 
-/// Sweeps every pair and every declared joint for flap rotation in `[0, end_rad]`, in
-/// parallel (rayon).
-pub fn check_assembly(
-    assembly: &Assembly,
-    end_rad: f64,
-    required: &Requirements,
-    settings: &SweepSettings,
-) -> Result<InterferenceReport> {
-    let mut jobs: Vec<(Option<String>, &Part, &Part)> = Vec::new();
+/// A pair to sweep: the station label and the two parts.
+type PairJob<'a> = (Option<String>, &'a Part, &'a Part);
+
+/// The pairs to sweep, and the pairs left out with the reason.
+fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
+    let mut jobs: Vec<PairJob<'_>> = Vec::new();
     for flap in &assembly.flaps {
         for fixed in &assembly.fixed {
             jobs.push((None, flap, fixed));
@@ -194,6 +192,18 @@ pub fn check_assembly(
             }
         }
     }
+    (jobs, unchecked)
+}
+
+/// Sweeps every pair and every declared joint for flap rotation in `[0, end_rad]`, in
+/// parallel (rayon).
+pub fn check_assembly(
+    assembly: &Assembly,
+    end_rad: f64,
+    required: &Requirements,
+    settings: &SweepSettings,
+) -> Result<InterferenceReport> {
+    let (jobs, unchecked) = pair_jobs(assembly);
     // Pairs are independent; rayon keeps their order in the result.
     let pairs = jobs
         .into_par_iter()

@@ -14,7 +14,7 @@
 //!   structure, and the parts of different stations against each other; joints must stay
 //!   within the joint's play ([`Requirements`]); pairs left out are listed with the reason.
 //! - [`fairing_depth`]: how far the mechanism reaches below the lower wing/flap contour;
-//!   [`planar_track_parts`] gives a station's solids in its plane for it.
+//!   [`TrackLayout::planar_parts`] gives a station's solids in its plane for it.
 //!
 //! # Units and frames
 //! Metres, aircraft frame (x aft, y outboard, z up). `t` is whatever the caller's motions
@@ -53,4 +53,4 @@ pub use fairing::{fairing_depth, FairingDepth, PlanarCapsule};
 pub use motion::{AboutAxis, ScrewAboutMount};
 pub use part::{Fixed, Motion, Part};
 pub use sweep::{sweep_contact, sweep_pair, JointSeparation, PairClearance, SweepSettings, JOINT_PENETRATION_GRID_M};
-pub use track::{planar_track_parts, screw_outer_radius_m, track_parts, DeclaredContact, LinkSizes, TrackParts};
+pub use track::{screw_outer_radius_m, track_parts, DeclaredContact, LinkSizes, TrackLayout, TrackParts};

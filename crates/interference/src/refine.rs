@@ -10,6 +10,7 @@
 //! minimising g = -separation (also L-Lipschitz).
 
 use std::cmp::Ordering;
+use std::collections::binary_heap::PeekMut;
 use std::collections::BinaryHeap;
 
 use crate::error::{Error, Result};
@@ -121,14 +122,15 @@ pub(crate) fn certified_minimum<O: Objective>(
         .ok_or(Error::BadRange { start, end })?;
     let mut evaluations = n;
     if lipschitz > 0.0 {
-        while let Some(worst) = heap.peek() {
+        loop {
+            let Some(worst) = heap.peek_mut() else { break };
             let best_value = objective.value(&best);
             let tolerance = settings.tolerance_m.max(settings.relative_tolerance * best_value.abs());
             let settled = worst.lower_bound >= best_value - tolerance || objective.bound_suffices(worst.lower_bound);
             if settled || evaluations >= settings.max_evaluations || objective.done(&best) {
                 break;
             }
-            let worst = heap.pop().expect("peeked");
+            let worst = PeekMut::pop(worst);
             let t = 0.5 * (worst.start.0 + worst.end.0);
             let middle = objective.evaluate(t)?;
             evaluations += 1;

@@ -110,10 +110,13 @@ pub fn screw_outer_radius_m(track: &CircularArcTrack) -> f64 {
     screw.mean_radius_m + 0.25 * screw.lead_m
 }
 
-/// The station's solids in its plane (station frame, stowed): one description that
-/// [`track_parts`] places in 3D and [`planar_track_parts`] turns in the plane, so the
-/// interference check and the fairing depth measure the same hardware.
-struct Layout {
+/// A station's solids in its plane (station frame, stowed): one description that
+/// [`track_parts`] places in 3D and [`TrackLayout::planar_parts`] turns in the plane, so
+/// the interference check and the fairing depth measure the same hardware. Built once per
+/// station; posing it is cheap.
+#[derive(Debug, Clone)]
+pub struct TrackLayout {
+    sizes: LinkSizes,
     /// Screw mount B0.
     b0: Point2<f64>,
     /// Nut pivot A, stowed.
@@ -128,14 +131,16 @@ struct Layout {
     tracks: [(&'static str, Vec<Point2<f64>>); 2],
 }
 
-impl Layout {
-    fn of(track: &CircularArcTrack, sizes: &LinkSizes) -> Self {
+impl TrackLayout {
+    /// The layout of `track` with solids of `sizes`.
+    pub fn new(track: &CircularArcTrack, sizes: &LinkSizes) -> Self {
         let synthesis = track.synthesis();
         let spec = track.spec();
         let a = synthesis.nut_pivot_stowed_m;
         let centre_line =
             |radius_m, start_rad| track_centre_line(radius_m, start_rad, spec.rotation_range_rad, sizes.track_radius_m);
         Self {
+            sizes: *sizes,
             b0: synthesis.screw_mount_m,
             a,
             d: spec.centre_of_mass_stowed_m,
@@ -162,6 +167,48 @@ impl Layout {
         }
     }
 
+    /// The station's solids in the station plane at flap rotation `t` (rad): screw and jack
+    /// body turning about B0 to follow the nut, nut and fittings turning with the flap about
+    /// A0, and the fixed tracks as chains of capsules; the same solids as [`track_parts`].
+    pub fn planar_parts(&self, t: f64) -> Vec<PlanarCapsule> {
+        let (layout, sizes) = (self, &self.sizes);
+        let turn = Rotation2::new(t);
+        let a = turn * layout.a;
+        let d = turn * layout.d;
+        let direction = layout.screw_direction(a);
+        let half_body = direction * (0.5 * sizes.jack_body_length_m);
+        let capsule = |part, from, to, radius_m| PlanarCapsule {
+            part,
+            from,
+            to,
+            radius_m,
+        };
+        let mut parts = vec![
+            capsule(
+                "screw",
+                layout.b0,
+                layout.b0 + direction * layout.screw_length_m,
+                layout.screw_radius_m,
+            ),
+            capsule(
+                "jack-body",
+                layout.b0 - half_body,
+                layout.b0 + half_body,
+                sizes.jack_body_radius_m,
+            ),
+            capsule("nut", a, a, sizes.nut_radius_m),
+        ];
+        for (name, pin) in layout.fittings {
+            parts.push(capsule(name, turn * pin, d, sizes.fitting_radius_m));
+        }
+        for (name, centre_line) in &layout.tracks {
+            for segment in centre_line.windows(2) {
+                parts.push(capsule(name, segment[0], segment[1], sizes.track_radius_m));
+            }
+        }
+        parts
+    }
+
     /// Unit vector from B0 along the screw when the nut pivot is at `a`.
     fn screw_direction(&self, a: Point2<f64>) -> Vector2<f64> {
         (a - self.b0).normalize()
@@ -176,7 +223,7 @@ pub fn track_parts(
     track: &CircularArcTrack,
     sizes: &LinkSizes,
 ) -> Result<TrackParts> {
-    let layout = Layout::of(track, sizes);
+    let layout = TrackLayout::new(track, sizes);
     let to_ac = |p: &Point2<f64>| aircraft_from_station.transform_point(&Point3::new(p.x, p.y, 0.0));
     let query = |source| Error::Query {
         part_a: format!("{station}.parts"),
@@ -266,48 +313,6 @@ pub fn track_parts(
         tracks,
         declared,
     })
-}
-
-/// The station's solids in the station plane at flap rotation `t` (rad): screw and jack
-/// body turning about B0 to follow the nut, nut and fittings turning with the flap about
-/// A0, and the fixed tracks as chains of capsules; the same solids as [`track_parts`].
-pub fn planar_track_parts(track: &CircularArcTrack, sizes: &LinkSizes, t: f64) -> Vec<PlanarCapsule> {
-    let layout = Layout::of(track, sizes);
-    let turn = Rotation2::new(t);
-    let a = turn * layout.a;
-    let d = turn * layout.d;
-    let direction = layout.screw_direction(a);
-    let half_body = direction * (0.5 * sizes.jack_body_length_m);
-    let capsule = |part, from, to, radius_m| PlanarCapsule {
-        part,
-        from,
-        to,
-        radius_m,
-    };
-    let mut parts = vec![
-        capsule(
-            "screw",
-            layout.b0,
-            layout.b0 + direction * layout.screw_length_m,
-            layout.screw_radius_m,
-        ),
-        capsule(
-            "jack-body",
-            layout.b0 - half_body,
-            layout.b0 + half_body,
-            sizes.jack_body_radius_m,
-        ),
-        capsule("nut", a, a, sizes.nut_radius_m),
-    ];
-    for (name, pin) in layout.fittings {
-        parts.push(capsule(name, turn * pin, d, sizes.fitting_radius_m));
-    }
-    for (name, centre_line) in &layout.tracks {
-        for segment in centre_line.windows(2) {
-            parts.push(capsule(name, segment[0], segment[1], sizes.track_radius_m));
-        }
-    }
-    parts
 }
 
 /// A ball centred at a point that turns with the flap: its local frame is placed at the

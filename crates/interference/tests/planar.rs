@@ -1,7 +1,7 @@
 //! The fairing's planar solids are the interference check's 3D parts cut by the station
 //! plane: same places, same radii, at every flap rotation.
 
-use flapwright_interference::{planar_track_parts, track_parts, LinkSizes, PlanarCapsule, TrackParts};
+use flapwright_interference::{track_parts, LinkSizes, PlanarCapsule, TrackLayout, TrackParts};
 use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec};
 use nalgebra::{Isometry3, Point2, Point3, Vector2};
 
@@ -30,10 +30,11 @@ fn across_the_middle(capsule: &PlanarCapsule, fraction: f64) -> [Point3<f64>; 2]
 #[test]
 fn planar_parts_are_the_3d_parts_in_the_station_plane() {
     let (track, parts, sizes) = thesis_parts();
+    let layout = TrackLayout::new(&track, &sizes);
     let end = track.spec().rotation_range_rad;
     let mut named = std::collections::BTreeSet::new();
     for t in [0.0, 0.3 * end, end] {
-        for capsule in planar_track_parts(&track, &sizes, t) {
+        for capsule in layout.planar_parts(t) {
             named.insert(capsule.part);
             let name = format!("st.{}", capsule.part);
             let part = parts

@@ -6,8 +6,8 @@ use anyhow::{Context, Result};
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::parts::{Part as MeshPart, PartKind, WingModel};
 use flapwright_interference::{
-    check_assembly, fairing_depth, planar_track_parts, track_parts, AboutAxis, Assembly, FairingDepth,
-    InterferenceReport, LinkSizes, Part, Requirements, SweepSettings,
+    check_assembly, fairing_depth, track_parts, AboutAxis, Assembly, FairingDepth, InterferenceReport, LinkSizes, Part,
+    Requirements, SweepSettings, TrackLayout,
 };
 use flapwright_planes::Section;
 use nalgebra::Point2;
@@ -120,9 +120,8 @@ pub fn fairing_depths(
             let samples = resolution.fairing_samples;
             let parameters: Vec<f64> = (0..samples).map(|i| end * i as f64 / (samples - 1) as f64).collect();
             let points = resolution.fairing_points_per_capsule;
-            fairing_depth(&contour, flap_chord_m, &parameters, points, |t| {
-                planar_track_parts(&mechanism.track, &sizes, t)
-            })
+            let layout = TrackLayout::new(&mechanism.track, &sizes);
+            fairing_depth(&contour, flap_chord_m, &parameters, points, |t| layout.planar_parts(t))
         })
         .collect()
 }

@@ -128,4 +128,46 @@ mod tests {
         });
         assert_eq!(outside.depth_m, 0.0);
     }
+
+    #[test]
+    fn a_maximum_between_samples_is_missed_by_at_most_rho_dt2_over_8() {
+        // A rod of length 0.45 m and radius 0.01 m pivots at the origin under a plate at
+        // y = 0, from -60 to -120 deg; deepest at -90 deg: 0.46 m. With the samples
+        // straddling -90 deg, the sampled depth falls short by 0.45 (1 - cos(dt / 2)),
+        // within the README's rho dt^2 / 8.
+        let plate = vec![vec![
+            Point2::new(-1.0, 0.0),
+            Point2::new(1.0, 0.0),
+            Point2::new(1.0, 0.1),
+            Point2::new(-1.0, 0.1),
+        ]];
+        let (length, radius) = (0.45, 0.01);
+        let rod = |t: f64| {
+            let angle = (-60f64).to_radians() - t;
+            vec![PlanarCapsule {
+                part: "rod",
+                from: Point2::origin(),
+                to: Point2::new(length * angle.cos(), length * angle.sin()),
+                radius_m: radius,
+            }]
+        };
+        let range = 60f64.to_radians();
+        for samples in [3, 4, 21, 22] {
+            let parameters: Vec<f64> = (0..samples).map(|i| range * i as f64 / (samples - 1) as f64).collect();
+            let depth = fairing_depth(&plate, 1.0, &parameters, 2, rod).depth_m;
+            let step = range / (samples - 1) as f64;
+            // The sample nearest -90 deg is at most half a step away.
+            let nearest = parameters
+                .iter()
+                .map(|t| (t - 0.5 * range).abs())
+                .fold(f64::INFINITY, f64::min);
+            let expected = length * nearest.cos() + radius;
+            assert!((depth - expected).abs() < 1e-12, "{samples}: {depth} vs {expected}");
+            let shortfall = length + radius - depth;
+            assert!(
+                shortfall <= length * step * step / 8.0 + 1e-12,
+                "{samples}: {shortfall}"
+            );
+        }
+    }
 }

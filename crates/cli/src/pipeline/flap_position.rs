@@ -4,7 +4,6 @@
 
 use anyhow::{Context, Result};
 use flapwright_planes::{FlapBehindWing, GapOverlap};
-use nalgebra::Point2;
 use serde::Serialize;
 
 use crate::pipeline::stations::PlacedStation;
@@ -36,15 +35,10 @@ pub struct FlapPositionReport {
 /// The wing and stowed flap sections of `placed`, ready to measure; `None` when the plane
 /// misses the wing or the flap.
 pub fn flap_behind_wing(placed: &PlacedStation, flap_name: &str) -> Result<Option<FlapBehindWing>> {
-    let polygons = |name: &str| -> Vec<Vec<Point2<f64>>> {
-        placed
-            .sections
-            .iter()
-            .filter(|s| s.part_name == name)
-            .flat_map(|s| s.polygons.iter().cloned())
-            .collect()
-    };
-    let (wing, flap) = (polygons("wing"), polygons(flap_name));
+    let (wing, flap) = (
+        placed.polygons_of(|name| name == "wing"),
+        placed.polygons_of(|name| name == flap_name),
+    );
     if wing.is_empty() || flap.is_empty() {
         return Ok(None);
     }

@@ -9,8 +9,6 @@ use flapwright_interference::{
     check_assembly, fairing_depth, track_parts, AboutAxis, Assembly, FairingDepth, InterferenceReport, LinkSizes, Part,
     Requirements, SweepSettings, TrackLayout,
 };
-use flapwright_planes::Section;
-use nalgebra::Point2;
 
 use crate::pipeline::mechanisms::StationMechanism;
 use crate::pipeline::stations::PlacedStation;
@@ -100,18 +98,12 @@ pub fn fairing_depths(
         .iter()
         .zip(placed)
         .map(|(mechanism, station)| {
-            let is_flap = |s: &&Section| flap_names.contains(&s.part_name);
-            let contour: Vec<Vec<Point2<f64>>> = station
-                .sections
-                .iter()
-                .filter(|s| s.part_name == "wing" || is_flap(s))
-                .flat_map(|s| s.polygons.iter().cloned())
-                .collect();
+            let is_flap = |name: &str| flap_names.iter().any(|f| f == name);
+            let contour = station.polygons_of(|name| name == "wing" || is_flap(name));
             let flap_chord_m = station
-                .sections
+                .polygons_of(is_flap)
                 .iter()
-                .filter(is_flap)
-                .flat_map(|s| s.polygons.iter().flatten())
+                .flatten()
                 .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
                     (lo.min(p.x), hi.max(p.x))
                 });

@@ -8,7 +8,7 @@ use flapwright_planes::{
     compute_station, cut_mesh, thesis_stations, FlapDeployment, FlapSetting, HingeAxis, Plane, Section, Station,
     StationFrame,
 };
-use nalgebra::{Point3, Vector3};
+use nalgebra::{Point2, Point3, Vector3};
 
 use crate::pipeline::mechanisms::StationMechanism;
 use crate::scene::Scene;
@@ -23,6 +23,17 @@ pub struct PlacedStation {
     pub station: Station,
     /// Section cuts of every part in the station plane.
     pub sections: Vec<Section>,
+}
+
+impl PlacedStation {
+    /// The section polygons (station frame) of the parts `wanted` accepts by name.
+    pub fn polygons_of(&self, wanted: impl Fn(&str) -> bool) -> Vec<Vec<Point2<f64>>> {
+        self.sections
+            .iter()
+            .filter(|s| wanted(&s.part_name))
+            .flat_map(|s| s.polygons.iter().cloned())
+            .collect()
+    }
 }
 
 /// Places every station of the scene on its flap and cuts every part by its plane.

@@ -28,8 +28,9 @@ mod penetration;
 pub use penetration::SAMPLE_BUDGET as PENETRATION_SAMPLE_BUDGET;
 
 /// Angular subdivisions of a ball, capsule or cylinder when its surface is sampled for
-/// penetration depth: the chords lie within r (1 - cos(pi/32)) = 0.5 % of the radius of
-/// the true surface.
+/// penetration depth: the edges lie within r (1 - cos(pi/32)) = 0.5 % of the radius of
+/// the true surface, the faces within 0.97 % (samples are projected back onto the true
+/// surface, which stretches the grid by under 1 %).
 const PRIMITIVE_SUBDIVISIONS: u32 = 32;
 
 /// A shape for clearance queries, in its own local frame (placed by a pose at query time).
@@ -236,11 +237,12 @@ pub struct Clearance {
     /// Separation of the solids (m); 0 when they touch, cross, or one holds the other.
     pub distance_m: f64,
     /// How deep they overlap (m): the deepest point of either surface inside the other
-    /// solid, to its surface (`penetration` module); 0 when clear, or when the overlap is
-    /// shallower than the sampling resolution.
+    /// solid, to its surface (`penetration` module); 0 when clear, and may be 0 or short
+    /// by up to the resolution when no sample lands deep inside.
     pub penetration_m: f64,
     /// Grid spacing the penetration was sampled at (m): the deepest surface point is at
-    /// most this much deeper than reported. 0 when the solids are clear.
+    /// most this much deeper than reported (1 % more for balls, capsules and cylinders,
+    /// whose grid is stretched onto the true surface). 0 when the solids are clear.
     pub penetration_resolution_m: f64,
     /// When clear, the closest point on a; when overlapping, a's end of the penetration
     /// (its deepest point inside b, or the point of a's surface nearest to b's deepest

@@ -156,6 +156,9 @@ mod tests {
         assert!((deepest.spacing - longest).abs() < 1e-15, "{deepest:?}");
         // The deepest surface point (the centre, depth 1) is at most one spacing deeper
         // than the deepest sample.
-        assert!(deepest.depth <= 1.0 && deepest.depth >= 1.0 - deepest.spacing, "{deepest:?}");
+        assert!(
+            deepest.depth <= 1.0 && deepest.depth >= 1.0 - deepest.spacing,
+            "{deepest:?}"
+        );
     }
 }

@@ -111,7 +111,10 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         Some(Command::Export { scene, out, .. }) => (scene.clone(), out.clone(), Mode::Design, None),
     };
     let (text, scene_dir) = read_scene_text(scene_path.as_deref())?;
-    let mut scene = Scene::from_toml(&text, scene_dir.as_deref()).map_err(|e| Failure {
+    let file_label = scene_path
+        .as_deref()
+        .map_or("(embedded default)".into(), |p| p.display().to_string());
+    let mut scene = Scene::from_file_text(&text, &file_label, scene_dir.as_deref()).map_err(|e| Failure {
         code: EXIT_BAD_INPUT,
         error: anyhow::Error::new(e).context(format!(
             "invalid scene {}",

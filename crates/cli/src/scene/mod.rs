@@ -7,6 +7,8 @@
 //! (`wing.sections[2].chord_m = -1: must be > 0`).
 
 mod airfoil_ref;
+mod key_path;
+mod parse;
 mod settings;
 mod station;
 mod validate;
@@ -15,7 +17,8 @@ mod wing;
 pub use airfoil_ref::{AirfoilRef, AirfoilSource};
 pub use settings::{InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene};
 pub use station::{CircularArcTrackScene, LoadCaseScene, LoadsScene, MechanismScene, StationScene};
-pub use validate::{Problem, SceneError};
+pub use key_path::Location;
+pub use validate::{LocatedProblem, Problem, SceneError, MAX_SCENE_BYTES};
 pub use wing::{
     FlapScene, HingeScene, PanelScene, SettingsScene, SparScene, StructureScene, SweepReferenceScene, TorqueTubeScene,
     WingScene, WingSectionScene,

@@ -16,12 +16,56 @@ pub struct StationScene {
     pub mechanism: MechanismScene,
 }
 
-/// `[station.mechanism]`.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields, tag = "kind", rename_all = "kebab-case")]
+/// `[station.mechanism]`: `kind` picks the variant, the other keys are its dimensions.
+#[derive(Debug, Clone)]
 pub enum MechanismScene {
     /// Circular-arc track with screw jack (thesis `000_...`, Chapters 3-5).
     CircularArcTrack(CircularArcTrackScene),
+}
+
+impl MechanismScene {
+    /// The `kind` values, as written in the scene.
+    pub const KINDS: &'static [&'static str] = &["circular-arc-track"];
+
+    /// Moving solids the interference check builds for this mechanism (an upper bound, for
+    /// the pre-flight work estimate): screw, jack body, two tracks and the flap fittings.
+    pub fn moving_parts(&self) -> usize {
+        match self {
+            Self::CircularArcTrack(_) => 7,
+        }
+    }
+}
+
+// By hand rather than `#[serde(tag = "kind")]`: serde buffers an internally tagged enum,
+// and an error inside it then names the table, never the key (`[station.mechanism]`
+// instead of `station[0].mechanism.flap_mass_kg`). Here the variant is deserialised from
+// the table with its own key path, passed up in the message (see `parse::nested_error`).
+impl<'de> Deserialize<'de> for MechanismScene {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        use serde::de::Error;
+        let mut table = toml::Table::deserialize(deserializer)?;
+        let kind = match table.remove("kind") {
+            Some(toml::Value::String(kind)) => kind,
+            Some(other) => {
+                return Err(D::Error::custom(super::parse::nested_error_at(
+                    "kind",
+                    &format!("= {other}: must be a string, one of {}", Self::KINDS.join(", ")),
+                )))
+            }
+            None => return Err(D::Error::missing_field("kind")),
+        };
+        let variant = |table: toml::Table| {
+            serde_path_to_error::deserialize(toml::Value::Table(table))
+                .map_err(|e| D::Error::custom(super::parse::nested_error(e.path(), e.inner().message())))
+        };
+        match kind.as_str() {
+            "circular-arc-track" => variant(table).map(Self::CircularArcTrack),
+            other => Err(D::Error::custom(super::parse::nested_error_at(
+                "kind",
+                &format!("= \"{other}\": unknown mechanism kind; one of {}", Self::KINDS.join(", ")),
+            ))),
+        }
+    }
 }
 
 /// Dimensions of a circular-arc-track mechanism in the station frame (thesis Table 2 names

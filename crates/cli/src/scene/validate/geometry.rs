@@ -1,5 +1,9 @@
 //! Checks of the aircraft: airfoils, wing, flaps, spars and torque tube.
 
+use super::limits::{
+    MAX_CHORD_M, MAX_FLAPS, MAX_SECTIONS, MAX_SPARS, MAX_SPAN_M, MAX_STATIONS,
+    MAX_TORQUE_TUBE_POINTS, MIN_CHORD_M, MIN_LENGTH_M,
+};
 use super::Checker;
 use crate::scene::{AirfoilRef, FlapScene, Scene, WingScene};
 
@@ -27,7 +31,7 @@ impl Checker<'_> {
     }
 
     pub(super) fn wing(&mut self, wing: &WingScene) {
-        self.finite_point("wing.root_leading_edge_m", &wing.root_leading_edge_m);
+        self.point_within("wing.root_leading_edge_m", &wing.root_leading_edge_m);
         self.in_range(
             "wing.twist_axis_chord_fraction",
             wing.twist_axis_chord_fraction,
@@ -35,6 +39,7 @@ impl Checker<'_> {
             1.0,
             false,
         );
+        self.count_in("wing.sections", wing.sections.len(), 2, MAX_SECTIONS);
         if wing.sections.len() < 2 {
             self.fail(
                 "wing.sections",
@@ -47,9 +52,9 @@ impl Checker<'_> {
             if self.in_range(
                 &format!("{path}.y_m"),
                 section.y_m,
-                f64::NEG_INFINITY,
-                f64::INFINITY,
-                true,
+                -MAX_SPAN_M,
+                MAX_SPAN_M,
+                false,
             ) {
                 if let Some(prev) = previous_y {
                     if section.y_m <= prev {
@@ -64,13 +69,23 @@ impl Checker<'_> {
                 }
                 previous_y = Some(section.y_m);
             }
-            self.positive(&format!("{path}.chord_m"), section.chord_m);
+            self.in_range(&format!("{path}.chord_m"), section.chord_m, MIN_CHORD_M, MAX_CHORD_M, false);
             self.in_range(&format!("{path}.twist_deg"), section.twist_deg, -45.0, 45.0, false);
             self.airfoil(&format!("{path}.airfoil"), &section.airfoil);
         }
         if let (Some(first), Some(last)) = (wing.sections.first(), wing.sections.last()) {
             if wing.sections.len() >= 2 && first.y_m.is_finite() && last.y_m == first.y_m {
                 self.fail("wing.sections", "zero span: first and last sections have the same y_m");
+            }
+            if last.y_m - first.y_m > MAX_SPAN_M {
+                self.fail(
+                    format!("wing.sections[{}].y_m", wing.sections.len() - 1),
+                    format!(
+                        "= {}: the wing spans {} m from root to tip; at most {MAX_SPAN_M} m",
+                        last.y_m,
+                        last.y_m - first.y_m
+                    ),
+                );
             }
         }
         let expected_panels = wing.sections.len().saturating_sub(1);
@@ -131,13 +146,17 @@ impl Checker<'_> {
         let hinge_path = format!("{path}.hinge");
         match (hinge.inboard_point_m, hinge.outboard_point_m, hinge.chord_fraction) {
             (Some(a), Some(b), None) => {
-                let ok_a = self.finite_point(&format!("{hinge_path}.inboard_point_m"), &a);
-                let ok_b = self.finite_point(&format!("{hinge_path}.outboard_point_m"), &b);
+                let ok_a = self.point_within(&format!("{hinge_path}.inboard_point_m"), &a);
+                let ok_b = self.point_within(&format!("{hinge_path}.outboard_point_m"), &b);
                 let length = ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt();
-                if ok_a && ok_b && length < 1e-6 {
+                if ok_a && ok_b && length < MIN_LENGTH_M {
                     self.fail(
                         hinge_path.clone(),
-                        format!("axis has length {length} m: the two points must be distinct (>= 1e-6 m)"),
+                        format!(
+                            "axis has length {:.3} mm: the two points must be at least {} mm apart",
+                            length * 1e3,
+                            MIN_LENGTH_M * 1e3
+                        ),
                     );
                 } else if ok_a && ok_b && (b[1] - a[1]) <= 0.0 {
                     self.fail(
@@ -197,10 +216,31 @@ impl Checker<'_> {
 
     pub(super) fn structure(&mut self, scene: &Scene, wing: &WingScene) {
         let (root, tip) = span_of(wing);
+        self.count_in("structure.spars", scene.structure.spars.len(), 0, MAX_SPARS);
+        self.count_in("flap", scene.flap.len(), 0, MAX_FLAPS);
+        self.count_in("station", scene.station.len(), 0, MAX_STATIONS);
+        for (i, flap) in scene.flap.iter().enumerate() {
+            if !scene.station.iter().any(|s| s.flap.as_deref() == Some(flap.name.as_str())) {
+                self.fail(
+                    format!("flap[{i}]"),
+                    format!(
+                        "flap \"{}\" has no [[station]]: a flap needs at least one support station (station.flap = \"{}\")",
+                        flap.name, flap.name
+                    ),
+                );
+            }
+        }
+        let largest_chord = wing.sections.iter().map(|s| s.chord_m).fold(0.0, f64::max);
         for (i, spar) in scene.structure.spars.iter().enumerate() {
             let path = format!("structure.spars[{i}]");
             let fraction_ok = self.in_range(&format!("{path}.chord_fraction"), spar.chord_fraction, 0.0, 1.0, true);
-            self.positive(&format!("{path}.thickness_m"), spar.thickness_m);
+            self.in_range(
+                &format!("{path}.thickness_m"),
+                spar.thickness_m,
+                MIN_LENGTH_M,
+                (0.1 * largest_chord).max(MIN_LENGTH_M),
+                false,
+            );
             let start_ok = self.in_range(&format!("{path}.y_start_m"), spar.y_start_m, root, tip, false);
             let end_ok = self.in_range(&format!("{path}.y_end_m"), spar.y_end_m, root, tip, false);
             if start_ok && end_ok && spar.y_end_m <= spar.y_start_m {
@@ -229,7 +269,14 @@ impl Checker<'_> {
         self.unique_names("structure.spars", scene.structure.spars.iter().map(|s| s.name.as_str()));
         if let Some(tube) = &scene.structure.torque_tube {
             let path = "structure.torque_tube";
-            self.positive(&format!("{path}.radius_m"), tube.radius_m);
+            self.in_range(
+                &format!("{path}.radius_m"),
+                tube.radius_m,
+                MIN_LENGTH_M,
+                (0.25 * largest_chord).max(MIN_LENGTH_M),
+                false,
+            );
+            self.count_in(&format!("{path}.path_m"), tube.path_m.len(), 0, MAX_TORQUE_TUBE_POINTS);
             if tube.path_m.len() < 2 {
                 self.fail(
                     format!("{path}.path_m"),
@@ -237,17 +284,20 @@ impl Checker<'_> {
                 );
             }
             for (i, point) in tube.path_m.iter().enumerate() {
-                self.finite_point(&format!("{path}.path_m[{i}]"), point);
+                self.point_within(&format!("{path}.path_m[{i}]"), point);
             }
             for (i, pair) in tube.path_m.windows(2).enumerate() {
                 let length = ((pair[1][0] - pair[0][0]).powi(2)
                     + (pair[1][1] - pair[0][1]).powi(2)
                     + (pair[1][2] - pair[0][2]).powi(2))
                 .sqrt();
-                if length < 1e-6 {
+                if length < MIN_LENGTH_M {
                     self.fail(
                         format!("{path}.path_m[{}]", i + 1),
-                        "repeats the previous point: segments must be longer than 1e-6 m",
+                        format!(
+                            "repeats the previous point: segments must be at least {} mm long",
+                            MIN_LENGTH_M * 1e3
+                        ),
                     );
                 }
             }

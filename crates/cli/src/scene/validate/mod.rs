@@ -3,10 +3,13 @@
 use std::fmt;
 use std::path::Path;
 
+mod budget;
 mod geometry;
+pub mod limits;
 mod mechanism;
 mod settings;
 
+use super::key_path::{KeyPathBuf, Location, SpannedScene};
 use super::Scene;
 
 /// One problem in a scene file: where (`wing.sections[2].chord_m`) and what.
@@ -18,10 +21,40 @@ pub struct Problem {
     pub message: String,
 }
 
+impl Problem {
+    /// A problem at `path`.
+    pub fn new(path: impl Into<String>, message: impl Into<String>) -> Self {
+        Self {
+            path: path.into(),
+            message: message.into(),
+        }
+    }
+}
+
+/// A problem with the file and the line and column of its key (or of the table where a
+/// missing key belongs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LocatedProblem {
+    /// The scene file as the user named it.
+    pub file: String,
+    /// Where in that file.
+    pub location: Location,
+    /// The problem.
+    pub problem: Problem,
+}
+
+impl fmt::Display for LocatedProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}: {}", self.file, self.location, self.problem)
+    }
+}
+
 impl fmt::Display for Problem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         // `path = value: rule` reads like the file; other messages follow a colon.
-        if self.message.starts_with('=') {
+        if self.path.is_empty() {
+            write!(f, "{}", self.message)
+        } else if self.message.starts_with('=') {
             write!(f, "{} {}", self.path, self.message)
         } else {
             write!(f, "{}: {}", self.path, self.message)
@@ -32,20 +65,59 @@ impl fmt::Display for Problem {
 /// Why a scene could not be read.
 #[derive(Debug)]
 pub enum SceneError {
-    /// The TOML does not parse into the scene structure (syntax, wrong type, unknown key).
+    /// The scene file could not be read at all (too large, not UTF-8).
     Parse(String),
-    /// The scene parsed but has invalid values.
+    /// The scene has problems, known by key path only (e.g. found by a stage after
+    /// validation); [`SceneError::locate`] adds file, line and column.
     Invalid(Vec<Problem>),
+    /// The scene has problems, each with file, line and column.
+    Located(Vec<LocatedProblem>),
+}
+
+impl SceneError {
+    /// Adds file, line and column to problems known by path only.
+    pub fn locate(self, text: &str, file: &str) -> Self {
+        match self {
+            Self::Invalid(problems) => Self::Located(locate_all(text, file, problems)),
+            other => other,
+        }
+    }
+
+    /// Every problem as a line of text (`file:line:col: path = value: rule`).
+    pub fn lines(&self) -> Vec<String> {
+        match self {
+            Self::Parse(message) => vec![message.trim_end().to_string()],
+            Self::Invalid(problems) => problems.iter().map(ToString::to_string).collect(),
+            Self::Located(problems) => problems.iter().map(ToString::to_string).collect(),
+        }
+    }
+}
+
+/// Locates each problem's key path in `text`.
+fn locate_all(text: &str, file: &str, problems: Vec<Problem>) -> Vec<LocatedProblem> {
+    let spans = SpannedScene::new(text);
+    let mut located: Vec<LocatedProblem> = problems
+        .into_iter()
+        .map(|problem| LocatedProblem {
+            file: file.to_string(),
+            location: spans.locate(&KeyPathBuf::parse(&problem.path)),
+            problem,
+        })
+        .collect();
+    // In the order of the file, as an editor lists them.
+    located.sort_by_key(|p| (p.location.line, p.location.column));
+    located
 }
 
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::Parse(message) => write!(f, "{}", message.trim_end()),
-            Self::Invalid(problems) => {
-                write!(f, "{} problem(s) in the scene:", problems.len())?;
-                for problem in problems {
-                    write!(f, "\n  - {problem}")?;
+            Self::Invalid(_) | Self::Located(_) => {
+                let lines = self.lines();
+                write!(f, "{} problem(s) in the scene:", lines.len())?;
+                for line in lines {
+                    write!(f, "\n  - {line}")?;
                 }
                 Ok(())
             }
@@ -59,12 +131,42 @@ impl Scene {
     /// Parses and validates a scene. `scene_dir` is where relative airfoil files are
     /// looked up (bundled airfoils are found by name otherwise).
     pub fn from_toml(text: &str, scene_dir: Option<&Path>) -> Result<Self, SceneError> {
-        let scene: Scene = toml::from_str(text).map_err(|e| SceneError::Parse(e.to_string()))?;
+        Self::from_file_text(text, "scene.toml", scene_dir)
+    }
+
+    /// As [`Scene::from_toml`], naming the file `file` in the problems
+    /// (`file:line:col: path = value: rule`).
+    pub fn from_file_text(text: &str, file: &str, scene_dir: Option<&Path>) -> Result<Self, SceneError> {
+        let located = |problems| SceneError::Invalid(problems).locate(text, file);
+        if text.len() > MAX_SCENE_BYTES {
+            return Err(SceneError::Parse(format!(
+                "{file}: {} bytes: a scene file may hold at most {MAX_SCENE_BYTES} bytes",
+                text.len()
+            )));
+        }
+        let (_, syntax) = toml::de::DeTable::parse_recoverable(text);
+        if !syntax.is_empty() {
+            // The first only: after a syntax error the parser's later complaints are
+            // mostly echoes of it (an unclosed `[wing` header makes its keys duplicates).
+            return Err(SceneError::Located(
+                syntax
+                    .iter()
+                    .take(1)
+                    .map(|e| LocatedProblem {
+                        file: file.to_string(),
+                        location: Location::of_offset(text, e.span().map_or(0, |s| s.start)),
+                        problem: Problem::new("", format!("TOML syntax: {}", e.message().trim_end())),
+                    })
+                    .collect(),
+            ));
+        }
+        let table: toml::Table = toml::from_str(text).map_err(|e| SceneError::Parse(format!("{file}: {e}")))?;
+        let scene: Scene = super::parse::typed(&table).map_err(located)?;
         let problems = scene.validate(scene_dir);
         if problems.is_empty() {
             Ok(scene)
         } else {
-            Err(SceneError::Invalid(problems))
+            Err(located(problems))
         }
     }
 
@@ -92,9 +194,18 @@ impl Scene {
         check.sizing(self);
         check.interference(self);
         check.resolution(self);
+        if check.problems.is_empty() {
+            // The work estimate trusts the values: only for an otherwise valid scene.
+            check.budget(self);
+        }
         check.problems
     }
 }
+
+/// Largest scene file read, bytes: a hand-written whole-wing scene is a few tens of
+/// kilobytes; anything near this is generated by mistake, and parsing it would cost
+/// seconds and memory before any check.
+pub const MAX_SCENE_BYTES: usize = 1 << 20;
 
 struct Checker<'a> {
     problems: Vec<Problem>,
@@ -146,6 +257,19 @@ impl Checker<'_> {
         let ok = point.iter().all(|v| v.is_finite());
         if !ok {
             self.fail(path, format!("= {point:?}: every coordinate must be finite"));
+        }
+        ok
+    }
+
+    /// Finite and within [`limits::MAX_ABS_COORDINATE_M`] of the origin in every coordinate.
+    fn point_within(&mut self, path: &str, point: &[f64]) -> bool {
+        if !self.finite_point(path, point) {
+            return false;
+        }
+        let limit = limits::MAX_ABS_COORDINATE_M;
+        let ok = point.iter().all(|v| v.abs() <= limit);
+        if !ok {
+            self.fail(path, format!("= {point:?}: every coordinate must be in [-{limit}, {limit}] m"));
         }
         ok
     }

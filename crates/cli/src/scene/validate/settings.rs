@@ -1,5 +1,9 @@
 //! Checks of the settings tables: sizing and materials, interference, resolution.
 
+use super::limits::{
+    ALLOWABLE_PA, AIRFOIL_POINTS_PER_SIDE, DENSITY_KG_M3, DEPLOYMENT_SAMPLES, FAIRING_POINTS_PER_CAPSULE, FAIRING_SAMPLES,
+    GEARBOX_EFFICIENCY, INITIAL_SAMPLES, MAX_EVALUATIONS, MAX_MATERIALS, YOUNGS_MODULUS_PA,
+};
 use super::Checker;
 use crate::scene::Scene;
 
@@ -8,6 +12,7 @@ pub const MATERIAL_PRESETS: &[&str] = &["steel-4340", "aluminium-7075-t6", "tita
 
 impl Checker<'_> {
     pub(super) fn sizing(&mut self, scene: &Scene) {
+        self.count_in("materials", scene.materials.len(), 0, MAX_MATERIALS);
         self.unique_names("materials", scene.materials.iter().map(|m| m.name.as_str()));
         for (i, material) in scene.materials.iter().enumerate() {
             let path = format!("materials[{i}]");
@@ -17,13 +22,13 @@ impl Checker<'_> {
                     format!("= \"{}\": is a preset name; choose another", material.name),
                 );
             }
-            for (key, value) in [
-                ("density_kg_m3", material.density_kg_m3),
-                ("allowable_tensile_pa", material.allowable_tensile_pa),
-                ("allowable_shear_pa", material.allowable_shear_pa),
-                ("youngs_modulus_pa", material.youngs_modulus_pa),
+            for (key, value, (min, max)) in [
+                ("density_kg_m3", material.density_kg_m3, DENSITY_KG_M3),
+                ("allowable_tensile_pa", material.allowable_tensile_pa, ALLOWABLE_PA),
+                ("allowable_shear_pa", material.allowable_shear_pa, ALLOWABLE_PA),
+                ("youngs_modulus_pa", material.youngs_modulus_pa, YOUNGS_MODULUS_PA),
             ] {
-                self.positive(&format!("{path}.{key}"), value);
+                self.in_range(&format!("{path}.{key}"), value, min, max, false);
             }
         }
         let sizing = &scene.sizing;
@@ -42,10 +47,8 @@ impl Checker<'_> {
                 );
             }
         }
-        self.in_range("sizing.gearbox_efficiency", sizing.gearbox_efficiency, 0.0, 1.0, false);
-        if sizing.gearbox_efficiency == 0.0 {
-            self.fail("sizing.gearbox_efficiency", "= 0: must be > 0");
-        }
+        let (min, max) = GEARBOX_EFFICIENCY;
+        self.in_range("sizing.gearbox_efficiency", sizing.gearbox_efficiency, min, max, false);
         self.in_range(
             "sizing.torque_tube_inner_to_outer_ratio",
             sizing.torque_tube_inner_to_outer_ratio,
@@ -77,7 +80,7 @@ impl Checker<'_> {
             1.0,
             false,
         );
-        self.positive("interference.tolerance_m", interference.tolerance_m);
+        self.in_range("interference.tolerance_m", interference.tolerance_m, 1e-7, 1.0, false);
         self.in_range(
             "interference.relative_tolerance",
             interference.relative_tolerance,
@@ -86,30 +89,25 @@ impl Checker<'_> {
             false,
         );
         self.in_range("interference.joint_play_m", interference.joint_play_m, 0.0, 0.1, false);
-        self.count_in("interference.initial_samples", interference.initial_samples, 2, 100_000);
+        let (min, max) = INITIAL_SAMPLES;
+        self.count_in("interference.initial_samples", interference.initial_samples, min, max);
         self.count_in(
             "interference.max_evaluations",
             interference.max_evaluations,
             interference.initial_samples.max(2),
-            10_000_000,
+            MAX_EVALUATIONS,
         );
     }
 
     pub(super) fn resolution(&mut self, scene: &Scene) {
         let res = &scene.resolution;
-        self.count_in(
-            "resolution.airfoil_points_per_side",
-            res.airfoil_points_per_side,
-            8,
-            2000,
-        );
-        self.count_in("resolution.deployment_samples", res.deployment_samples, 2, 1_000_000);
-        self.count_in("resolution.fairing_samples", res.fairing_samples, 2, 100_000);
-        self.count_in(
-            "resolution.fairing_points_per_capsule",
-            res.fairing_points_per_capsule,
-            2,
-            10_000,
-        );
+        for (key, value, (min, max)) in [
+            ("airfoil_points_per_side", res.airfoil_points_per_side, AIRFOIL_POINTS_PER_SIDE),
+            ("deployment_samples", res.deployment_samples, DEPLOYMENT_SAMPLES),
+            ("fairing_samples", res.fairing_samples, FAIRING_SAMPLES),
+            ("fairing_points_per_capsule", res.fairing_points_per_capsule, FAIRING_POINTS_PER_CAPSULE),
+        ] {
+            self.count_in(&format!("resolution.{key}"), value, min, max);
+        }
     }
 }

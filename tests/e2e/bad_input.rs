@@ -4,13 +4,13 @@
 use crate::{default_scene_text, run_flapwright};
 
 /// Replaces exactly the first occurrence of `from` (which must exist) in the default scene.
-fn default_with(from: &str, to: &str) -> String {
+pub(crate) fn default_with(from: &str, to: &str) -> String {
     let text = default_scene_text();
     assert!(text.contains(from), "default scene has `{from}`");
     text.replacen(from, to, 1)
 }
 
-fn assert_rejected(scene: &str, expected_in_message: &[&str]) {
+pub(crate) fn assert_rejected(scene: &str, expected_in_message: &[&str]) {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("scene.toml"), scene).unwrap();
     let output = run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);

@@ -1,0 +1,143 @@
+//! The "validation gaps" of issue 13: every problem a scene file can hold is reported at
+//! once, as `file:line:col: key ...`, with exit 2, before any stage runs; values that once
+//! panicked, hung or ran out of memory deep inside a stage are refused by their key.
+
+use crate::bad_input::{assert_rejected, default_with};
+use crate::default_scene_text;
+
+#[test]
+fn a_wrong_type_inside_a_mechanism_names_the_key_and_its_place() {
+    let scene = default_with("flap_mass_kg = 12.0", "flap_mass_kg = \"heavy\"");
+    assert_rejected(
+        &scene,
+        &["scene.toml:101:1: station[0].mechanism.flap_mass_kg: invalid type: string \"heavy\", expected a number"],
+    );
+}
+
+#[test]
+fn every_missing_key_is_reported_in_one_run() {
+    let scene = default_with("screw_lead_m = 0.008", "")
+        .replacen("base_angle_deg = 65.0", "", 2)
+        .replacen("y_m = 5.5", "", 1);
+    assert_rejected(
+        &scene,
+        &[
+            "4 problem(s)",
+            "wing.sections[1].y_m: missing",
+            "station[0].mechanism.screw_lead_m: missing",
+            "station[0].mechanism.base_angle_deg: missing",
+            "station[1].mechanism.base_angle_deg: missing",
+        ],
+    );
+}
+
+#[test]
+fn an_unknown_mechanism_kind_is_named_with_the_kinds_there_are() {
+    assert_rejected(
+        &default_with("kind = \"circular-arc-track\"", "kind = \"four-bar-linkage\""),
+        &["scene.toml:90:1: station[0].mechanism.kind = \"four-bar-linkage\": unknown mechanism kind; one of circular-arc-track"],
+    );
+}
+
+#[test]
+fn extra_array_elements_are_refused() {
+    assert_rejected(
+        &default_with("root_leading_edge_m = [0.0, 0.6, 0.0]", "root_leading_edge_m = [0, 0.6, 0, 123, \"x\"]"),
+        &["scene.toml:21:1: wing.root_leading_edge_m: invalid length 5"],
+    );
+    assert_rejected(
+        &default_with("flap_centre_of_mass_m = [-0.030, 0.340]", "flap_centre_of_mass_m = [-0.030, 0.340, 1.0]"),
+        &["station[0].mechanism.flap_centre_of_mass_m: invalid length 3"],
+    );
+}
+
+#[test]
+fn extreme_material_and_drive_values_are_refused_by_key() {
+    for value in ["1e-300", "1e308"] {
+        let scene = format!(
+            "{}\n[sizing]\nscrew_material = \"odd\"\ngearbox_efficiency = {value}\n\n[[materials]]\nname = \"odd\"\n\
+             density_kg_m3 = {value}\nallowable_tensile_pa = {value}\nallowable_shear_pa = {value}\nyoungs_modulus_pa = {value}\n",
+            default_scene_text()
+        );
+        assert_rejected(
+            &scene,
+            &[
+                "5 problem(s)",
+                "sizing.gearbox_efficiency",
+                "materials[0].density_kg_m3",
+                "materials[0].allowable_tensile_pa",
+                "materials[0].allowable_shear_pa",
+                "materials[0].youngs_modulus_pa",
+            ],
+        );
+    }
+}
+
+#[test]
+fn a_flap_without_stations_is_an_input_error() {
+    let text = default_scene_text();
+    let first_station = text.find("[[station]]").expect("stations");
+    let loads = text.find("[loads]").expect("loads");
+    let scene = format!("{}{}", &text[..first_station], &text[loads..]);
+    assert_rejected(&scene, &["flap[0]", "has no [[station]]"]);
+}
+
+#[test]
+fn huge_and_tiny_lengths_are_refused_by_key() {
+    for (from, to, key) in [
+        ("chord_m = 2.1", "chord_m = 1e308", "wing.sections[0].chord_m"),
+        ("y_m = 5.5", "y_m = 1e308", "wing.sections[1].y_m"),
+        ("y_m = 5.5", "y_m = 1e5", "wing.sections[1].y_m"),
+        ("y_m = 5.5", "y_m = 9223372036854775807", "wing.sections[1].y_m"),
+        ("radius_m = 0.020", "radius_m = 1e308", "structure.torque_tube.radius_m"),
+        ("thickness_m = 0.006", "thickness_m = 1e-300", "structure.spars[0].thickness_m"),
+    ] {
+        assert_rejected(&default_with(from, to), &[key]);
+    }
+}
+
+#[test]
+fn work_beyond_the_budget_is_refused_naming_the_knobs() {
+    let with = |table: &str| format!("{}\n{table}\n", default_scene_text());
+    assert_rejected(
+        &with("[resolution]\nfairing_samples = 10001\nfairing_points_per_capsule = 1000"),
+        &["resolution.fairing_samples", "over the budget", "fairing_points_per_capsule"],
+    );
+    assert_rejected(
+        &with("[interference]\ninitial_samples = 10000\nmax_evaluations = 100000"),
+        &["interference.max_evaluations", "over the budget"],
+    );
+    assert_rejected(
+        &with("[resolution]\nairfoil_points_per_side = 2000\ndeployment_samples = 100001"),
+        &["resolution.deployment_samples", "over the budget"],
+    );
+    // Out of range outright (the old limits let these through).
+    assert_rejected(
+        &with("[resolution]\ndeployment_samples = 1000000"),
+        &["resolution.deployment_samples = 1000000: must be in [2, 100001]"],
+    );
+}
+
+#[test]
+fn many_stations_are_refused_by_the_budget() {
+    let text = default_scene_text();
+    let start = text.find("[[station]]\nname = \"outer\"").expect("outer station");
+    let end = text.find("[loads]").expect("loads");
+    let outer = &text[start..end];
+    let mut scene = text[..end].to_string();
+    for i in 0..28 {
+        scene.push_str(&outer.replace("name = \"outer\"", &format!("name = \"extra-{i}\"")));
+    }
+    scene.push_str(&text[end..]);
+    assert_rejected(&scene, &["interference.max_evaluations", "30 stations", "use fewer stations"]);
+}
+
+#[test]
+fn a_huge_scene_file_is_refused_before_parsing() {
+    let mut scene = default_scene_text();
+    let case = "\n[[loads.cases]]\nname = \"c\"\nmoment_nm = 1.0\n";
+    while scene.len() <= 1 << 20 {
+        scene.push_str(case);
+    }
+    assert_rejected(&scene, &["scene.toml", "at most 1048576 bytes"]);
+}

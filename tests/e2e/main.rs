@@ -5,6 +5,7 @@ mod bad_input;
 mod check;
 mod default_scene;
 mod exports;
+mod fuzz;
 mod scene_errors;
 mod stations;
 mod stl_reader;

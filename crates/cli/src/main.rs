@@ -156,7 +156,15 @@ fn run(cli: &Cli) -> Result<(), Failure> {
     if let Some(bar) = &spinner {
         bar.finish_and_clear();
     }
-    let outcome = outcome?;
+    // Input problems found by a stage (after validation) are located in the file too.
+    let outcome = outcome.map_err(|error| match error.downcast::<SceneError>() {
+        Ok(scene_error) => Failure {
+            code: EXIT_BAD_INPUT,
+            error: anyhow::Error::new(scene_error.locate(&text, &file_label))
+                .context(format!("invalid scene {file_label}")),
+        },
+        Err(error) => Failure::from(error),
+    })?;
     let written = staged
         .commit()
         .with_context(|| format!("moving results into {}", out.display()))?;
@@ -203,9 +211,13 @@ fn read_scene_text(path: Option<&Path>) -> Result<(String, Option<PathBuf>), Fai
     match path {
         None => Ok((DEFAULT_SCENE_TOML.to_string(), None)),
         Some(path) => {
-            let text = std::fs::read_to_string(path).map_err(|e| Failure {
+            let bytes = std::fs::read(path).map_err(|e| Failure {
                 code: EXIT_BAD_INPUT,
                 error: anyhow::Error::new(e).context(format!("reading scene file {}", path.display())),
+            })?;
+            let text = Scene::decode(bytes, &path.display().to_string()).map_err(|e| Failure {
+                code: EXIT_BAD_INPUT,
+                error: anyhow::Error::new(e).context(format!("invalid scene {}", path.display())),
             })?;
             let dir = path.parent().map(Path::to_path_buf);
             Ok((text, dir))

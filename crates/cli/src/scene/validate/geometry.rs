@@ -40,6 +40,18 @@ impl Checker<'_> {
             false,
         );
         self.count_in("wing.sections", wing.sections.len(), 2, MAX_SECTIONS);
+        if let Some(root) = wing.sections.first() {
+            let y = wing.root_leading_edge_m[1];
+            if y.is_finite() && root.y_m.is_finite() && (y - root.y_m).abs() > 1e-9 {
+                self.fail(
+                    "wing.root_leading_edge_m",
+                    format!(
+                        "has y = {y} m but the first section is at y_m = {} m: the root leading edge lies in the root section",
+                        root.y_m
+                    ),
+                );
+            }
+        }
         if wing.sections.len() < 2 {
             self.fail(
                 "wing.sections",

@@ -134,6 +134,23 @@ impl Scene {
         Self::from_file_text(text, "scene.toml", scene_dir)
     }
 
+    /// The scene file's bytes as text; invalid UTF-8 is located like any other problem.
+    pub fn decode(bytes: Vec<u8>, file: &str) -> Result<String, SceneError> {
+        String::from_utf8(bytes).map_err(|error| {
+            let valid = error.utf8_error().valid_up_to();
+            let bytes = error.as_bytes();
+            let text = String::from_utf8_lossy(&bytes[..valid]);
+            SceneError::Located(vec![LocatedProblem {
+                file: file.to_string(),
+                location: Location::of_offset(&text, valid),
+                problem: Problem::new(
+                    "",
+                    format!("byte {valid} is not UTF-8 text (a scene file is UTF-8 TOML)"),
+                ),
+            }])
+        })
+    }
+
     /// As [`Scene::from_toml`], naming the file `file` in the problems
     /// (`file:line:col: path = value: rule`).
     pub fn from_file_text(text: &str, file: &str, scene_dir: Option<&Path>) -> Result<Self, SceneError> {

@@ -34,18 +34,53 @@ const SCENES: &[&str] = &["small-aircraft.toml", "thesis-case-study.toml"];
 
 /// Values put in place of a scene value: extremes, wrong types, and plain ones.
 const VALUES: &[&str] = &[
-    "0", "-0.0", "-1", "1e-300", "-1e-300", "1e308", "-1e308", "nan", "inf", "-inf", "1e5", "1e6", "1e-9",
-    "9223372036854775807", "-9223372036854775808", "0.5", "2", "3.5", "45.0", "89.999", "90", "1000",
-    "\"x\"", "\"\"", "\"NACA 0000\"", "\"NACA 9999\"", "true", "[]", "{}", "[1, 2, 3, 4]", "[0.0, 0.0]",
-    "[[0.0, 0.0, 0.0]]", "2021-01-01",
+    "0",
+    "-0.0",
+    "-1",
+    "1e-300",
+    "-1e-300",
+    "1e308",
+    "-1e308",
+    "nan",
+    "inf",
+    "-inf",
+    "1e5",
+    "1e6",
+    "1e-9",
+    "9223372036854775807",
+    "-9223372036854775808",
+    "0.5",
+    "2",
+    "3.5",
+    "45.0",
+    "89.999",
+    "90",
+    "1000",
+    "\"x\"",
+    "\"\"",
+    "\"NACA 0000\"",
+    "\"NACA 9999\"",
+    "true",
+    "[]",
+    "{}",
+    "[1, 2, 3, 4]",
+    "[0.0, 0.0]",
+    "[[0.0, 0.0, 0.0]]",
+    "2021-01-01",
 ];
 
 #[derive(Debug, Clone)]
 enum Mutation {
     /// Value of the n-th `key = value` line.
-    Value { line: usize, value: usize },
+    Value {
+        line: usize,
+        value: usize,
+    },
     /// The n-th `key = value` line's value scaled (stays a number of the same sign).
-    Scale { line: usize, factor: f64 },
+    Scale {
+        line: usize,
+        factor: f64,
+    },
     DeleteLine(usize),
     DuplicateLine(usize),
     RenameKey(usize),
@@ -93,7 +128,10 @@ fn mutate(text: &str, mutations: &[Mutation]) -> Vec<u8> {
             }
             Mutation::Scale { line, factor } => {
                 let i = keyed[line % keyed.len()];
-                let (key, rest) = lines[i].split_once(" = ").map(|(k, r)| (k.to_string(), r.to_string())).unwrap_or_default();
+                let (key, rest) = lines[i]
+                    .split_once(" = ")
+                    .map(|(k, r)| (k.to_string(), r.to_string()))
+                    .unwrap_or_default();
                 let value = rest.split('#').next().unwrap_or_default().trim();
                 if let Ok(number) = value.parse::<f64>() {
                     lines[i] = format!("{key} = {:?}", number * factor);
@@ -208,7 +246,10 @@ fn verdict(run: &Run) -> Option<String> {
     // A rejected scene may echo the user's own `nan`; results never contain one.
     let echoes_input = run.code == Some(2);
     if (!echoes_input && text.contains("NaN"))
-        || run.report.as_deref().is_some_and(|r| r.contains("NaN") || r.contains("Infinity"))
+        || run
+            .report
+            .as_deref()
+            .is_some_and(|r| r.contains("NaN") || r.contains("Infinity"))
     {
         return Some("NaN or infinity in the output".into());
     }
@@ -256,10 +297,10 @@ fn fuzz(cases: u32, seed: u64) {
                     };
                     *tally.lock().expect("tally").entry(key).or_default() += 1;
                     if let Some(failure) = failure {
-                        failures.lock().expect("failures").push(format!(
-                            "case {i}: {} with {mutations:?}: {failure}",
-                            SCENES[*scene]
-                        ));
+                        failures
+                            .lock()
+                            .expect("failures")
+                            .push(format!("case {i}: {} with {mutations:?}: {failure}", SCENES[*scene]));
                     }
                 }
             });
@@ -267,7 +308,10 @@ fn fuzz(cases: u32, seed: u64) {
     });
     let failures = failures.into_inner().expect("failures");
     let tally = tally.into_inner().expect("tally");
-    println!("fuzz: {cases} cases, seed {seed}: {tally:?}, {} failure(s)", failures.len());
+    println!(
+        "fuzz: {cases} cases, seed {seed}: {tally:?}, {} failure(s)",
+        failures.len()
+    );
     assert!(
         failures.is_empty(),
         "{} of {cases} mutated scenes went wrong (seed {seed}); first ones:\n{}",
@@ -277,7 +321,10 @@ fn fuzz(cases: u32, seed: u64) {
 }
 
 fn seed() -> u64 {
-    std::env::var("FLAPWRIGHT_FUZZ_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(13)
+    std::env::var("FLAPWRIGHT_FUZZ_SEED")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(13)
 }
 
 #[test]
@@ -288,6 +335,9 @@ fn mutated_scenes_never_panic_hang_or_print_nan() {
 #[test]
 #[ignore = "long run: FLAPWRIGHT_FUZZ_CASES=2000 cargo test -p flapwright --test e2e fuzz -- --ignored"]
 fn mutated_scenes_long_run() {
-    let cases = std::env::var("FLAPWRIGHT_FUZZ_CASES").ok().and_then(|s| s.parse().ok()).unwrap_or(2000);
+    let cases = std::env::var("FLAPWRIGHT_FUZZ_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(2000);
     fuzz(cases, seed());
 }

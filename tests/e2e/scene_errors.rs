@@ -42,11 +42,17 @@ fn an_unknown_mechanism_kind_is_named_with_the_kinds_there_are() {
 #[test]
 fn extra_array_elements_are_refused() {
     assert_rejected(
-        &default_with("root_leading_edge_m = [0.0, 0.6, 0.0]", "root_leading_edge_m = [0, 0.6, 0, 123, \"x\"]"),
+        &default_with(
+            "root_leading_edge_m = [0.0, 0.6, 0.0]",
+            "root_leading_edge_m = [0, 0.6, 0, 123, \"x\"]",
+        ),
         &["scene.toml:21:1: wing.root_leading_edge_m: invalid length 5"],
     );
     assert_rejected(
-        &default_with("flap_centre_of_mass_m = [-0.030, 0.340]", "flap_centre_of_mass_m = [-0.030, 0.340, 1.0]"),
+        &default_with(
+            "flap_centre_of_mass_m = [-0.030, 0.340]",
+            "flap_centre_of_mass_m = [-0.030, 0.340, 1.0]",
+        ),
         &["station[0].mechanism.flap_centre_of_mass_m: invalid length 3"],
     );
 }
@@ -90,7 +96,11 @@ fn huge_and_tiny_lengths_are_refused_by_key() {
         ("y_m = 5.5", "y_m = 1e5", "wing.sections[1].y_m"),
         ("y_m = 5.5", "y_m = 9223372036854775807", "wing.sections[1].y_m"),
         ("radius_m = 0.020", "radius_m = 1e308", "structure.torque_tube.radius_m"),
-        ("thickness_m = 0.006", "thickness_m = 1e-300", "structure.spars[0].thickness_m"),
+        (
+            "thickness_m = 0.006",
+            "thickness_m = 1e-300",
+            "structure.spars[0].thickness_m",
+        ),
     ] {
         assert_rejected(&default_with(from, to), &[key]);
     }
@@ -101,7 +111,11 @@ fn work_beyond_the_budget_is_refused_naming_the_knobs() {
     let with = |table: &str| format!("{}\n{table}\n", default_scene_text());
     assert_rejected(
         &with("[resolution]\nfairing_samples = 10001\nfairing_points_per_capsule = 1000"),
-        &["resolution.fairing_samples", "over the budget", "fairing_points_per_capsule"],
+        &[
+            "resolution.fairing_samples",
+            "over the budget",
+            "fairing_points_per_capsule",
+        ],
     );
     assert_rejected(
         &with("[interference]\ninitial_samples = 10000\nmax_evaluations = 100000"),
@@ -129,7 +143,10 @@ fn many_stations_are_refused_by_the_budget() {
         scene.push_str(&outer.replace("name = \"outer\"", &format!("name = \"extra-{i}\"")));
     }
     scene.push_str(&text[end..]);
-    assert_rejected(&scene, &["interference.max_evaluations", "30 stations", "use fewer stations"]);
+    assert_rejected(
+        &scene,
+        &["interference.max_evaluations", "30 stations", "use fewer stations"],
+    );
 }
 
 #[test]

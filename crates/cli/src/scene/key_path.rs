@@ -150,12 +150,16 @@ fn deepest_span(table: &Spanned<DeTable<'_>>, steps: &[Step]) -> usize {
         match step {
             Step::Key(key) => {
                 let Some(t) = current_table else { break };
-                let Some((k, v)) = t.get_key_value(key.as_str()) else { break };
+                let Some((k, v)) = t.get_key_value(key.as_str()) else {
+                    break;
+                };
                 best = k.span().start;
                 value = Some(v);
             }
             Step::Index(i) => {
-                let Some(DeValue::Array(array)) = value.map(Spanned::get_ref) else { break };
+                let Some(DeValue::Array(array)) = value.map(Spanned::get_ref) else {
+                    break;
+                };
                 let Some(element) = array.get(*i) else { break };
                 best = element.span().start;
                 value = Some(element);
@@ -175,7 +179,12 @@ mod tests {
 
     #[test]
     fn paths_round_trip_through_text() {
-        for text in ["name", "wing.sections[2].chord_m", "station[0].mechanism.kind", "a[1][2].b"] {
+        for text in [
+            "name",
+            "wing.sections[2].chord_m",
+            "station[0].mechanism.kind",
+            "a[1][2].b",
+        ] {
             assert_eq!(KeyPathBuf::parse(text).to_string(), text);
         }
         assert_eq!(KeyPathBuf::parse("flap[0] (inner)").to_string(), "flap[0]");

@@ -15,9 +15,9 @@ mod validate;
 mod wing;
 
 pub use airfoil_ref::{AirfoilRef, AirfoilSource};
+pub use key_path::Location;
 pub use settings::{InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene};
 pub use station::{CircularArcTrackScene, LoadCaseScene, LoadsScene, MechanismScene, StationScene};
-pub use key_path::Location;
 pub use validate::{LocatedProblem, Problem, SceneError, MAX_SCENE_BYTES};
 pub use wing::{
     FlapScene, HingeScene, PanelScene, SettingsScene, SparScene, StructureScene, SweepReferenceScene, TorqueTubeScene,

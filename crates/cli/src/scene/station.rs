@@ -62,7 +62,10 @@ impl<'de> Deserialize<'de> for MechanismScene {
             "circular-arc-track" => variant(table).map(Self::CircularArcTrack),
             other => Err(D::Error::custom(super::parse::nested_error_at(
                 "kind",
-                &format!("= \"{other}\": unknown mechanism kind; one of {}", Self::KINDS.join(", ")),
+                &format!(
+                    "= \"{other}\": unknown mechanism kind; one of {}",
+                    Self::KINDS.join(", ")
+                ),
             ))),
         }
     }

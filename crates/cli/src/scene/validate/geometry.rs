@@ -1,8 +1,8 @@
 //! Checks of the aircraft: airfoils, wing, flaps, spars and torque tube.
 
 use super::limits::{
-    MAX_CHORD_M, MAX_FLAPS, MAX_SECTIONS, MAX_SPARS, MAX_SPAN_M, MAX_STATIONS,
-    MAX_TORQUE_TUBE_POINTS, MIN_CHORD_M, MIN_LENGTH_M,
+    MAX_CHORD_M, MAX_FLAPS, MAX_SECTIONS, MAX_SPAN_M, MAX_SPARS, MAX_STATIONS, MAX_TORQUE_TUBE_POINTS, MIN_CHORD_M,
+    MIN_LENGTH_M,
 };
 use super::Checker;
 use crate::scene::{AirfoilRef, FlapScene, Scene, WingScene};
@@ -61,13 +61,7 @@ impl Checker<'_> {
         let mut previous_y: Option<f64> = None;
         for (i, section) in wing.sections.iter().enumerate() {
             let path = format!("wing.sections[{i}]");
-            if self.in_range(
-                &format!("{path}.y_m"),
-                section.y_m,
-                -MAX_SPAN_M,
-                MAX_SPAN_M,
-                false,
-            ) {
+            if self.in_range(&format!("{path}.y_m"), section.y_m, -MAX_SPAN_M, MAX_SPAN_M, false) {
                 if let Some(prev) = previous_y {
                     if section.y_m <= prev {
                         self.fail(
@@ -81,7 +75,13 @@ impl Checker<'_> {
                 }
                 previous_y = Some(section.y_m);
             }
-            self.in_range(&format!("{path}.chord_m"), section.chord_m, MIN_CHORD_M, MAX_CHORD_M, false);
+            self.in_range(
+                &format!("{path}.chord_m"),
+                section.chord_m,
+                MIN_CHORD_M,
+                MAX_CHORD_M,
+                false,
+            );
             self.in_range(&format!("{path}.twist_deg"), section.twist_deg, -45.0, 45.0, false);
             self.airfoil(&format!("{path}.airfoil"), &section.airfoil);
         }
@@ -232,7 +232,11 @@ impl Checker<'_> {
         self.count_in("flap", scene.flap.len(), 0, MAX_FLAPS);
         self.count_in("station", scene.station.len(), 0, MAX_STATIONS);
         for (i, flap) in scene.flap.iter().enumerate() {
-            if !scene.station.iter().any(|s| s.flap.as_deref() == Some(flap.name.as_str())) {
+            if !scene
+                .station
+                .iter()
+                .any(|s| s.flap.as_deref() == Some(flap.name.as_str()))
+            {
                 self.fail(
                     format!("flap[{i}]"),
                     format!(

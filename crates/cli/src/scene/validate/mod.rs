@@ -286,7 +286,10 @@ impl Checker<'_> {
         let limit = limits::MAX_ABS_COORDINATE_M;
         let ok = point.iter().all(|v| v.abs() <= limit);
         if !ok {
-            self.fail(path, format!("= {point:?}: every coordinate must be in [-{limit}, {limit}] m"));
+            self.fail(
+                path,
+                format!("= {point:?}: every coordinate must be in [-{limit}, {limit}] m"),
+            );
         }
         ok
     }

@@ -1,8 +1,8 @@
 //! Checks of the settings tables: sizing and materials, interference, resolution.
 
 use super::limits::{
-    ALLOWABLE_PA, AIRFOIL_POINTS_PER_SIDE, DENSITY_KG_M3, DEPLOYMENT_SAMPLES, FAIRING_POINTS_PER_CAPSULE, FAIRING_SAMPLES,
-    GEARBOX_EFFICIENCY, INITIAL_SAMPLES, MAX_EVALUATIONS, MAX_MATERIALS, YOUNGS_MODULUS_PA,
+    AIRFOIL_POINTS_PER_SIDE, ALLOWABLE_PA, DENSITY_KG_M3, DEPLOYMENT_SAMPLES, FAIRING_POINTS_PER_CAPSULE,
+    FAIRING_SAMPLES, GEARBOX_EFFICIENCY, INITIAL_SAMPLES, MAX_EVALUATIONS, MAX_MATERIALS, YOUNGS_MODULUS_PA,
 };
 use super::Checker;
 use crate::scene::Scene;
@@ -102,10 +102,18 @@ impl Checker<'_> {
     pub(super) fn resolution(&mut self, scene: &Scene) {
         let res = &scene.resolution;
         for (key, value, (min, max)) in [
-            ("airfoil_points_per_side", res.airfoil_points_per_side, AIRFOIL_POINTS_PER_SIDE),
+            (
+                "airfoil_points_per_side",
+                res.airfoil_points_per_side,
+                AIRFOIL_POINTS_PER_SIDE,
+            ),
             ("deployment_samples", res.deployment_samples, DEPLOYMENT_SAMPLES),
             ("fairing_samples", res.fairing_samples, FAIRING_SAMPLES),
-            ("fairing_points_per_capsule", res.fairing_points_per_capsule, FAIRING_POINTS_PER_CAPSULE),
+            (
+                "fairing_points_per_capsule",
+                res.fairing_points_per_capsule,
+                FAIRING_POINTS_PER_CAPSULE,
+            ),
         ] {
             self.count_in(&format!("resolution.{key}"), value, min, max);
         }

@@ -5,7 +5,8 @@
 //! write NaN or infinity.
 //!
 //! CI runs [`CI_CASES`] cases; `FLAPWRIGHT_FUZZ_CASES=2000 cargo test -p flapwright --test
-//! e2e fuzz -- --ignored` runs the long suite.
+//! e2e fuzz -- --ignored` runs the long suite; `FLAPWRIGHT_FUZZ_DUMP=DIR` keeps the scene of
+//! every failing case there as `case-N.toml`.
 
 use std::io::Read;
 use std::path::Path;
@@ -297,6 +298,9 @@ fn fuzz(cases: u32, seed: u64) {
                     };
                     *tally.lock().expect("tally").entry(key).or_default() += 1;
                     if let Some(failure) = failure {
+                        if let Some(dump) = std::env::var_os("FLAPWRIGHT_FUZZ_DUMP") {
+                            let _ = std::fs::write(Path::new(&dump).join(format!("case-{i}.toml")), &bytes);
+                        }
                         failures
                             .lock()
                             .expect("failures")

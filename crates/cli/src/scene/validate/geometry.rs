@@ -145,7 +145,9 @@ impl Checker<'_> {
             ("chord_fraction_inboard", flap.chord_fraction_inboard),
             ("chord_fraction_outboard", flap.chord_fraction_outboard),
         ] {
-            self.in_range(&format!("{path}.{key}"), value, 0.0, 0.8, true);
+            // The flap model's own range: below 2 % of the chord there is no flap to cut.
+            let (min, max) = flapwright_geom::flap::FLAP_CHORD_FRACTION_RANGE;
+            self.in_range(&format!("{path}.{key}"), value, min, max, false);
         }
         if let Some(gap) = flap.side_gap_m {
             let quarter_span = 0.25 * (flap.y_outboard_m - flap.y_inboard_m).abs();

@@ -158,3 +158,33 @@ fn a_huge_scene_file_is_refused_before_parsing() {
     }
     assert_rejected(&scene, &["scene.toml", "at most 1048576 bytes"]);
 }
+
+/// The hang and memory reproducers of issue 13, with their exact values.
+#[test]
+fn the_hang_reproducers_are_refused_by_key() {
+    let with = |table: &str| format!("{}\n{table}\n", default_scene_text());
+    for (scene, key) in [
+        (
+            with("[resolution]\nfairing_samples = 100000\nfairing_points_per_capsule = 10000"),
+            "resolution.fairing_samples = 100000: must be in [2, 10001]",
+        ),
+        (
+            with("[interference]\ninitial_samples = 100000\nmax_evaluations = 10000000"),
+            "interference.initial_samples = 100000: must be in [2, 10000]",
+        ),
+        (
+            with("[resolution]\nairfoil_points_per_side = 2000\ndeployment_samples = 1000000"),
+            "resolution.deployment_samples = 1000000",
+        ),
+        (
+            default_with("y_m = 5.5", "y_m = 1e6"),
+            "wing.sections[1].y_m = 1e6: must be in [-100, 100]",
+        ),
+        (
+            default_with("radius_m = 0.020", "radius_m = 1e308"),
+            "structure.torque_tube.radius_m = 1e308: must be in",
+        ),
+    ] {
+        assert_rejected(&scene, &[key]);
+    }
+}

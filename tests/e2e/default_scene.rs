@@ -133,7 +133,7 @@ fn refuses_to_replace_a_folder_it_did_not_write() {
     std::fs::create_dir(dir.path().join("precious")).unwrap();
     std::fs::write(dir.path().join("precious/notes.txt"), "keep me").unwrap();
     let output = run_flapwright(dir.path(), &["design", "--out", "precious"]);
-    assert_eq!(output.status.code(), Some(1));
+    assert_eq!(output.status.code(), Some(2), "a foreign --out is bad input");
     assert_eq!(
         std::fs::read_to_string(dir.path().join("precious/notes.txt")).unwrap(),
         "keep me"

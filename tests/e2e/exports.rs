@@ -92,7 +92,9 @@ fn export_flags_select_the_files() {
         .map(|e| e.unwrap().file_name().into_string().unwrap())
         .collect();
     assert!(
-        names.iter().all(|n| n.ends_with(".svg") || n == "report.json"),
+        names
+            .iter()
+            .all(|n| n.ends_with(".svg") || n == "report.json" || n == flapwright::output::MANIFEST),
         "{names:?}"
     );
 }

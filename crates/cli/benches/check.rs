@@ -18,13 +18,13 @@ fn default_scene_check(c: &mut Criterion) {
     group.sample_size(10);
     group.bench_function("default scene", |b| {
         b.iter(|| {
-            let staged = StagedDir::create(&dir.path().join("out")).expect("staging");
+            let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
             design(&inputs, Mode::Check, &staged).expect("check runs")
         })
     });
     group.bench_function("default scene, full design", |b| {
         b.iter(|| {
-            let staged = StagedDir::create(&dir.path().join("out")).expect("staging");
+            let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
             design(&inputs, Mode::Design, &staged).expect("design runs")
         })
     });

@@ -38,7 +38,7 @@ fn run(configure: impl FnOnce(&mut Scene)) -> Run {
     scene.interference.max_evaluations = 100_000;
     configure(&mut scene);
     let dir = tempfile::tempdir().expect("temp dir");
-    let staged = StagedDir::create(&dir.path().join("out")).expect("staging");
+    let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
     let inputs = Inputs {
         scene: &scene,
         scene_text: DEFAULT_SCENE_TOML,

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 
 use anyhow::Context;
 use clap::{Parser, Subcommand};
-use flapwright::output::StagedDir;
+use flapwright::output::{self, OutputError, StagedDir};
 use flapwright::pipeline::{self, Inputs, Mode};
 use flapwright::scene::{Scene, SceneError, DEFAULT_SCENE_TOML};
 
@@ -27,9 +27,13 @@ struct Cli {
     /// Print nothing but errors.
     #[arg(long, global = true)]
     quiet: bool,
-    /// Print a machine-readable summary (JSON) on stdout.
+    /// Print a machine-readable summary (JSON) on stdout; on failure, a JSON error object.
     #[arg(long, global = true)]
     json: bool,
+    /// Replace an output folder (or JUnit file) even when it holds files Flapwright did
+    /// not write; the files removed are listed.
+    #[arg(long, global = true)]
+    force: bool,
 }
 
 #[derive(Subcommand, Debug)]
@@ -83,11 +87,11 @@ struct Failure {
 impl<E: Into<anyhow::Error>> From<E> for Failure {
     fn from(error: E) -> Self {
         let error = error.into();
-        let code = if error.downcast_ref::<SceneError>().is_some() {
-            EXIT_BAD_INPUT
-        } else {
-            EXIT_FAILED
-        };
+        let input_problem = error.downcast_ref::<SceneError>().is_some()
+            || error
+                .downcast_ref::<OutputError>()
+                .is_some_and(OutputError::is_input_problem);
+        let code = if input_problem { EXIT_BAD_INPUT } else { EXIT_FAILED };
         Self { code, error }
     }
 }
@@ -97,10 +101,29 @@ fn main() -> ExitCode {
     match run(&cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(failure) => {
+            if cli.json {
+                println!("{}", json_error(&failure));
+            }
             eprintln!("error: {:#}", failure.error);
             ExitCode::from(failure.code)
         }
     }
+}
+
+/// The failure as one line of JSON: `error` (the whole message), `exit_code`, and
+/// `problems` (each scene problem as a line, when the scene was at fault).
+fn json_error(failure: &Failure) -> String {
+    let problems = failure
+        .error
+        .downcast_ref::<SceneError>()
+        .map(SceneError::lines)
+        .unwrap_or_default();
+    serde_json::json!({
+        "error": format!("{:#}", failure.error),
+        "exit_code": failure.code,
+        "problems": problems,
+    })
+    .to_string()
 }
 
 fn run(cli: &Cli) -> Result<(), Failure> {
@@ -129,7 +152,13 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         (outputs.urdf, outputs.stl, outputs.svg) = (all || *urdf, all || *stl, all || *svg);
         outputs.sizing = false;
     }
-    let staged = StagedDir::create(&out).with_context(|| format!("preparing output folder {}", out.display()))?;
+    let staged = StagedDir::create(&out, scene_path.as_deref(), cli.force)?;
+    if let Some(path) = &junit {
+        output::check_writable_file(path, cli.force, |text| {
+            text.contains("<testsuites name=\"flapwright check\"")
+        })
+        .with_context(|| format!("--junit {}", path.display()))?;
+    }
     let inputs = Inputs {
         scene: &scene,
         scene_text: &text,
@@ -165,12 +194,28 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         },
         Err(error) => Failure::from(error),
     })?;
-    let written = staged
+    let (written, removed) = staged
         .commit()
         .with_context(|| format!("moving results into {}", out.display()))?;
+    if !removed.is_empty() && !cli.quiet {
+        eprintln!(
+            "--force: replaced {} file(s) Flapwright had not written: {}",
+            removed.len(),
+            removed
+                .iter()
+                .map(|p| p.display().to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
     if let (Some(path), Some(report)) = (&junit, &outcome.report.interference) {
         let xml = flapwright::junit::interference_junit(&scene.name, report)?;
-        std::fs::write(path, xml).with_context(|| format!("writing {}", path.display()))?;
+        output::write_file_atomically(path, xml.as_bytes()).with_context(|| format!("writing {}", path.display()))?;
+    }
+    if mode == Mode::Design && !cli.quiet && !cli.json {
+        for warning in &outcome.report.warnings {
+            eprintln!("warning: {warning}");
+        }
     }
     if cli.json {
         println!("{}", serde_json::to_string(&outcome.summary)?);

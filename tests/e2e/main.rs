@@ -8,6 +8,7 @@ mod exports;
 mod fuzz;
 mod output_safety;
 mod scene_errors;
+mod sizing_figures;
 mod stations;
 mod stl_reader;
 

@@ -114,7 +114,7 @@ pub fn design_with_progress(
     let mechanisms = stages.run("synthesis", || mechanisms::synthesise_all(scene))?;
     let mut planes = vec![None; scene.station.len()];
     let mut fairings = vec![None; scene.station.len()];
-    let mut station_origins_ac = Vec::new();
+    let mut station_planes_ac = Vec::new();
     let mut placed = Vec::new();
     let mut meshed = Vec::new();
     if let Some(wing) = &scene.wing {
@@ -125,7 +125,10 @@ pub fn design_with_progress(
         let stage = if write_stl { "stl" } else { "part-statistics" };
         parts = stages.run(stage, || geometry::write_parts(&meshed, write_stl, out))?;
         placed = stages.run("planes", || stations::place_all(scene, &model, &meshed, &mechanisms))?;
-        station_origins_ac = placed.iter().map(|p| p.station.frame.origin_ac()).collect();
+        station_planes_ac = placed
+            .iter()
+            .map(|p| (p.station.frame.origin_ac(), p.station.frame.z_axis_ac().into_inner()))
+            .collect();
         planes = placed
             .iter()
             .map(|p| Some(flapwright_planes::StationReport::new(&p.station, &p.sections)))
@@ -176,16 +179,23 @@ pub fn design_with_progress(
     }
     let mut sizing_report = None;
     if full && outputs.sizing && outputs.kinematics {
-        let reports: Vec<_> = mechanism_reports.iter().flatten().cloned().collect();
-        let motor_ac = scene
+        let tube_path_ac: Vec<nalgebra::Point3<f64>> = scene
             .structure
             .torque_tube
-            .as_ref()
-            .and_then(|t| t.path_m.first())
-            .map(|p| nalgebra::Point3::new(p[0], p[1], p[2]));
-        let sized = stages.run("sizing", || {
-            sizing::size_all(scene, &mechanisms, &reports, &station_origins_ac, motor_ac)
+            .iter()
+            .flat_map(|t| t.path_m.iter())
+            .map(|p| nalgebra::Point3::new(p[0], p[1], p[2]))
+            .collect();
+        let (sized, notes) = stages.run("sizing", || {
+            sizing::size_all(
+                scene,
+                &mechanisms,
+                &mechanism_reports,
+                &station_planes_ac,
+                &tube_path_ac,
+            )
         })?;
+        warnings.extend(notes);
         warnings.extend(sized.warnings.iter().map(|w| w.to_string()));
         sizing_report = Some(sized);
     }

@@ -18,6 +18,7 @@ fn main() -> Result<(), flapwright_sizing::Error> {
         name: "screw jack".into(),
         max_raise_torque_nm: thread.torques(input_force_n).raise_torque_nm,
         max_lower_torque_nm: thread.torques(input_force_n).lower_torque_nm,
+        min_lower_torque_nm: thread.torques(input_force_n).lower_torque_nm,
     };
     let sizing = size_screw_jack(&jack, CS25_SAFETY_FACTOR)?;
     println!(

@@ -2,12 +2,22 @@
 
 use serde::Serialize;
 
-use crate::check::{finite, non_negative, positive};
+use crate::check::{finite, non_negative};
 use crate::torque_tube::{cumulative_torques_nm, ideal_motor_torque_nm};
 use crate::{Error, Result};
 
+/// Work the drive line delivers over one deployment under one load case.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DeploymentWork {
+    /// Load case name.
+    pub load_case: String,
+    /// Work, J: the raising torque integrated over the screw rotation of every station,
+    /// divided by the gearbox efficiency; no safety factor (a physical energy).
+    pub work_j: f64,
+}
+
 /// What the drive motor must deliver.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DriveDemand {
     /// Ideal motor torque sum T_d,i (eq 4), N m.
     pub ideal_motor_torque_nm: f64,
@@ -15,18 +25,16 @@ pub struct DriveDemand {
     pub motor_torque_nm: f64,
     /// Drive-line angular speed omega_d, rad/s.
     pub angular_speed_rad_s: f64,
-    /// Peak power P_M = omega_d sum T_d,i / eta (eq 5), W.
+    /// Peak power P_M = omega_d sum T_d,i / eta (eq 5), W. The station torques T_d,i are
+    /// the motor torque requirements, so this includes the safety factor.
     pub peak_power_w: f64,
-    /// Work per deployment, J.
-    pub work_per_deployment_j: f64,
+    /// Work per deployment for each load case (integrated, no safety factor).
+    pub work_per_deployment: Vec<DeploymentWork>,
 }
 
-/// Drive demand from the peak drive torques of the stations (N m, >= 0), the gearbox
-/// efficiency and the drive-line speed (rad/s) held for `deployment_time_s`.
-///
-/// Work is bounded above by P_M t (peak torque held for the whole deployment, as a
-/// constant-speed drive with summed peaks); use [`deployment_work_j`] with a torque
-/// history when one is available.
+/// Drive demand from the motor torque requirements of the stations (N m, >= 0, with
+/// the safety factor), the gearbox efficiency, the drive-line speed (rad/s) and the work
+/// per deployment of each load case (from [`deployment_work_j`]).
 ///
 /// # Errors
 /// [`Error::EfficiencyOutOfRange`], [`Error::OutOfRange`].
@@ -34,11 +42,13 @@ pub fn drive_demand(
     drive_torques_nm: &[f64],
     gearbox_efficiency: f64,
     angular_speed_rad_s: f64,
-    deployment_time_s: f64,
+    work_per_deployment: Vec<DeploymentWork>,
 ) -> Result<DriveDemand> {
     let carried = cumulative_torques_nm(drive_torques_nm, gearbox_efficiency)?;
     let omega = non_negative("angular_speed_rad_s", angular_speed_rad_s)?;
-    let time = positive("deployment_time_s", deployment_time_s)?;
+    for work in &work_per_deployment {
+        finite("work_j", work.work_j)?;
+    }
     let motor_torque_nm = carried.last().copied().unwrap_or(0.0);
     let peak_power_w = drive_power_w(motor_torque_nm, omega)?;
     Ok(DriveDemand {
@@ -46,7 +56,7 @@ pub fn drive_demand(
         motor_torque_nm,
         angular_speed_rad_s: omega,
         peak_power_w,
-        work_per_deployment_j: peak_power_w * time,
+        work_per_deployment,
     })
 }
 

@@ -74,7 +74,7 @@ mod check;
 pub use distribution::{
     attachment_loads, distribute_to_stations, station_attachment_loads, AttachmentLoads, StationLoad,
 };
-pub use drive::{deployment_work_j, drive_demand, drive_power_w, DriveDemand};
+pub use drive::{deployment_work_j, drive_demand, drive_power_w, DeploymentWork, DriveDemand};
 pub use error::{Error, Result};
 pub use loads::{
     element_loads, element_normal_force_n, ElementLoad, FlapElement, LoadCase, NormalForceTable, CS25_SAFETY_FACTOR,

@@ -14,9 +14,9 @@ use crate::weights::{MassBreakdown, MassItem};
 pub struct SizingTotals {
     /// Mass of rods and torque tubes, kg (screw jacks, gearboxes, bearings not modelled).
     pub mass_kg: f64,
-    /// Peak drive power, W.
+    /// Peak drive power, W (with the safety factor, see [`DriveDemand::peak_power_w`]).
     pub peak_power_w: f64,
-    /// Work per deployment, J.
+    /// Work per deployment of the most demanding load case, J (no safety factor).
     pub work_per_deployment_j: f64,
 }
 
@@ -72,8 +72,10 @@ impl SizingReport {
             .collect();
         let totals = SizingTotals {
             mass_kg: masses.total_kg,
-            peak_power_w: drive.map_or(0.0, |d| d.peak_power_w),
-            work_per_deployment_j: drive.map_or(0.0, |d| d.work_per_deployment_j),
+            peak_power_w: drive.as_ref().map_or(0.0, |d| d.peak_power_w),
+            work_per_deployment_j: drive.as_ref().map_or(0.0, |d| {
+                d.work_per_deployment.iter().map(|w| w.work_j).fold(0.0, f64::max)
+            }),
         };
         Self {
             rods,

@@ -17,9 +17,11 @@ pub struct ScrewJackInput {
     pub name: String,
     /// Largest raising (deploying) torque over the deployment, N m.
     pub max_raise_torque_nm: f64,
-    /// Lowering (retracting) torque, N m, eq 3.6.10 sign: positive = self-locking. Pass
-    /// the smallest value over the deployment to check self-locking everywhere.
+    /// Largest lowering (retracting) torque over the deployment, N m, eq 3.6.10 sign:
+    /// positive = self-locking.
     pub max_lower_torque_nm: f64,
+    /// Smallest lowering torque over the deployment, N m: decides self-locking.
+    pub min_lower_torque_nm: f64,
 }
 
 /// Result of [`size_screw_jack`].
@@ -31,13 +33,16 @@ pub struct ScrewJackSizing {
     pub name: String,
     /// Largest raising torque, N m.
     pub max_raise_torque_nm: f64,
-    /// Lowering torque, N m (eq 3.6.10 sign).
+    /// Largest lowering torque over the deployment, N m (eq 3.6.10 sign).
     pub max_lower_torque_nm: f64,
+    /// Smallest lowering torque over the deployment, N m.
+    pub min_lower_torque_nm: f64,
     /// Safety factor applied.
     pub safety_factor: f64,
     /// Motor torque requirement = safety factor x max(|T_R|, |T_L|), N m.
     pub motor_torque_nm: f64,
-    /// True when the lowering torque is positive (the load cannot back-drive the screw).
+    /// True when the smallest lowering torque is positive (the load cannot back-drive the
+    /// screw anywhere in the deployment).
     pub self_locking: bool,
     /// Warnings about this jack (also collected by the report).
     #[serde(skip)]
@@ -68,14 +73,20 @@ pub fn motor_torque_nm(max_raise_torque_nm: f64, max_lower_torque_nm: f64, safet
 /// # Errors
 /// As [`motor_torque_nm`].
 pub fn size_screw_jack(input: &ScrewJackInput, safety_factor: f64) -> Result<ScrewJackSizing> {
-    let motor = motor_torque_nm(input.max_raise_torque_nm, input.max_lower_torque_nm, safety_factor)?;
-    let self_locking = input.max_lower_torque_nm > 0.0;
+    finite("min_lower_torque_nm", input.min_lower_torque_nm)?;
+    let largest_lower = if input.min_lower_torque_nm.abs() > input.max_lower_torque_nm.abs() {
+        input.min_lower_torque_nm
+    } else {
+        input.max_lower_torque_nm
+    };
+    let motor = motor_torque_nm(input.max_raise_torque_nm, largest_lower, safety_factor)?;
+    let self_locking = input.min_lower_torque_nm > 0.0;
     let mut warnings = Vec::new();
     if !self_locking {
         warnings.push(SizingWarning::NotSelfLocking {
             station: input.station.clone(),
             screw_jack: input.name.clone(),
-            lower_torque_nm: input.max_lower_torque_nm,
+            lower_torque_nm: input.min_lower_torque_nm,
         });
     }
     Ok(ScrewJackSizing {
@@ -83,6 +94,7 @@ pub fn size_screw_jack(input: &ScrewJackInput, safety_factor: f64) -> Result<Scr
         name: input.name.clone(),
         max_raise_torque_nm: input.max_raise_torque_nm,
         max_lower_torque_nm: input.max_lower_torque_nm,
+        min_lower_torque_nm: input.min_lower_torque_nm,
         safety_factor,
         motor_torque_nm: motor,
         self_locking,

@@ -39,6 +39,8 @@ pub struct TorqueTubeSizing {
     pub radius_m: f64,
     /// Inner radius, m (0 for solid).
     pub inner_radius_m: f64,
+    /// Length L of this segment (from its station to the next one towards the motor), m.
+    pub length_m: f64,
     /// Mass = A L rho, kg.
     pub mass_kg: f64,
     /// Warnings about this tube (also collected by the report).
@@ -130,6 +132,7 @@ pub fn size_torque_tubes(
                 torque_carried_nm,
                 radius_m,
                 inner_radius_m: shape.inner_radius_m(radius_m),
+                length_m,
                 mass_kg: shape.area_m2(radius_m) * length_m * material.density_kg_m3,
                 warnings,
             })

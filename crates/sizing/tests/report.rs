@@ -2,8 +2,8 @@
 
 use approx::assert_relative_eq;
 use flapwright_sizing::{
-    drive_demand, size_rod, size_screw_jack, size_torque_tubes, Material, RodInput, ScrewJackInput, SectionShape,
-    SizingReport, TorqueTubeInput,
+    drive_demand, size_rod, size_screw_jack, size_torque_tubes, DeploymentWork, Material, RodInput, ScrewJackInput,
+    SectionShape, SizingReport, TorqueTubeInput,
 };
 
 #[test]
@@ -22,6 +22,7 @@ fn report_totals_and_json() {
             name: "jack".into(),
             max_raise_torque_nm: 4.7,
             max_lower_torque_nm: 0.53,
+            min_lower_torque_nm: 0.53,
         },
         1.5,
     )
@@ -36,7 +37,16 @@ fn report_totals_and_json() {
         })
         .collect();
     let tubes = size_torque_tubes(&tubes, 0.95, SectionShape::Solid, &steel).unwrap();
-    let drive = drive_demand(&[50.0, 50.0], 0.95, 20.0, 15.0).unwrap();
+    let drive = drive_demand(
+        &[50.0, 50.0],
+        0.95,
+        20.0,
+        vec![DeploymentWork {
+            load_case: "cruise".into(),
+            work_j: 120.0,
+        }],
+    )
+    .unwrap();
     let expected_mass: f64 = rods.iter().map(|r| r.mass_kg).sum::<f64>() + tubes.iter().map(|t| t.mass_kg).sum::<f64>();
     let report = SizingReport::assemble(rods, jacks, tubes, Some(drive));
     assert_relative_eq!(report.totals.mass_kg, expected_mass, max_relative = 1e-12);
@@ -49,6 +59,6 @@ fn report_totals_and_json() {
     assert!(json["screw_jacks"][0]["motor_torque_nm"].is_f64());
     assert!(json["torque_tubes"][1]["torque_carried_nm"].is_f64());
     assert_eq!(json["warnings"][0]["kind"], "rod_exceeds_envelope");
-    assert!(json["totals"]["work_per_deployment_j"].is_f64());
+    assert_eq!(json["totals"]["work_per_deployment_j"], 120.0);
     assert!(json["rods"][0].get("warnings").is_none());
 }

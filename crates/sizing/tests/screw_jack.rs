@@ -57,6 +57,7 @@ fn section_5_2_motor_torque() {
             name: "screw jack".into(),
             max_raise_torque_nm: recomputed,
             max_lower_torque_nm: thesis_thread().torques(1622.9).lower_torque_nm,
+            min_lower_torque_nm: thesis_thread().torques(1622.9).lower_torque_nm,
         },
         safety_factor,
     )
@@ -88,6 +89,7 @@ fn back_drivable_screw_warns() {
         name: "jack".into(),
         max_raise_torque_nm: thread.torques(1000.0).raise_torque_nm,
         max_lower_torque_nm: lower,
+        min_lower_torque_nm: lower,
     };
     let sizing = size_screw_jack(&input, 1.5).unwrap();
     assert!(!sizing.self_locking);

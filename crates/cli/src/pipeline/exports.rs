@@ -299,13 +299,14 @@ pub fn write_svgs(
                 (Some(p), Some(flap_name)) => flap_behind_wing(p, flap_name)?,
                 _ => None,
             };
-            let svg = render_plots_svg(
-                &format!("{}: station {}", scene.name, station.name),
-                &station_plots(cases, flap_behind_wing.as_ref(), interference, &station.name),
-            )
-            .with_context(|| format!("plotting station {}", station.name))?;
-            std::fs::write(out.file(&name), svg).with_context(|| format!("writing {name}"))?;
-            files.push(name);
+            let plots = station_plots(cases, flap_behind_wing.as_ref(), interference, &station.name);
+            // A station whose every sweep stopped at once has nothing to plot.
+            if !plots.is_empty() {
+                let svg = render_plots_svg(&format!("{}: station {}", scene.name, station.name), &plots)
+                    .with_context(|| format!("plotting station {}", station.name))?;
+                std::fs::write(out.file(&name), svg).with_context(|| format!("writing {name}"))?;
+                files.push(name);
+            }
         }
     }
     Ok(files)

@@ -9,8 +9,10 @@ use flapwright_planes::FlapBehindWing;
 /// The plots of one station: kinematics and loads against the nut position (first load
 /// case, or every case where they differ), gap and overlap when the station has a flap
 /// section, and the clearance of its closest pairs when the interference check ran.
+/// Load cases whose sweep stopped before its first sample have nothing to draw and are
+/// left out; so are plots left with nothing (the report says why the sweep stopped).
 pub fn station_plots(
-    cases: &[Sweep],
+    all_cases: &[Sweep],
     flap_behind_wing: Option<&FlapBehindWing>,
     interference: Option<&InterferenceReport>,
     station: &str,
@@ -19,6 +21,8 @@ pub fn station_plots(
         name,
         points: case.samples.iter().map(|s| (s.input_m * 1e3, y(s))).collect(),
     };
+    let cases: Vec<Sweep> = all_cases.iter().filter(|c| !c.samples.is_empty()).cloned().collect();
+    let cases = cases.as_slice();
     let x_label = "nut position s34 (mm)".to_string();
     let first = &cases[..cases.len().min(1)];
     let plot =
@@ -72,6 +76,7 @@ pub fn station_plots(
         });
     }
     plots.extend(interference.and_then(|report| clearance_plot(report, station)));
+    plots.retain(|plot| !plot.series.is_empty() && plot.series.iter().all(|s| !s.points.is_empty()));
     plots
 }
 

@@ -2,11 +2,12 @@
 //! Euler buckling), the torque-tube line between the stations, drive power and masses.
 
 use anyhow::{Context, Result};
+use flapwright_mechanism::SweepSample;
 use flapwright_sizing::{
-    axial_envelope_n, drive_demand, size_rod, size_screw_jack, size_torque_tubes, Material, RodInput, ScrewJackInput,
-    SectionShape, SizingReport, TorqueTubeInput,
+    axial_envelope_n, deployment_work_j, drive_demand, size_rod, size_screw_jack, size_torque_tubes, DeploymentWork,
+    Material, RodInput, ScrewJackInput, ScrewJackSizing, SectionShape, SizingReport, TorqueTubeInput,
 };
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
 
 use crate::pipeline::mechanisms::{MechanismReport, StationMechanism};
 use crate::scene::Scene;
@@ -35,16 +36,21 @@ fn material(scene: &Scene, name: &str) -> Result<Material> {
     Ok(material)
 }
 
-/// Sizes everything the mechanism loads drive. `station_origins_ac` (A0 of each station,
-/// aircraft frame; empty without a wing) gives the torque-tube lengths: the line runs from
-/// the outermost station inboard to the motor at the flap's inboard end.
+/// Sizes everything the mechanism loads drive. `reports` holds one entry per station
+/// (None where no sweep ran); a station whose sweeps stopped before any sample is left
+/// out with a warning naming it, never shifting the others. `station_planes_ac` (each
+/// station's origin A0 and plane normal, aircraft frame; empty without a wing) and the
+/// torque tube's axis `tube_path_ac` give the torque-tube lengths: measured along the
+/// tube, between the points where the station planes cross it (where each station's
+/// gearbox takes its drive), from the outermost station inboard to the motor at the
+/// tube's first point.
 pub fn size_all(
     scene: &Scene,
     mechanisms: &[StationMechanism],
-    reports: &[MechanismReport],
-    station_origins_ac: &[Point3<f64>],
-    motor_position_ac: Option<Point3<f64>>,
-) -> Result<SizingReport> {
+    reports: &[Option<MechanismReport>],
+    station_planes_ac: &[(Point3<f64>, Vector3<f64>)],
+    tube_path_ac: &[Point3<f64>],
+) -> Result<(SizingReport, Vec<String>)> {
     let safety_factor = scene
         .loads
         .safety_factor
@@ -52,29 +58,44 @@ pub fn size_all(
     let screw_material = material(scene, &scene.sizing.screw_material)?;
     let tube_material = material(scene, &scene.sizing.torque_tube_material)?;
     let mut rods = Vec::new();
-    let mut jacks = Vec::new();
+    let mut jacks: Vec<Option<ScrewJackSizing>> = Vec::new();
+    let mut notes = Vec::new();
     for (mechanism, report) in mechanisms.iter().zip(reports) {
-        let samples = report.load_cases.iter().flat_map(|case| case.samples.iter());
-        let forces: Vec<f64> = samples.clone().map(|s| s.actuator_force_n).collect();
-        if forces.is_empty() {
+        let samples: Vec<&SweepSample> = report
+            .iter()
+            .flat_map(|r| r.load_cases.iter())
+            .flat_map(|case| case.samples.iter())
+            .collect();
+        if samples.is_empty() {
+            notes.push(format!(
+                "station {}: not sized: no deployment sample could be computed (see its load cases' `stopped`)",
+                mechanism.station
+            ));
+            jacks.push(None);
             continue;
         }
+        let forces: Vec<f64> = samples.iter().map(|s| s.actuator_force_n).collect();
         let max_raise = samples
-            .clone()
+            .iter()
             .map(|s| s.raise_torque_nm)
             .fold(f64::NEG_INFINITY, f64::max);
+        let max_lower = samples
+            .iter()
+            .map(|s| s.lower_torque_nm)
+            .fold(f64::NEG_INFINITY, f64::max);
         // The smallest lowering torque decides self-locking over the whole deployment.
-        let min_lower = samples.map(|s| s.lower_torque_nm).fold(f64::INFINITY, f64::min);
+        let min_lower = samples.iter().map(|s| s.lower_torque_nm).fold(f64::INFINITY, f64::min);
         let jack = size_screw_jack(
             &ScrewJackInput {
                 station: mechanism.station.clone(),
                 name: "screw-jack".into(),
                 max_raise_torque_nm: max_raise,
-                max_lower_torque_nm: min_lower,
+                max_lower_torque_nm: max_lower,
+                min_lower_torque_nm: min_lower,
             },
             safety_factor,
         )?;
-        jacks.push(jack);
+        jacks.push(Some(jack));
         // F_input > 0 pushes the nut away from B0: the screw is in compression.
         let axial: Vec<f64> = forces.iter().map(|f| -f * safety_factor).collect();
         let (tension, compression) = axial_envelope_n(&axial)?;
@@ -92,20 +113,27 @@ pub fn size_all(
     }
     let mut tubes = Vec::new();
     let mut drive = None;
-    if !station_origins_ac.is_empty() && !jacks.is_empty() {
-        // Far end first: order the stations outboard to inboard (aircraft y).
-        let mut order: Vec<usize> = (0..station_origins_ac.len()).collect();
-        order.sort_by(|&a, &b| station_origins_ac[b].y.total_cmp(&station_origins_ac[a].y));
-        let motor = motor_position_ac.unwrap_or(station_origins_ac[*order.last().unwrap_or(&0)]);
+    // Stations on the drive line: placed and sized, at their arc length along the tube.
+    let on_line: Vec<(usize, f64)> = station_planes_ac
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| jacks.get(*i).is_some_and(Option::is_some))
+        .map(|(i, (origin, normal))| (i, arc_length_at_plane(tube_path_ac, origin, normal)))
+        .collect();
+    if tube_path_ac.len() >= 2 && !on_line.is_empty() {
+        // Far end first: outboard to inboard along the tube; the motor sits at its start.
+        let mut order = on_line;
+        order.sort_by(|a, b| b.1.total_cmp(&a.1));
+        let motor_torque = |i: usize| jacks[i].as_ref().map_or(0.0, |j| j.motor_torque_nm);
         let inputs: Vec<TorqueTubeInput> = order
             .iter()
             .enumerate()
-            .map(|(k, &i)| {
-                let next = order.get(k + 1).map_or(motor, |&j| station_origins_ac[j]);
+            .map(|(k, &(i, s))| {
+                let next = order.get(k + 1).map_or(0.0, |&(_, s_next)| s_next);
                 TorqueTubeInput {
                     station: mechanisms[i].station.clone(),
-                    drive_torque_nm: jacks[i].motor_torque_nm,
-                    length_m: (station_origins_ac[i] - next).norm().max(1e-3),
+                    drive_torque_nm: motor_torque(i),
+                    length_m: (s - next).max(1e-3),
                     max_outer_radius_m: None,
                 }
             })
@@ -117,16 +145,120 @@ pub fn size_all(
         };
         tubes = size_torque_tubes(&inputs, scene.sizing.gearbox_efficiency, shape, &tube_material)?;
         // All screws turn together: drive speed = nut speed / lead turns per second.
-        let spec = mechanisms[0].track.spec();
+        let spec = mechanisms[order[0].0].track.spec();
         let angular_speed = 2.0 * std::f64::consts::PI * spec.nominal_input_speed_mps / spec.screw.lead_m;
-        let deployment_time = mechanisms[0].track.synthesis().stroke_m / spec.nominal_input_speed_mps;
-        let ordered_torques: Vec<f64> = order.iter().map(|&i| jacks[i].motor_torque_nm).collect();
+        let ordered_torques: Vec<f64> = order.iter().map(|&(i, _)| motor_torque(i)).collect();
+        let work = deployment_work(scene, mechanisms, reports, &order)?;
         drive = Some(drive_demand(
             &ordered_torques,
             scene.sizing.gearbox_efficiency,
             angular_speed,
-            deployment_time,
+            work,
         )?);
     }
-    Ok(SizingReport::assemble(rods, jacks, tubes, drive))
+    let jacks = jacks.into_iter().flatten().collect();
+    Ok((SizingReport::assemble(rods, jacks, tubes, drive), notes))
+}
+
+/// Work per deployment for each load case: the raising torque of every station on the
+/// drive line integrated over its screw's rotation (2 pi per lead of nut travel), divided
+/// by the gearbox efficiency. A load case counts only where every station's sweep reached
+/// the end (a partial integral would understate it).
+fn deployment_work(
+    scene: &Scene,
+    mechanisms: &[StationMechanism],
+    reports: &[Option<MechanismReport>],
+    order: &[(usize, f64)],
+) -> Result<Vec<DeploymentWork>> {
+    let mut works = Vec::new();
+    for case in &scene.loads.cases {
+        let mut total = 0.0;
+        let mut complete = true;
+        for &(i, _) in order {
+            let sweep = reports[i]
+                .as_ref()
+                .and_then(|r| r.load_cases.iter().find(|s| s.load_case == case.name));
+            let Some(sweep) = sweep.filter(|s| s.stopped.is_none() && s.samples.len() >= 2) else {
+                complete = false;
+                break;
+            };
+            let lead = mechanisms[i].track.spec().screw.lead_m;
+            let angles: Vec<f64> = sweep
+                .samples
+                .iter()
+                .map(|s| 2.0 * std::f64::consts::PI * (s.input_m - sweep.samples[0].input_m) / lead)
+                .collect();
+            let torques: Vec<f64> = sweep.samples.iter().map(|s| s.raise_torque_nm).collect();
+            total += deployment_work_j(&angles, &torques)?;
+        }
+        if complete {
+            works.push(DeploymentWork {
+                load_case: case.name.clone(),
+                work_j: total / scene.sizing.gearbox_efficiency,
+            });
+        }
+    }
+    Ok(works)
+}
+
+/// Arc length, from the first point, where the polyline crosses the plane through
+/// `origin` with `normal` (the crossing nearest `origin` when there are several); where
+/// the polyline misses the plane, the arc length of its point nearest `origin`.
+fn arc_length_at_plane(path: &[Point3<f64>], origin: &Point3<f64>, normal: &Vector3<f64>) -> f64 {
+    let mut crossing: Option<(f64, f64)> = None;
+    let mut nearest = (f64::INFINITY, 0.0);
+    let mut walked = 0.0;
+    for pair in path.windows(2) {
+        let segment = pair[1] - pair[0];
+        let length = segment.norm();
+        if length > 0.0 {
+            let t_nearest = ((origin - pair[0]).dot(&segment) / (length * length)).clamp(0.0, 1.0);
+            let distance = (pair[0] + segment * t_nearest - origin).norm();
+            if distance < nearest.0 {
+                nearest = (distance, walked + t_nearest * length);
+            }
+            let along = normal.dot(&segment);
+            if along.abs() > 1e-12 * length * normal.norm() {
+                let t = normal.dot(&(origin - pair[0])) / along;
+                if (0.0..=1.0).contains(&t) {
+                    let distance = (pair[0] + segment * t - origin).norm();
+                    if crossing.is_none_or(|(d, _)| distance < d) {
+                        crossing = Some((distance, walked + t * length));
+                    }
+                }
+            }
+        }
+        walked += length;
+    }
+    crossing.map_or(nearest.1, |(_, s)| s)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stations_are_placed_by_arc_length_along_the_tube() {
+        // An L-shaped tube: 2 m along y, then 1 m along x.
+        let path = [
+            Point3::new(0.0, 0.0, 0.0),
+            Point3::new(0.0, 2.0, 0.0),
+            Point3::new(1.0, 2.0, 0.0),
+        ];
+        let y = Vector3::y();
+        // A station plane y = 0.5 with its origin 0.4 m off the tube: arc length 0.5 (the
+        // old measure, to the origin, gave 0.64 m).
+        let s = arc_length_at_plane(&path, &Point3::new(0.4, 0.5, 0.0), &y);
+        assert!((s - 0.5).abs() < 1e-12, "{s}");
+        // A plane tilted 45 deg about z through (0.3, 0.5): crosses the first leg at y = 0.2.
+        let tilted = Vector3::new(1.0, 1.0, 0.0);
+        let s = arc_length_at_plane(&path, &Point3::new(0.3, 0.5, 0.0), &tilted);
+        assert!((s - 0.8).abs() < 1e-12, "{s}");
+        // The plane x = 0.3 crosses the second leg 0.3 m along it.
+        let s = arc_length_at_plane(&path, &Point3::new(0.3, 2.5, 0.0), &Vector3::x());
+        assert!((s - 2.3).abs() < 1e-12, "{s}");
+        // A plane the tube never reaches: the nearest point (clamped to the end).
+        let s = arc_length_at_plane(&path, &Point3::new(0.0, -1.0, 0.0), &y);
+        assert!(s.abs() < 1e-12, "{s}");
+    }
 }

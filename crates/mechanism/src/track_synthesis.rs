@@ -87,6 +87,28 @@ pub enum SynthesisWarning {
     },
 }
 
+impl std::fmt::Display for SynthesisWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::ScrewNotSelfLocking {
+                lead_angle_rad,
+                friction_coefficient,
+            } => write!(
+                f,
+                "the screw thread is not self-locking: lead angle {:.2} deg >= friction angle {:.2} deg \
+                 (f = {friction_coefficient}); a load can back-drive it, so a brake must hold the flap",
+                lead_angle_rad.to_degrees(),
+                friction_coefficient.atan().to_degrees()
+            ),
+            Self::ThesisPinAngleFormulaMirrored { pin } => write!(
+                f,
+                "pin {pin} is not clockwise of the flap centre of mass D: the thesis angle formula would \
+                 mirror it, so its stowed angle is taken from the slot angles directly"
+            ),
+        }
+    }
+}
+
 /// A synthesised circular-arc track with screw jack, ready to pose and load.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CircularArcTrack {

@@ -19,6 +19,7 @@ fn main() -> Result<(), flapwright_sizing::Error> {
         max_raise_torque_nm: thread.torques(input_force_n).raise_torque_nm,
         max_lower_torque_nm: thread.torques(input_force_n).lower_torque_nm,
         min_lower_torque_nm: thread.torques(input_force_n).lower_torque_nm,
+        thread_self_locking: true,
     };
     let sizing = size_screw_jack(&jack, CS25_SAFETY_FACTOR)?;
     println!(

@@ -22,6 +22,9 @@ pub struct ScrewJackInput {
     pub max_lower_torque_nm: f64,
     /// Smallest lowering torque over the deployment, N m: decides self-locking.
     pub min_lower_torque_nm: f64,
+    /// Whether the thread itself is self-locking (friction angle above lead angle, f >
+    /// tan lambda).
+    pub thread_self_locking: bool,
 }
 
 /// Result of [`size_screw_jack`].
@@ -41,8 +44,8 @@ pub struct ScrewJackSizing {
     pub safety_factor: f64,
     /// Motor torque requirement = safety factor x max(|T_R|, |T_L|), N m.
     pub motor_torque_nm: f64,
-    /// True when the smallest lowering torque is positive (the load cannot back-drive the
-    /// screw anywhere in the deployment).
+    /// True when the thread is self-locking and the smallest lowering torque is positive:
+    /// no load can back-drive the screw, and none does anywhere in the deployment.
     pub self_locking: bool,
     /// Warnings about this jack (also collected by the report).
     #[serde(skip)]
@@ -80,7 +83,7 @@ pub fn size_screw_jack(input: &ScrewJackInput, safety_factor: f64) -> Result<Scr
         input.max_lower_torque_nm
     };
     let motor = motor_torque_nm(input.max_raise_torque_nm, largest_lower, safety_factor)?;
-    let self_locking = input.min_lower_torque_nm > 0.0;
+    let self_locking = input.thread_self_locking && input.min_lower_torque_nm > 0.0;
     let mut warnings = Vec::new();
     if !self_locking {
         warnings.push(SizingWarning::NotSelfLocking {

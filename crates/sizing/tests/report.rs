@@ -23,6 +23,7 @@ fn report_totals_and_json() {
             max_raise_torque_nm: 4.7,
             max_lower_torque_nm: 0.53,
             min_lower_torque_nm: 0.53,
+            thread_self_locking: true,
         },
         1.5,
     )

@@ -58,6 +58,7 @@ fn section_5_2_motor_torque() {
             max_raise_torque_nm: recomputed,
             max_lower_torque_nm: thesis_thread().torques(1622.9).lower_torque_nm,
             min_lower_torque_nm: thesis_thread().torques(1622.9).lower_torque_nm,
+            thread_self_locking: true,
         },
         safety_factor,
     )
@@ -90,6 +91,7 @@ fn back_drivable_screw_warns() {
         max_raise_torque_nm: thread.torques(1000.0).raise_torque_nm,
         max_lower_torque_nm: lower,
         min_lower_torque_nm: lower,
+        thread_self_locking: thread.is_self_locking(),
     };
     let sizing = size_screw_jack(&input, 1.5).unwrap();
     assert!(!sizing.self_locking);

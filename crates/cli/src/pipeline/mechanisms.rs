@@ -85,10 +85,13 @@ pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationMechanism>> {
     for (i, station) in scene.station.iter().enumerate() {
         let MechanismScene::CircularArcTrack(m) = &station.mechanism;
         match synthesise(m) {
-            Ok(track) => built.push(StationMechanism {
-                station: station.name.clone(),
-                track,
-            }),
+            Ok(track) => {
+                problems.extend(degeneracies(&track, &format!("station[{i}].mechanism")));
+                built.push(StationMechanism {
+                    station: station.name.clone(),
+                    track,
+                })
+            }
             Err(error) => problems.push(Problem {
                 path: format!("station[{i}].mechanism"),
                 message: format!("cannot be synthesised: {error}"),
@@ -100,6 +103,79 @@ pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationMechanism>> {
     } else {
         Err(SceneError::Invalid(problems).into())
     }
+}
+
+/// Largest Jacobian condition number accepted at the stroke ends: beyond it a
+/// millimetre of input error moves the flap by kilometres, and the forces are noise (the
+/// thesis mechanism stays below 20).
+pub const MAX_CONDITION_NUMBER: f64 = 1e8;
+/// Smallest distance to a toggle position at the stroke ends, deg.
+pub const MIN_DISTANCE_TO_TOGGLE_DEG: f64 = 1.0;
+/// Shortest screw length between its pivot B0 and the nut at stowed, m: below it the nut
+/// starts on the pivot (a zero-length link).
+pub const MIN_NUT_DISTANCE_M: f64 = 1e-3;
+
+/// Dimensions that synthesise but give a degenerate mechanism: a nut starting on the
+/// screw pivot, a singular or near-toggle position at a stroke end, a sweep that cannot
+/// even start. Each names the keys that decide it, with the numbers in mm and degrees.
+fn degeneracies(track: &CircularArcTrack, path: &str) -> Vec<Problem> {
+    let mut problems = Vec::new();
+    let synthesis = track.synthesis();
+    let geometry_keys = "base_distance_m, crank_length_m and rotation_range_deg";
+    if synthesis.stroke_start_m < MIN_NUT_DISTANCE_M {
+        problems.push(Problem::new(
+            path,
+            format!(
+                "the nut starts {:.3} mm from the screw pivot B0 (s34,i, at least {} mm): a zero-length screw link; change {geometry_keys}",
+                synthesis.stroke_start_m * 1e3,
+                MIN_NUT_DISTANCE_M * 1e3
+            ),
+        ));
+        return problems;
+    }
+    let unloaded = LoadCase {
+        name: "unloaded".into(),
+        external_moment: ExternalMoment::Constant(0.0),
+        include_inertia: false,
+    };
+    let probe = match track.sweep(2, &unloaded) {
+        Ok(probe) => probe,
+        Err(error) => {
+            problems.push(Problem::new(path, format!("cannot be posed at its stroke ends: {error}")));
+            return problems;
+        }
+    };
+    if let Some(stop) = &probe.stopped {
+        problems.push(Problem::new(
+            path,
+            format!(
+                "cannot be posed at s34 = {:.3} mm: {}; change {geometry_keys} or the slot keys",
+                stop.input_m * 1e3,
+                stop.reason
+            ),
+        ));
+    }
+    for (end, sample) in ["stowed", "deployed"].iter().zip(&probe.samples) {
+        if !(sample.jacobian_condition_number <= MAX_CONDITION_NUMBER) {
+            problems.push(Problem::new(
+                path,
+                format!(
+                    "singular at the {end} end (s34 = {:.3} mm): Jacobian condition number {:.3e} above {MAX_CONDITION_NUMBER:e}; change {geometry_keys}",
+                    sample.input_m * 1e3,
+                    sample.jacobian_condition_number
+                ),
+            ));
+        } else if !(sample.distance_to_toggle_deg >= MIN_DISTANCE_TO_TOGGLE_DEG) {
+            problems.push(Problem::new(
+                path,
+                format!(
+                    "{:.3} deg from a toggle position at the {end} end (at least {MIN_DISTANCE_TO_TOGGLE_DEG} deg); change {geometry_keys}",
+                    sample.distance_to_toggle_deg
+                ),
+            ));
+        }
+    }
+    problems
 }
 
 /// The scene's load cases in the mechanism crate's terms.
@@ -136,7 +212,7 @@ pub fn sweep_station(
     let cases = if cases.is_empty() { &weight_only[..] } else { cases };
     let track = &mechanism.track;
     for warning in &track.synthesis().warnings {
-        warnings.push(format!("station {}: {warning:?}", mechanism.station));
+        warnings.push(format!("station {}: {warning}", mechanism.station));
     }
     let mut sweeps = Vec::with_capacity(cases.len());
     for case in cases {

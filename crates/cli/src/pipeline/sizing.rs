@@ -92,6 +92,7 @@ pub fn size_all(
                 max_raise_torque_nm: max_raise,
                 max_lower_torque_nm: max_lower,
                 min_lower_torque_nm: min_lower,
+                thread_self_locking: mechanism.track.spec().screw.is_self_locking(),
             },
             safety_factor,
         )?;

@@ -211,7 +211,7 @@ fn mechanism_that_cannot_be_synthesised() {
     // a1 = 0.1 m <= a2 cos(beta3 / 2): the collinearity rule of thesis step 8 has no solution.
     assert_rejected(
         &default_with("base_distance_m = 0.275", "base_distance_m = 0.100"),
-        &["station[0].mechanism", "collinearity"],
+        &["station[0].mechanism", "no screw line through B0", "base distance 100.000 mm"],
     );
 }
 
@@ -259,4 +259,40 @@ fn landing_setting_beyond_the_mechanism_range() {
         &default_with("landing_deg = 35.0", "landing_deg = 40.0"),
         &["flap[0].settings.landing_deg = 40", "rotation_range_deg = 35"],
     );
+}
+
+#[test]
+fn nut_starting_on_the_screw_pivot() {
+    // a1 = a2: the collinearity rule puts the stowed nut on B0 (s34,i = 0; the issue's
+    // reproducer ran with a Jacobian condition number of 4e15).
+    assert_rejected(
+        &default_with("base_distance_m = 0.275", "base_distance_m = 0.240"),
+        &[
+            "station[0].mechanism",
+            "the nut starts 0.000 mm from the screw pivot B0",
+            "base_distance_m",
+        ],
+    );
+    // Slightly shorter: the nut would start behind the pivot.
+    assert_rejected(
+        &default_with("base_distance_m = 0.275", "base_distance_m = 0.231"),
+        &["station[0].mechanism", "the nut starts -41.034 mm from the screw pivot B0"],
+    );
+}
+
+#[test]
+fn back_drivable_screw_is_a_readable_warning_and_not_self_locking() {
+    let dir = tempfile::tempdir().unwrap();
+    // lead 50 mm on a 16 mm mean radius: lead angle 26.4 deg above the friction angle 5.7 deg.
+    let scene = default_with("screw_lead_m = 0.008", "screw_lead_m = 0.050");
+    std::fs::write(dir.path().join("scene.toml"), scene).unwrap();
+    let output = crate::run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(0), "{stderr}");
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
+    let warnings = report["warnings"].to_string();
+    assert!(warnings.contains("not self-locking: lead angle 26.44 deg"), "{warnings}");
+    assert!(!warnings.contains("ScrewNotSelfLocking"), "no debug text: {warnings}");
+    assert_eq!(report["sizing"]["screw_jacks"][0]["self_locking"], false);
 }

@@ -12,7 +12,7 @@ pub type Result<T, E = Error> = std::result::Result<T, E>;
 #[derive(Debug, Clone, PartialEq, Serialize, thiserror::Error)]
 pub enum Error {
     /// A dimension is not finite or not strictly positive.
-    #[error("dimension `{name}` = {value} must be finite and > 0")]
+    #[error("dimension `{name}` = {value:e} must be finite and > 0")]
     InvalidDimension {
         /// Field name of the dimension.
         name: &'static str,
@@ -20,7 +20,7 @@ pub enum Error {
         value: f64,
     },
     /// An angle, ratio or other parameter lies outside its admissible range.
-    #[error("parameter `{name}` = {value} is outside [{min}, {max}]")]
+    #[error("parameter `{name}` = {value:e} is outside [{min:e}, {max:e}]")]
     ParameterOutOfRange {
         /// Field name of the parameter.
         name: &'static str,
@@ -32,7 +32,7 @@ pub enum Error {
         max: f64,
     },
     /// Thesis section 5.3 red cell 2: the inner slot radius c1 must be smaller than the outer b1.
-    #[error("inner slot radius {inner_radius_m} m is not smaller than outer slot radius {outer_radius_m} m")]
+    #[error("inner slot radius {:.3} mm is not smaller than outer slot radius {:.3} mm", .inner_radius_m * 1e3, .outer_radius_m * 1e3)]
     SlotRadiiOrder {
         /// c1 (m).
         inner_radius_m: f64,
@@ -41,7 +41,10 @@ pub enum Error {
     },
     /// Thesis step 8: no screw line through B0 can hold both end positions of A, because
     /// a1 <= a2 cos(β3/2) (the base pivot B0 lies inside the chord A_i A_f's foot circle).
-    #[error("collinearity impossible: base distance {base_distance_m} m <= crank {crank_length_m} m * cos(half rotation) = {chord_distance_m} m")]
+    #[error(
+        "no screw line through B0 holds both end positions: base distance {:.3} mm <= crank {:.3} mm x cos(half the rotation range) = {:.3} mm",
+        .base_distance_m * 1e3, .crank_length_m * 1e3, .chord_distance_m * 1e3
+    )]
     CollinearityImpossible {
         /// a1 (m).
         base_distance_m: f64,
@@ -51,16 +54,31 @@ pub enum Error {
         chord_distance_m: f64,
     },
     /// Thesis section 5.3 red cell 3: the screw is shorter than the largest slider travel s34,f.
-    #[error("screw length {screw_length_m} m is shorter than the required {required_m} m")]
+    #[error("screw length {:.3} mm is shorter than the largest nut travel s34,f = {:.3} mm", .screw_length_m * 1e3, .required_m * 1e3)]
     ScrewTooShort {
         /// a3 (m).
         screw_length_m: f64,
         /// s34,f = s34,i + Δs (m).
         required_m: f64,
     },
+    /// The nut would start on (or behind) the screw pivot B0: s34,i is below the shortest
+    /// screw link that is not degenerate.
+    #[error(
+        "the nut starts {:.3} mm from the screw pivot B0 (s34,i; at least {:.3} mm): a zero-length or inverted screw link",
+        .stroke_start_m * 1e3, .minimum_m * 1e3
+    )]
+    NutOnScrewPivot {
+        /// s34,i (m).
+        stroke_start_m: f64,
+        /// The shortest accepted s34,i (m).
+        minimum_m: f64,
+    },
     /// Thesis section 5.3 red cell 1: the input would drive the pins out of their slots
     /// (s34 < s34,i or Δθ12 > β3).
-    #[error("input {input_m} m is outside the slot range [{min_input_m}, {max_input_m}] m")]
+    #[error(
+        "input {:.3} mm is outside the slot range [{:.3}, {:.3}] mm",
+        .input_m * 1e3, .min_input_m * 1e3, .max_input_m * 1e3
+    )]
     OutOfSlot {
         /// Requested input s34 (m).
         input_m: f64,
@@ -70,7 +88,10 @@ pub enum Error {
         max_input_m: f64,
     },
     /// The loop cannot close: the triangle A0 B0 A does not exist for this input.
-    #[error("cannot assemble at input {input_m} m: reachable range is [{min_input_m}, {max_input_m}] m")]
+    #[error(
+        "cannot assemble at input {:.3} mm: reachable range is [{:.3}, {:.3}] mm",
+        .input_m * 1e3, .min_input_m * 1e3, .max_input_m * 1e3
+    )]
     CannotAssemble {
         /// Requested input (m).
         input_m: f64,
@@ -82,7 +103,8 @@ pub enum Error {
     /// The mechanism is at (or within the tolerance of) a toggle (dead-centre) position:
     /// the transmission angle vanishes and the velocity Jacobian is singular.
     #[error(
-        "toggle at input {input_m} m: transmission angle {transmission_angle_rad} rad is below {tolerance_rad} rad"
+        "toggle at input {:.3} mm: transmission angle {:.3} deg is below {:.3} deg",
+        .input_m * 1e3, .transmission_angle_rad.to_degrees(), .tolerance_rad.to_degrees()
     )]
     Toggle {
         /// Input value at which the toggle was met (m).
@@ -122,7 +144,7 @@ pub enum Error {
         samples: usize,
     },
     /// A computed quantity came out non-finite (never returned silently).
-    #[error("`{quantity}` is not finite at input {input_m}")]
+    #[error("`{quantity}` is not finite at input {input_m:e}")]
     NonFinite {
         /// Which quantity.
         quantity: &'static str,

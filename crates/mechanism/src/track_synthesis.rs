@@ -14,6 +14,12 @@ use crate::track_spec::CircularArcTrackSpec;
 /// Angles closer than this (rad) are taken as equal in consistency checks.
 const ANGLE_CONSISTENCY_TOLERANCE_RAD: f64 = 1e-9;
 
+/// Shortest accepted stowed screw link s34,i as a fraction of the crank a2: below it the
+/// nut starts on the screw pivot B0, the screw direction is undefined and the Jacobian
+/// condition number runs past 1e15 (a 1 % crank keeps a 1/17 model's millimetre links
+/// and rejects the degenerate case; the thesis has s34,i = 0.33 a2).
+pub const MIN_STROKE_START_CRANK_FRACTION: f64 = 0.01;
+
 /// Everything design steps 7-10 compute from a [`CircularArcTrackSpec`] (thesis green cells).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TrackSynthesis {
@@ -141,12 +147,11 @@ impl CircularArcTrack {
         let t = ((a1 - chord_distance_m) * (a1 + chord_distance_m)).sqrt();
         let stroke_m = 2.0 * a2 * half.sin();
         let stroke_start_m = t - 0.5 * stroke_m;
-        if stroke_start_m <= 0.0 {
-            return Err(Error::ParameterOutOfRange {
-                name: "stroke_start_m",
-                value: stroke_start_m,
-                min: 0.0,
-                max: f64::INFINITY,
+        let min_stroke_start_m = MIN_STROKE_START_CRANK_FRACTION * a2;
+        if !(stroke_start_m >= min_stroke_start_m) {
+            return Err(Error::NutOnScrewPivot {
+                stroke_start_m,
+                minimum_m: min_stroke_start_m,
             });
         }
         let stroke_end_m = stroke_start_m + stroke_m;

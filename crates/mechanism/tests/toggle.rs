@@ -35,7 +35,7 @@ fn slider_crank_within_a_microradian_of_toggle_reports_it() {
     ));
     // The toggle message names the input value.
     let message = linkage.state(0.5, 0.0, 0.0).unwrap_err().to_string();
-    assert!(message.contains("0.5"), "{message}");
+    assert!(message.contains("500.000 mm"), "{message}");
 }
 
 #[test]

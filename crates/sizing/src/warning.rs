@@ -75,11 +75,15 @@ impl std::fmt::Display for SizingWarning {
         match self {
             Self::RodExceedsEnvelope { station, rod, required_outer_radius_m, allowed_outer_radius_m } => write!(
                 f,
-                "station {station}, rod {rod}: needs outer radius {required_outer_radius_m:.4e} m, station allows {allowed_outer_radius_m:.4e} m"
+                "station {station}, rod {rod}: needs outer radius {:.2} mm, station allows {:.2} mm",
+                required_outer_radius_m * 1e3,
+                allowed_outer_radius_m * 1e3
             ),
             Self::RodNotSlender { station, rod, outer_diameter_m, length_m } => write!(
                 f,
-                "station {station}, rod {rod}: needs diameter {outer_diameter_m:.4e} m for a length of {length_m:.4e} m"
+                "station {station}, rod {rod}: needs diameter {:.2} mm for a length of {:.2} mm",
+                outer_diameter_m * 1e3,
+                length_m * 1e3
             ),
             Self::IntermediateColumn { station, rod, slenderness_ratio, transition_slenderness_ratio } => write!(
                 f,
@@ -88,11 +92,13 @@ impl std::fmt::Display for SizingWarning {
             Self::UnloadedRod { station, rod } => write!(f, "station {station}, rod {rod}: carries no load"),
             Self::NotSelfLocking { station, screw_jack, lower_torque_nm } => write!(
                 f,
-                "station {station}, screw jack {screw_jack}: not self-locking (lowering torque {lower_torque_nm:.4e} N m)"
+                "station {station}, screw jack {screw_jack}: not self-locking (lowering torque {lower_torque_nm:.3} N m: the load back-drives the screw)"
             ),
             Self::TorqueTubeExceedsEnvelope { station, required_outer_radius_m, allowed_outer_radius_m } => write!(
                 f,
-                "torque tube at station {station}: needs outer radius {required_outer_radius_m:.4e} m, allowed {allowed_outer_radius_m:.4e} m"
+                "torque tube at station {station}: needs outer radius {:.2} mm, allowed {:.2} mm",
+                required_outer_radius_m * 1e3,
+                allowed_outer_radius_m * 1e3
             ),
         }
     }

@@ -91,7 +91,7 @@ fn absurd_rod_is_warned_with_numbers() {
         length_m: 0.05,
     }));
     let text = sized.warnings[0].to_string();
-    assert!(text.contains("5.6250e-2") && text.contains("2.0000e-2"), "{text}");
+    assert!(text.contains("56.25 mm") && text.contains("20.00 mm"), "{text}");
 }
 
 #[test]

@@ -94,7 +94,13 @@ pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationMechanism>> {
             }
             Err(error) => problems.push(Problem {
                 path: format!("station[{i}].mechanism"),
-                message: format!("cannot be synthesised: {error}"),
+                message: match error {
+                    flapwright_mechanism::Error::NutOnScrewPivot { .. }
+                    | flapwright_mechanism::Error::CollinearityImpossible { .. } => {
+                        format!("cannot be synthesised: {error}; change {SCREW_GEOMETRY_KEYS}")
+                    }
+                    _ => format!("cannot be synthesised: {error}"),
+                },
             }),
         }
     }
@@ -111,28 +117,15 @@ pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationMechanism>> {
 pub const MAX_CONDITION_NUMBER: f64 = 1e8;
 /// Smallest distance to a toggle position at the stroke ends, deg.
 pub const MIN_DISTANCE_TO_TOGGLE_DEG: f64 = 1.0;
-/// Shortest screw length between its pivot B0 and the nut at stowed, m: below it the nut
-/// starts on the pivot (a zero-length link).
-pub const MIN_NUT_DISTANCE_M: f64 = 1e-3;
+/// The keys that place the screw line and the nut's travel.
+const SCREW_GEOMETRY_KEYS: &str = "base_distance_m, base_angle_deg, crank_length_m and rotation_range_deg";
 
 /// Dimensions that synthesise but give a degenerate mechanism: a nut starting on the
 /// screw pivot, a singular or near-toggle position at a stroke end, a sweep that cannot
 /// even start. Each names the keys that decide it, with the numbers in mm and degrees.
 fn degeneracies(track: &CircularArcTrack, path: &str) -> Vec<Problem> {
     let mut problems = Vec::new();
-    let synthesis = track.synthesis();
-    let geometry_keys = "base_distance_m, crank_length_m and rotation_range_deg";
-    if synthesis.stroke_start_m < MIN_NUT_DISTANCE_M {
-        problems.push(Problem::new(
-            path,
-            format!(
-                "the nut starts {:.3} mm from the screw pivot B0 (s34,i, at least {} mm): a zero-length screw link; change {geometry_keys}",
-                synthesis.stroke_start_m * 1e3,
-                MIN_NUT_DISTANCE_M * 1e3
-            ),
-        ));
-        return problems;
-    }
+    let geometry_keys = SCREW_GEOMETRY_KEYS;
     let unloaded = LoadCase {
         name: "unloaded".into(),
         external_moment: ExternalMoment::Constant(0.0),

@@ -211,7 +211,11 @@ fn mechanism_that_cannot_be_synthesised() {
     // a1 = 0.1 m <= a2 cos(beta3 / 2): the collinearity rule of thesis step 8 has no solution.
     assert_rejected(
         &default_with("base_distance_m = 0.275", "base_distance_m = 0.100"),
-        &["station[0].mechanism", "no screw line through B0", "base distance 100.000 mm"],
+        &[
+            "station[0].mechanism",
+            "no screw line through B0",
+            "base distance 100.000 mm",
+        ],
     );
 }
 
@@ -276,7 +280,10 @@ fn nut_starting_on_the_screw_pivot() {
     // Slightly shorter: the nut would start behind the pivot.
     assert_rejected(
         &default_with("base_distance_m = 0.275", "base_distance_m = 0.231"),
-        &["station[0].mechanism", "the nut starts -41.034 mm from the screw pivot B0"],
+        &[
+            "station[0].mechanism",
+            "the nut starts -41.034 mm from the screw pivot B0",
+        ],
     );
 }
 
@@ -292,7 +299,10 @@ fn back_drivable_screw_is_a_readable_warning_and_not_self_locking() {
     let report: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
     let warnings = report["warnings"].to_string();
-    assert!(warnings.contains("not self-locking: lead angle 26.44 deg"), "{warnings}");
+    assert!(
+        warnings.contains("not self-locking: lead angle 26.44 deg"),
+        "{warnings}"
+    );
     assert!(!warnings.contains("ScrewNotSelfLocking"), "no debug text: {warnings}");
     assert_eq!(report["sizing"]["screw_jacks"][0]["self_locking"], false);
 }

@@ -81,6 +81,39 @@ fn no_arguments_designs_the_default_scene() {
                 assert!((value(s, percent) - expected).abs() < 1e-9, "{name}: {percent}");
             }
         }
+        // The trailing edge is the cove's upper lip: a vertex of the wing section within 3 mm
+        // of its aft-most point (the wall leans by twist and skew), with no wing point aft of
+        // it and higher (the first rule took a point 14-16 mm forward on the upper skin).
+        let points = |part: &str| -> Vec<[f64; 2]> {
+            let section = station["plane"]["sections"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find(|s| s["part_name"] == part)
+                .unwrap_or_else(|| panic!("{name}: {part} section"));
+            serde_json::from_value::<Vec<Vec<[f64; 2]>>>(section["polygons"].clone())
+                .unwrap()
+                .concat()
+        };
+        let wing = points("wing");
+        let te: [f64; 2] = serde_json::from_value(position["trailing_edge_st_m"].clone()).unwrap();
+        assert!(wing.contains(&te), "{name}: the lip is a section vertex");
+        let aft_most = wing.iter().map(|p| p[0]).fold(f64::INFINITY, f64::min);
+        assert!(
+            te[0] - aft_most < 3e-3,
+            "{name}: lip {:.1} mm ahead of the wall",
+            (te[0] - aft_most) * 1e3
+        );
+        assert!(
+            !wing.iter().any(|p| p[0] < te[0] && p[1] > te[1]),
+            "{name}: nothing aft of the lip is higher"
+        );
+        // Stowed overlap recomputed from the sections: flap's foremost x less the lip's x.
+        let nose = points("flap").iter().map(|p| p[0]).fold(f64::NEG_INFINITY, f64::max);
+        assert!(
+            (value(&settings[0], "overlap_m") - (nose - te[0])).abs() < 1e-12,
+            "{name}: stowed overlap"
+        );
         for pair in settings.windows(2) {
             assert!(value(&pair[1], "gap_m") > value(&pair[0], "gap_m"), "{name}: gap opens");
             assert!(

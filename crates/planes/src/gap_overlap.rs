@@ -13,9 +13,14 @@
 //!   edge), the chord `003` quotes its settings in (B777 study: take-off 0 %c gap, 3 %c
 //!   overlap; landing 2 %c gap, 0 %c overlap).
 //!
-//! The main-wing trailing edge is the upper end of the cove: of the wing-section points
-//! within [`TRAILING_EDGE_TIE_CHORD_FRACTION`] of the aft-most one, the highest. With
-//! Flapwright's straight cove wall this picks the upper lip, where a shroud would end.
+//! The main-wing trailing edge is the upper lip of the cove, where a shroud would end: the
+//! aft-most end of the upper skin, the upper skin being the section's edges whose outward
+//! normal points up (within [`UPPER_SKIN_MAX_NORMAL_TILT_DEG`] of the station's y axis). A
+//! cove wall faces aft and a lower skin down, so neither can take its place, and the lip is
+//! found at any airfoil resolution; a closed trailing edge without a cove is its own lip.
+//! (An earlier rule took the highest point within 1 % chord of the aft-most point: on a
+//! cambered upper skin that is the front of the band, 14-16 mm ahead of the lip in the
+//! default scene.)
 //!
 //! The flap turns rigidly about A0 by the flap rotation; this holds exactly in a plane
 //! perpendicular to a fixed hinge line (the thesis stations) and is the usual planar
@@ -27,11 +32,10 @@ use serde::Serialize;
 use crate::boundary::distance_to_segment_m;
 use crate::error::{finite, Error, Result};
 
-/// Wing-section points within this distance in x (fraction of the local chord) of the
-/// aft-most one are the trailing-edge region; the highest of them is the trailing edge.
-/// 1 % of the chord spans the cove wall's lean from twist and skew (a few mm) and stays
-/// well inside the upper skin's last panel.
-pub const TRAILING_EDGE_TIE_CHORD_FRACTION: f64 = 0.01;
+/// An edge of the wing section belongs to the upper skin when its outward normal leans at
+/// most this far (deg) from the station's y axis (up). Upper skins near a trailing edge slope
+/// by under 20 deg even with twist and skew; cove walls face aft (about 90 deg).
+pub const UPPER_SKIN_MAX_NORMAL_TILT_DEG: f64 = 45.0;
 
 /// Gap and overlap at one flap rotation.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -79,6 +83,41 @@ fn inside(polygon: &[Point2<f64>], point: &Point2<f64>) -> bool {
     crossings
 }
 
+/// Twice the signed area of a closed polygon (positive counter-clockwise).
+fn doubled_signed_area(polygon: &[Point2<f64>]) -> f64 {
+    polygon
+        .iter()
+        .zip(polygon.iter().cycle().skip(1))
+        .map(|(a, b)| a.x * b.y - b.x * a.y)
+        .sum()
+}
+
+/// The aft-most (smallest x) end of an upper-skin edge of the wing section: the upper lip of
+/// the cove (see the module doc). Ties go to the higher point. `None` when no edge faces up.
+fn upper_lip(wing: &[Vec<Point2<f64>>]) -> Option<Point2<f64>> {
+    let cos_tilt = UPPER_SKIN_MAX_NORMAL_TILT_DEG.to_radians().cos();
+    let mut lip: Option<Point2<f64>> = None;
+    for polygon in wing {
+        let orientation = doubled_signed_area(polygon).signum();
+        for (a, b) in polygon.iter().zip(polygon.iter().cycle().skip(1)) {
+            let edge = b - a;
+            let length = edge.norm();
+            // Outward normal of a counter-clockwise polygon: the edge turned clockwise.
+            let normal_y = -orientation * edge.x;
+            if !(length > 0.0 && normal_y >= cos_tilt * length) {
+                continue;
+            }
+            for p in [a, b] {
+                let aft_of_lip = lip.is_none_or(|l| p.x < l.x || (p.x == l.x && p.y > l.y));
+                if aft_of_lip {
+                    lip = Some(*p);
+                }
+            }
+        }
+    }
+    lip
+}
+
 impl FlapBehindWing {
     /// From the wing section's polygons and the stowed flap section's polygons (station
     /// frame, m; closed, last point not repeated).
@@ -94,7 +133,7 @@ impl FlapBehindWing {
                 finite("section point y (m)", p.y)?;
             }
         }
-        let (wing_aft, wing_nose) = extent_x(wing).ok_or_else(|| empty("wing section points"))?;
+        let (_, wing_nose) = extent_x(wing).ok_or_else(|| empty("wing section points"))?;
         let (flap_trailing_edge, _) = extent_x(flap_stowed).ok_or_else(|| empty("flap section points"))?;
         if flap_stowed.iter().any(|p| p.len() < 3) || wing.iter().any(|p| p.len() < 3) {
             return Err(empty("points of a section polygon"));
@@ -103,14 +142,7 @@ impl FlapBehindWing {
         if chord_m <= 0.0 {
             return Err(Error::FlapNotBehindWing { chord_m });
         }
-        let tie = TRAILING_EDGE_TIE_CHORD_FRACTION * chord_m;
-        let trailing_edge = wing
-            .iter()
-            .flatten()
-            .filter(|p| p.x <= wing_aft + tie)
-            .max_by(|a, b| a.y.total_cmp(&b.y).then(b.x.total_cmp(&a.x)))
-            .copied()
-            .ok_or_else(|| empty("wing section points"))?;
+        let trailing_edge = upper_lip(wing).ok_or_else(|| empty("upper-skin edges of the wing section"))?;
         Ok(Self {
             trailing_edge,
             flap_stowed: flap_stowed.to_vec(),

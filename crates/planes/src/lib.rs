@@ -80,7 +80,7 @@ pub use boundary::{boundary_deviation, distance_to_segment_m, parse_boundary_csv
 pub use conical::{setting_from_section_shifts, SectionShift};
 pub use error::{Error, Result};
 pub use frame::{StationFrame, StationPoint, DIRECTION_TOL, VERTICAL_SINE_TOL};
-pub use gap_overlap::{FlapBehindWing, GapOverlap, TRAILING_EDGE_TIE_CHORD_FRACTION};
+pub use gap_overlap::{FlapBehindWing, GapOverlap, UPPER_SKIN_MAX_NORMAL_TILT_DEG};
 pub use motion::{FlapDeployment, FlapSetting};
 pub use plane::{unit_direction, HingeAxis, Plane, AXIS_PLANE_COSINE_TOL};
 pub use report::{FrameReport, SectionReport, StationReport};

@@ -97,3 +97,44 @@ fn bad_sections_are_errors() {
         Err(Error::NotFinite { .. })
     ));
 }
+
+/// A wing section whose upper skin rises forward, y = 0.1 + 0.08 (x - 0.5), sampled at
+/// `n` points from the nose at x = 2 back to a cove wall at x = 0.5 (vertical, lower skin
+/// on y = 0): its upper lip is (0.5, 0.1) exactly, whatever the sampling.
+fn cambered_wing(n: usize) -> Vec<Point2<f64>> {
+    let mut polygon = vec![Point2::new(0.5, 0.0), Point2::new(2.0, 0.0)];
+    polygon.extend((0..=n).map(|i| {
+        let x = 2.0 - 1.5 * i as f64 / n as f64;
+        Point2::new(x, 0.1 + 0.08 * (x - 0.5))
+    }));
+    polygon
+}
+
+#[test]
+fn the_cove_lip_of_a_cambered_upper_skin_is_found_at_any_resolution() {
+    let flap = disc(Point2::new(0.3, 0.0), 0.1, 64);
+    for n in [3, 20, 150, 1000] {
+        let lip = FlapBehindWing::new(&[cambered_wing(n)], &flap).unwrap().trailing_edge();
+        assert!((lip - Point2::new(0.5, 0.1)).norm() < 1e-15, "n = {n}: {lip}");
+        // Clockwise input finds the same lip.
+        let mut reversed = cambered_wing(n);
+        reversed.reverse();
+        let lip = FlapBehindWing::new(&[reversed], &flap).unwrap().trailing_edge();
+        assert!(
+            (lip - Point2::new(0.5, 0.1)).norm() < 1e-15,
+            "n = {n}, clockwise: {lip}"
+        );
+    }
+    // Turned as twist and skew turn a station's section (here -15 and 10 deg about the
+    // hinge at the origin), the lip is the turned lip.
+    for angle_deg in [-15.0_f64, 10.0] {
+        let turn = Rotation2::new(angle_deg.to_radians());
+        let wing: Vec<Point2<f64>> = cambered_wing(400).iter().map(|p| turn * p).collect();
+        let flap: Vec<Vec<Point2<f64>>> = vec![flap[0].iter().map(|p| turn * p).collect()];
+        let lip = FlapBehindWing::new(&[wing], &flap).unwrap().trailing_edge();
+        assert!(
+            (lip - turn * Point2::new(0.5, 0.1)).norm() < 1e-15,
+            "{angle_deg} deg: {lip}"
+        );
+    }
+}

@@ -134,7 +134,10 @@ fn degeneracies(track: &CircularArcTrack, path: &str) -> Vec<Problem> {
     let probe = match track.sweep(2, &unloaded) {
         Ok(probe) => probe,
         Err(error) => {
-            problems.push(Problem::new(path, format!("cannot be posed at its stroke ends: {error}")));
+            problems.push(Problem::new(
+                path,
+                format!("cannot be posed at its stroke ends: {error}"),
+            ));
             return problems;
         }
     };

@@ -48,6 +48,15 @@ fn export_writes_a_valid_urdf_with_its_meshes_and_drawings() {
     for sample in trajectory["samples"].as_array().unwrap() {
         assert_eq!(sample["joint_values"].as_array().unwrap().len(), names.len());
     }
+    // The trajectory samples are the report's deployment samples, input for input.
+    let samples = trajectory["samples"].as_array().unwrap();
+    for (i, station) in report["stations"].as_array().unwrap().iter().enumerate() {
+        let reported = station["mechanism"]["load_cases"][0]["samples"].as_array().unwrap();
+        assert_eq!(samples.len(), reported.len(), "trajectory and report sample counts");
+        for (sample, reported) in samples.iter().zip(reported) {
+            assert_eq!(sample["input_m"][i], reported["input_m"], "station {i}");
+        }
+    }
 
     // STL files are exactly the scene's parts.
     let stl: BTreeSet<String> = std::fs::read_dir(&out)
@@ -97,4 +106,20 @@ fn export_flags_select_the_files() {
             .all(|n| n.ends_with(".svg") || n == "report.json" || n == flapwright::output::MANIFEST),
         "{names:?}"
     );
+}
+
+#[test]
+fn the_drawing_shows_the_flap_settings_not_the_range_end() {
+    // Landing at 30 deg inside a 35 deg mechanism range: the drawing's landing pose is 30.
+    let dir = tempfile::tempdir().unwrap();
+    let scene = crate::bad_input::default_with("landing_deg = 35.0", "landing_deg = 30.0");
+    std::fs::write(dir.path().join("scene.toml"), scene).unwrap();
+    let output = run_flapwright(dir.path(), &["export", "scene.toml", "--svg", "--out", "out"]);
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    for station in ["inner", "outer"] {
+        let svg = std::fs::read_to_string(dir.path().join(format!("out/station-{station}.svg"))).unwrap();
+        assert!(svg.contains("landing (30.0 deg)"), "{station}");
+        assert!(svg.contains("takeoff (15.0 deg)"), "{station}");
+        assert!(!svg.contains("landing (35.0 deg)"), "{station}");
+    }
 }

@@ -20,9 +20,6 @@ use crate::pipeline::stations::PlacedStation;
 use crate::report::PartReport;
 use crate::scene::Scene;
 
-/// Trajectory samples written beside the URDF.
-const TRAJECTORY_SAMPLES: usize = 41;
-
 /// What the URDF export wrote.
 #[derive(Debug, Clone, Serialize)]
 pub struct UrdfExport {
@@ -90,7 +87,8 @@ pub fn write_urdf(
     let model = build_robot(&robot_name, &base, &stations)?;
     let file = format!("{}.urdf", scene.name);
     std::fs::write(out.file(&file), to_xml(&model)?).with_context(|| format!("writing {file}"))?;
-    let trajectory = trajectory(&stations, TRAJECTORY_SAMPLES)?;
+    // The report's deployment samples, so each trajectory sample is a report sample.
+    let trajectory = trajectory(&stations, scene.resolution.deployment_samples)?;
     let trajectory_file = "trajectory.json".to_string();
     std::fs::write(
         out.file(&trajectory_file),
@@ -213,17 +211,22 @@ pub fn write_svgs(
             .filter(|s| matches!(s.kind, PartStyle::Flap))
             .flat_map(|s| s.polygons.clone())
             .collect();
-        let takeoff = station
+        // The flap's settings (validation keeps them within the rotation range); a station
+        // without a flap shows the middle and the end of its range.
+        let (takeoff, landing) = station
             .flap
             .as_ref()
             .and_then(|name| scene.flap.iter().find(|f| &f.name == name))
-            .map_or(spec.rotation_range_rad / 2.0, |f| {
-                f.settings.takeoff_deg.to_radians().min(spec.rotation_range_rad)
+            .map_or((spec.rotation_range_rad / 2.0, spec.rotation_range_rad), |f| {
+                (
+                    f.settings.takeoff_deg.to_radians().min(spec.rotation_range_rad),
+                    f.settings.landing_deg.to_radians().min(spec.rotation_range_rad),
+                )
             });
         let settings = vec![
             snapshot(mechanism, "stowed", 0.0, flap_outline.clone()),
             snapshot(mechanism, "takeoff", takeoff, flap_outline.clone()),
-            snapshot(mechanism, "landing", spec.rotation_range_rad, flap_outline.clone()),
+            snapshot(mechanism, "landing", landing, flap_outline.clone()),
         ];
         let envelope = vec![convex_hull(
             (0..=20)

@@ -306,3 +306,123 @@ fn back_drivable_screw_is_a_readable_warning_and_not_self_locking() {
     assert!(!warnings.contains("ScrewNotSelfLocking"), "no debug text: {warnings}");
     assert_eq!(report["sizing"]["screw_jacks"][0]["self_locking"], false);
 }
+
+#[test]
+fn station_beyond_its_flap() {
+    // The hinge line is about 2.2 m long inside the flap: 2.5 m puts A0 outboard of it.
+    assert_rejected(
+        &default_with("axis_offset_m = 1.90", "axis_offset_m = 2.5"),
+        &[
+            "station[1].axis_offset_m",
+            "y = 3.320 m",
+            "outside flap \"flap\" (y from 0.8 to 3 m)",
+        ],
+    );
+}
+
+#[test]
+fn hinge_line_far_ahead_of_the_flap() {
+    // 35 deg of sweep with the hinge points left where they were: at the outer station the
+    // hinge (and the whole mechanism) stands 1.35 m ahead of the flap.
+    assert_rejected(
+        &default_with("sweep_deg = 3.0", "sweep_deg = 35.0"),
+        &["flap[0].hinge", "station \"outer\"", "ahead of the flap"],
+    );
+}
+
+#[test]
+fn torque_tube_ahead_of_the_leading_edge() {
+    assert_rejected(
+        &default_with(
+            "path_m = [[1.4017, 0.8, 0.0196], [1.2960, 3.0, 0.2594]]",
+            "path_m = [[-1.0, 0.8, 0.0196], [-1.0, 3.0, 0.2594]]",
+        ),
+        &["structure.torque_tube.path_m", "outside the wing and flap section"],
+    );
+}
+
+#[test]
+fn airfoils_that_do_not_load_are_located_input_problems() {
+    // A .dat file with text where coordinates belong (exit 1 from the geometry stage before).
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("junk.dat"), "this is not an airfoil\n1 2 3\n").unwrap();
+    let scene = default_with("airfoil = \"n63215.dat\"", "airfoil = \"junk.dat\"");
+    std::fs::write(dir.path().join("scene.toml"), scene).unwrap();
+    let output = crate::run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("scene.toml:29:1: wing.sections[0].airfoil = \"junk.dat\""),
+        "{stderr}"
+    );
+    // A NACA code without thickness, for the wing and for the flap.
+    assert_rejected(
+        &default_with("airfoil = \"n63215.dat\"", "airfoil = \"NACA 0000\""),
+        &["wing.sections[0].airfoil = \"NACA 0000\"", "not a supported"],
+    );
+    assert_rejected(
+        &default_with("airfoil = \"n63212.dat\"", "airfoil = \"NACA 0000\""),
+        &["flap[0].airfoil = \"NACA 0000\""],
+    );
+}
+
+#[test]
+fn mechanism_values_have_finite_ranges() {
+    // Each once crashed, allocated gigabytes, printed 300-digit numbers or ran with
+    // nonsense results (issue 13 audit).
+    for (from, to, expected) in [
+        (
+            "inner_slot_radius_m = 0.300",
+            "inner_slot_radius_m = 1e-300",
+            "inner_slot_radius_m = 1e-300: must be in [0.001, 20]",
+        ),
+        (
+            "inner_slot_radius_m = 0.300",
+            "inner_slot_radius_m = 1e-6",
+            "inner_slot_radius_m = 1e-6: must be in [0.001, 20]",
+        ),
+        (
+            "screw_length_m = 0.250",
+            "screw_length_m = 1e308",
+            "screw_length_m = 1e308: must be in [0.001, 20]",
+        ),
+        (
+            "outer_slot_radius_m = 0.350",
+            "outer_slot_radius_m = 1e308",
+            "outer_slot_radius_m = 1e308",
+        ),
+        (
+            "screw_lead_m = 0.008",
+            "screw_lead_m = 1e-300",
+            "screw_lead_m = 1e-300: must be in [0.0001, 0.1]",
+        ),
+        ("screw_lead_m = 0.008", "screw_lead_m = 1e308", "screw_lead_m = 1e308"),
+        (
+            "flap_mass_kg = 12.0",
+            "flap_mass_kg = 1e308",
+            "flap_mass_kg = 1e308: must be in [0, 100000]",
+        ),
+        (
+            "nut_speed_mps = 0.035",
+            "nut_speed_mps = 1e-300",
+            "nut_speed_mps = 1e-300: must be in [0.0001, 10]",
+        ),
+        (
+            "slot_offset_angle_deg = 20.0",
+            "slot_offset_angle_deg = 0",
+            "slot_offset_angle_deg = 0: the two slot pins lie on one line",
+        ),
+        (
+            "slot_offset_angle_deg = 20.0",
+            "slot_offset_angle_deg = -1e-300",
+            "slot_offset_angle_deg = -1e-300: the two slot pins",
+        ),
+        (
+            "slot_offset_angle_deg = 20.0",
+            "slot_offset_angle_deg = 180",
+            "slot_offset_angle_deg = 180: the two slot pins",
+        ),
+    ] {
+        assert_rejected(&default_with(from, to), &[&format!("station[0].mechanism.{expected}")]);
+    }
+}

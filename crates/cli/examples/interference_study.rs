@@ -57,7 +57,7 @@ fn run(configure: impl FnOnce(&mut Scene)) -> Run {
         .stations
         .iter()
         .flat_map(|s| &s.fairing)
-        .map(|f| (f.part.clone(), f.at_parameter))
+        .map(|f| (f.part.clone().unwrap_or_default(), f.at_parameter))
         .collect();
     let fairing_seconds = report
         .timings

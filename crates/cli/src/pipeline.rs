@@ -16,6 +16,7 @@ pub mod flap_position;
 mod geometry;
 mod interference;
 pub mod mechanisms;
+mod plausibility;
 mod plots;
 mod sizing;
 pub mod stations;
@@ -125,6 +126,10 @@ pub fn design_with_progress(
         let stage = if write_stl { "stl" } else { "part-statistics" };
         parts = stages.run(stage, || geometry::write_parts(&meshed, write_stl, out))?;
         placed = stages.run("planes", || stations::place_all(scene, &model, &meshed, &mechanisms))?;
+        let implausible = plausibility::station_problems(scene, &placed);
+        if !implausible.is_empty() {
+            return Err(crate::scene::SceneError::Invalid(implausible).into());
+        }
         station_planes_ac = placed
             .iter()
             .map(|p| (p.station.frame.origin_ac(), p.station.frame.z_axis_ac().into_inner()))
@@ -137,6 +142,11 @@ pub fn design_with_progress(
             flap_positions = stages.run("gap-overlap", || {
                 flap_position::flap_positions(&scene.station, &scene.flap, &placed)
             })?;
+            for (station, position) in scene.station.iter().zip(&flap_positions) {
+                if let Some(position) = position {
+                    warnings.extend(plausibility::gap_overlap_warnings(&station.name, position));
+                }
+            }
         }
         if outputs.interference || !full {
             let checked = stages.run("interference", || {
@@ -164,6 +174,13 @@ pub fn design_with_progress(
                         .collect(),
                 )
             })?;
+            for (station, fairing) in scene.station.iter().zip(&fairings) {
+                warnings.extend(
+                    fairing
+                        .as_ref()
+                        .and_then(|f| plausibility::fairing_warning(&station.name, f)),
+                );
+            }
         }
     }
     let mut mechanism_reports = vec![None; scene.station.len()];

@@ -26,8 +26,9 @@ pub struct FairingDepth {
     pub depth_m: f64,
     /// The same in % of the local flap chord.
     pub depth_percent_flap_chord: f64,
-    /// Part that reaches deepest.
-    pub part: String,
+    /// Part that reaches deepest; `None` when nothing protrudes (then the parameter and
+    /// point below are 0).
+    pub part: Option<String>,
     /// Flap rotation where it does (rad).
     pub at_parameter: f64,
     /// The deepest point, station frame (m).
@@ -62,7 +63,7 @@ pub fn fairing_depth(
     let mut deepest = FairingDepth {
         depth_m: 0.0,
         depth_percent_flap_chord: 0.0,
-        part: String::new(),
+        part: None,
         at_parameter: 0.0,
         point_st: [0.0, 0.0],
     };
@@ -79,7 +80,7 @@ pub fn fairing_depth(
                     deepest = FairingDepth {
                         depth_m: depth,
                         depth_percent_flap_chord: 0.0,
-                        part: capsule.part.to_string(),
+                        part: Some(capsule.part.to_string()),
                         at_parameter: t,
                         point_st: [p.x, p.y - capsule.radius_m],
                     };

@@ -52,7 +52,10 @@ const TRACK_STEP_RAD: f64 = std::f64::consts::PI / 90.0;
 /// `range_rad`, extended by `extra_m` of arc at both ends so the pin's end positions sit
 /// inside the track.
 fn track_centre_line(radius_m: f64, start_rad: f64, range_rad: f64, extra_m: f64) -> Vec<Point2<f64>> {
-    let extra_rad = extra_m / radius_m;
+    // The extension covers the pin's end caps; on a slot radius smaller than the pin it
+    // would wind round many times (1e-300 m asked for 1e300 steps), and a quarter turn
+    // already encloses the pin there.
+    let extra_rad = (extra_m / radius_m).min(std::f64::consts::FRAC_PI_2);
     let (from, to) = (start_rad - extra_rad, start_rad + range_rad + extra_rad);
     let steps = (((to - from) / TRACK_STEP_RAD).ceil() as usize).max(1);
     (0..=steps)

@@ -148,7 +148,7 @@ impl CircularArcTrack {
         let stroke_m = 2.0 * a2 * half.sin();
         let stroke_start_m = t - 0.5 * stroke_m;
         let min_stroke_start_m = MIN_STROKE_START_CRANK_FRACTION * a2;
-        if !(stroke_start_m >= min_stroke_start_m) {
+        if stroke_start_m.is_nan() || stroke_start_m < min_stroke_start_m {
             return Err(Error::NutOnScrewPivot {
                 stroke_start_m,
                 minimum_m: min_stroke_start_m,

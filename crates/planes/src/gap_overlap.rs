@@ -31,6 +31,7 @@ use serde::Serialize;
 
 use crate::boundary::distance_to_segment_m;
 use crate::error::{finite, Error, Result};
+use crate::section::{polygons_contain, signed_area_m2};
 
 /// An edge of the wing section belongs to the upper skin when its outward normal leans at
 /// most this far (deg) from the station's y axis (up). Upper skins near a trailing edge slope
@@ -68,37 +69,13 @@ fn extent_x(polygons: &[Vec<Point2<f64>>]) -> Option<(f64, f64)> {
     })
 }
 
-/// True when `point` is inside the closed polygon (crossing number; boundary either way).
-fn inside(polygon: &[Point2<f64>], point: &Point2<f64>) -> bool {
-    let mut crossings = false;
-    for (i, a) in polygon.iter().enumerate() {
-        let b = polygon[(i + 1) % polygon.len()];
-        if (a.y > point.y) != (b.y > point.y) {
-            let x = a.x + (point.y - a.y) / (b.y - a.y) * (b.x - a.x);
-            if x > point.x {
-                crossings = !crossings;
-            }
-        }
-    }
-    crossings
-}
-
-/// Twice the signed area of a closed polygon (positive counter-clockwise).
-fn doubled_signed_area(polygon: &[Point2<f64>]) -> f64 {
-    polygon
-        .iter()
-        .zip(polygon.iter().cycle().skip(1))
-        .map(|(a, b)| a.x * b.y - b.x * a.y)
-        .sum()
-}
-
 /// The aft-most (smallest x) end of an upper-skin edge of the wing section: the upper lip of
 /// the cove (see the module doc). Ties go to the higher point. `None` when no edge faces up.
 fn upper_lip(wing: &[Vec<Point2<f64>>]) -> Option<Point2<f64>> {
     let cos_tilt = UPPER_SKIN_MAX_NORMAL_TILT_DEG.to_radians().cos();
     let mut lip: Option<Point2<f64>> = None;
     for polygon in wing {
-        let orientation = doubled_signed_area(polygon).signum();
+        let orientation = signed_area_m2(polygon).signum();
         for (a, b) in polygon.iter().zip(polygon.iter().cycle().skip(1)) {
             let edge = b - a;
             let length = edge.norm();
@@ -165,16 +142,19 @@ impl FlapBehindWing {
         let turn = Rotation2::new(rotation_rad);
         let te = self.trailing_edge;
         let mut distance = f64::INFINITY;
-        let mut is_inside = false;
         let mut nose_x = f64::NEG_INFINITY;
-        for polygon in &self.flap_stowed {
-            let turned: Vec<Point2<f64>> = polygon.iter().map(|p| turn * p).collect();
-            for (i, a) in turned.iter().enumerate() {
-                distance = distance.min(distance_to_segment_m(&te, a, &turned[(i + 1) % turned.len()]));
+        let turned: Vec<Vec<Point2<f64>>> = self
+            .flap_stowed
+            .iter()
+            .map(|polygon| polygon.iter().map(|p| turn * p).collect())
+            .collect();
+        for polygon in &turned {
+            for (a, b) in polygon.iter().zip(polygon.iter().cycle().skip(1)) {
+                distance = distance.min(distance_to_segment_m(&te, a, b));
                 nose_x = nose_x.max(a.x);
             }
-            is_inside ^= inside(&turned, &te);
         }
+        let is_inside = polygons_contain(&turned, &te);
         let gap_m = if is_inside { -distance } else { distance };
         let overlap_m = nose_x - te.x;
         GapOverlap {

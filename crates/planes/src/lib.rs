@@ -84,7 +84,7 @@ pub use gap_overlap::{FlapBehindWing, GapOverlap, UPPER_SKIN_MAX_NORMAL_TILT_DEG
 pub use motion::{FlapDeployment, FlapSetting};
 pub use plane::{unit_direction, HingeAxis, Plane, AXIS_PLANE_COSINE_TOL};
 pub use report::{FrameReport, SectionReport, StationReport};
-pub use section::{cut_mesh, signed_area_m2, Section, SECTION_MERGE_TOL_M};
+pub use section::{cut_mesh, polygons_contain, signed_area_m2, Section, SECTION_MERGE_TOL_M};
 pub use skew::{
     angle_to_streamwise_plane_rad, dihedral_up_vector_ac, skew_angle_rad, skew_direction_ac, skewed_plane_normal_ac,
 };

@@ -190,6 +190,23 @@ pub fn signed_area_m2(polygon: &[Point2<f64>]) -> f64 {
         / 2.0
 }
 
+/// True when `point` lies inside the region the closed `polygons` bound, by the even-odd
+/// rule (a hole inside an outline is outside); points on an edge may go either way.
+pub fn polygons_contain(polygons: &[Vec<Point2<f64>>], point: &Point2<f64>) -> bool {
+    let mut inside = false;
+    for polygon in polygons {
+        for (a, b) in polygon.iter().zip(polygon.iter().cycle().skip(1)) {
+            if (a.y > point.y) != (b.y > point.y) {
+                let x = a.x + (point.y - a.y) / (b.y - a.y) * (b.x - a.x);
+                if x > point.x {
+                    inside = !inside;
+                }
+            }
+        }
+    }
+    inside
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

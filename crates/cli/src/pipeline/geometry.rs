@@ -3,7 +3,6 @@
 use std::path::Path;
 
 use anyhow::{Context, Result};
-use flapwright_geom::airfoil::{Airfoil, TrailingEdge};
 use flapwright_geom::flap::{FlapSectionSpec, FlapSpec, HingeSpec};
 use flapwright_geom::parts::{MeshResolution, Part, PartKind, WingModel};
 use flapwright_geom::structure::{SparSpec, TorqueTubeSpec};
@@ -12,31 +11,7 @@ use nalgebra::Point3;
 
 use crate::output::StagedDir;
 use crate::report::PartReport;
-use crate::scene::{AirfoilRef, AirfoilSource, ResolutionScene, Scene, SweepReferenceScene, WingScene};
-
-/// Reads an airfoil the scene names and resamples it to the scene's resolution.
-pub fn load_airfoil(text: &str, scene_dir: Option<&Path>, points_per_side: usize) -> Result<Airfoil> {
-    let airfoil = match AirfoilRef::parse(text).map_err(anyhow::Error::msg)? {
-        AirfoilRef::Naca(digits) => Airfoil::naca(&digits, points_per_side, TrailingEdge::Closed)
-            .with_context(|| format!("building NACA {digits}"))?,
-        AirfoilRef::File(name) => {
-            let source =
-                AirfoilRef::locate(&name, scene_dir).with_context(|| format!("airfoil file {name} not found"))?;
-            let parsed = match source {
-                AirfoilSource::Disk(path) => {
-                    let file = std::fs::File::open(&path).with_context(|| format!("opening {}", path.display()))?;
-                    Airfoil::from_dat(file)
-                }
-                AirfoilSource::Bundled(text) => Airfoil::from_dat(text.as_bytes()),
-            };
-            parsed
-                .with_context(|| format!("reading airfoil file {name}"))?
-                .resampled(points_per_side)
-                .with_context(|| format!("resampling airfoil {name}"))?
-        }
-    };
-    Ok(airfoil)
-}
+use crate::scene::{ResolutionScene, Scene, SweepReferenceScene, WingScene};
 
 fn point(p: [f64; 3]) -> Point3<f64> {
     Point3::new(p[0], p[1], p[2])
@@ -54,7 +29,7 @@ pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) ->
                 y_m: s.y_m,
                 chord_m: s.chord_m,
                 twist_deg: s.twist_deg,
-                airfoil: load_airfoil(&s.airfoil, scene_dir, pps)
+                airfoil: crate::scene::load_airfoil(&s.airfoil, scene_dir, pps)
                     .with_context(|| format!("wing.sections[{i}].airfoil"))?,
             })
         })
@@ -99,7 +74,8 @@ pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) ->
             let section = match &f.airfoil {
                 None => FlapSectionSpec::CutOut,
                 Some(text) => FlapSectionSpec::OwnSection {
-                    airfoil: load_airfoil(text, scene_dir, pps).with_context(|| format!("flap[{i}].airfoil"))?,
+                    airfoil: crate::scene::load_airfoil(text, scene_dir, pps)
+                        .with_context(|| format!("flap[{i}].airfoil"))?,
                 },
             };
             Ok(FlapSpec {

@@ -152,7 +152,7 @@ fn degeneracies(track: &CircularArcTrack, path: &str) -> Vec<Problem> {
         ));
     }
     for (end, sample) in ["stowed", "deployed"].iter().zip(&probe.samples) {
-        if !(sample.jacobian_condition_number <= MAX_CONDITION_NUMBER) {
+        if sample.jacobian_condition_number.is_nan() || sample.jacobian_condition_number > MAX_CONDITION_NUMBER {
             problems.push(Problem::new(
                 path,
                 format!(
@@ -161,7 +161,7 @@ fn degeneracies(track: &CircularArcTrack, path: &str) -> Vec<Problem> {
                     sample.jacobian_condition_number
                 ),
             ));
-        } else if !(sample.distance_to_toggle_deg >= MIN_DISTANCE_TO_TOGGLE_DEG) {
+        } else if sample.distance_to_toggle_deg.is_nan() || sample.distance_to_toggle_deg < MIN_DISTANCE_TO_TOGGLE_DEG {
             problems.push(Problem::new(
                 path,
                 format!(

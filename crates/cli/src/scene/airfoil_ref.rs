@@ -2,6 +2,9 @@
 
 use std::path::{Path, PathBuf};
 
+use anyhow::{Context, Result};
+use flapwright_geom::airfoil::{Airfoil, TrailingEdge};
+
 /// Airfoil files shipped with Flapwright (`data/airfoils/`, UIUC database; see its README),
 /// found by file name when the scene's folder has no file of that name.
 pub const BUNDLED_AIRFOILS: &[(&str, &str)] = &[
@@ -75,6 +78,30 @@ impl AirfoilRef {
             .find(|(bundled, _)| *bundled == file_name)
             .map(|(_, text)| AirfoilSource::Bundled(text))
     }
+}
+
+/// Reads an airfoil the scene names and resamples it to the scene's resolution.
+pub fn load_airfoil(text: &str, scene_dir: Option<&Path>, points_per_side: usize) -> Result<Airfoil> {
+    let airfoil = match AirfoilRef::parse(text).map_err(anyhow::Error::msg)? {
+        AirfoilRef::Naca(digits) => Airfoil::naca(&digits, points_per_side, TrailingEdge::Closed)
+            .with_context(|| format!("building NACA {digits}"))?,
+        AirfoilRef::File(name) => {
+            let source =
+                AirfoilRef::locate(&name, scene_dir).with_context(|| format!("airfoil file {name} not found"))?;
+            let parsed = match source {
+                AirfoilSource::Disk(path) => {
+                    let file = std::fs::File::open(&path).with_context(|| format!("opening {}", path.display()))?;
+                    Airfoil::from_dat(file)
+                }
+                AirfoilSource::Bundled(text) => Airfoil::from_dat(text.as_bytes()),
+            };
+            parsed
+                .with_context(|| format!("reading airfoil file {name}"))?
+                .resampled(points_per_side)
+                .with_context(|| format!("resampling airfoil {name}"))?
+        }
+    };
+    Ok(airfoil)
 }
 
 #[cfg(test)]

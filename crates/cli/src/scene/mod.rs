@@ -14,7 +14,7 @@ mod station;
 mod validate;
 mod wing;
 
-pub use airfoil_ref::{AirfoilRef, AirfoilSource};
+pub use airfoil_ref::{load_airfoil, AirfoilRef, AirfoilSource};
 pub use key_path::Location;
 pub use settings::{InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene};
 pub use station::{CircularArcTrackScene, LoadCaseScene, LoadsScene, MechanismScene, StationScene};

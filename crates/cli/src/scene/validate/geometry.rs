@@ -5,28 +5,37 @@ use super::limits::{
     MIN_LENGTH_M,
 };
 use super::Checker;
-use crate::scene::{AirfoilRef, FlapScene, Scene, WingScene};
+use crate::scene::{load_airfoil, AirfoilRef, FlapScene, Scene, WingScene};
 
 impl Checker<'_> {
     fn airfoil(&mut self, path: &str, text: &str) {
         match AirfoilRef::parse(text) {
             Err(message) => self.fail(path, message),
-            Ok(AirfoilRef::File(name)) => {
-                if AirfoilRef::locate(&name, self.scene_dir).is_none() {
-                    self.fail(
-                        path,
-                        format!(
-                            "= \"{name}\": file not found next to the scene nor among the bundled airfoils ({})",
-                            crate::scene::airfoil_ref::BUNDLED_AIRFOILS
-                                .iter()
-                                .map(|(n, _)| *n)
-                                .collect::<Vec<_>>()
-                                .join(", ")
-                        ),
-                    );
-                }
+            Ok(AirfoilRef::File(name)) if AirfoilRef::locate(&name, self.scene_dir).is_some() => {
+                self.airfoil_loads(path, text);
             }
-            Ok(AirfoilRef::Naca(_)) => {}
+            Ok(AirfoilRef::File(name)) => {
+                self.fail(
+                    path,
+                    format!(
+                        "= \"{name}\": file not found next to the scene nor among the bundled airfoils ({})",
+                        crate::scene::airfoil_ref::BUNDLED_AIRFOILS
+                            .iter()
+                            .map(|(n, _)| *n)
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ),
+                );
+            }
+            Ok(AirfoilRef::Naca(_)) => self.airfoil_loads(path, text),
+        }
+    }
+
+    /// The airfoil reads and resamples: a `.dat` file that holds no airfoil, or a NACA code
+    /// without thickness (`NACA 0000`), is a problem at its key.
+    fn airfoil_loads(&mut self, path: &str, text: &str) {
+        if let Err(error) = load_airfoil(text, self.scene_dir, self.airfoil_points_per_side) {
+            self.fail(path, format!("= \"{text}\": {error:#}"));
         }
     }
 

@@ -48,3 +48,22 @@ pub const FAIRING_POINTS_PER_CAPSULE: (usize, usize) = (2, 1_000);
 pub const INITIAL_SAMPLES: (usize, usize) = (2, 10_000);
 /// Largest evaluation cap of one clearance sweep.
 pub const MAX_EVALUATIONS: usize = 100_000;
+
+/// Mechanism link lengths, slot radii and the screw length, m: 1 mm (a 1/17 model's
+/// links are a few mm) to 20 m (above any transport flap's track).
+pub const MECHANISM_LENGTH_M: (f64, f64) = (1e-3, 20.0);
+/// Flap mass carried by one station, kg (0: a massless flap, the hinge moment alone; up to a
+/// transport flap's tonnes).
+pub const FLAP_MASS_KG: (f64, f64) = (0.0, 1e5);
+/// Screw lead, m (0.1 mm fine threads to 100 mm multi-start ball screws).
+pub const SCREW_LEAD_M: (f64, f64) = (1e-4, 0.1);
+/// Screw mean thread radius, m.
+pub const SCREW_MEAN_RADIUS_M: (f64, f64) = (1e-4, 1.0);
+/// Screw friction coefficient (0: frictionless ideal; 1: dry steel on steel at worst).
+pub const SCREW_FRICTION: (f64, f64) = (0.0, 1.0);
+/// Nut speed, m/s (0.1 mm/s to 10 m/s).
+pub const NUT_SPEED_MPS: (f64, f64) = (1e-4, 10.0);
+/// Smallest angle between the two slot pins seen from the hinge, deg: at 0 or 180 deg the
+/// pins lie on one line through A0 and their radial reactions cannot hold a tangential load
+/// (thesis eqs 3.5.x, Cramer determinant sin(theta_F - theta_G) = 0).
+pub const MIN_SLOT_OFFSET_ANGLE_DEG: f64 = 1.0;

@@ -1,5 +1,9 @@
 //! Checks of the stations' mechanisms and the load cases.
 
+use super::limits::{
+    FLAP_MASS_KG, MECHANISM_LENGTH_M, MIN_SLOT_OFFSET_ANGLE_DEG, NUT_SPEED_MPS, SCREW_FRICTION, SCREW_LEAD_M,
+    SCREW_MEAN_RADIUS_M,
+};
 use super::Checker;
 use crate::scene::{MechanismScene, Scene};
 
@@ -43,20 +47,25 @@ impl Checker<'_> {
             }
             let MechanismScene::CircularArcTrack(m) = &station.mechanism;
             let mpath = format!("{path}.mechanism");
-            for (key, value) in [
+            let mut lengths = vec![
                 ("base_distance_m", m.base_distance_m),
                 ("crank_length_m", m.crank_length_m),
                 ("outer_slot_radius_m", m.outer_slot_radius_m),
                 ("inner_slot_radius_m", m.inner_slot_radius_m),
-                ("flap_mass_kg", m.flap_mass_kg),
-                ("screw_lead_m", m.screw_lead_m),
-                ("screw_mean_radius_m", m.screw_mean_radius_m),
-                ("nut_speed_mps", m.nut_speed_mps),
-            ] {
-                self.positive(&format!("{mpath}.{key}"), value);
-            }
-            if let Some(a3) = m.screw_length_m {
-                self.positive(&format!("{mpath}.screw_length_m"), a3);
+            ];
+            lengths.extend(m.screw_length_m.map(|a3| ("screw_length_m", a3)));
+            for (key, value, (min, max)) in lengths
+                .into_iter()
+                .map(|(key, value)| (key, value, MECHANISM_LENGTH_M))
+                .chain([
+                    ("flap_mass_kg", m.flap_mass_kg, FLAP_MASS_KG),
+                    ("screw_lead_m", m.screw_lead_m, SCREW_LEAD_M),
+                    ("screw_mean_radius_m", m.screw_mean_radius_m, SCREW_MEAN_RADIUS_M),
+                    ("screw_friction", m.screw_friction, SCREW_FRICTION),
+                    ("nut_speed_mps", m.nut_speed_mps, NUT_SPEED_MPS),
+                ])
+            {
+                self.in_range(&format!("{mpath}.{key}"), value, min, max, false);
             }
             self.in_range(
                 &format!("{mpath}.base_angle_deg"),
@@ -86,8 +95,17 @@ impl Checker<'_> {
                 180.0,
                 true,
             );
-            self.in_range(&format!("{mpath}.screw_friction"), m.screw_friction, 0.0, 1.0, false);
-            self.finite_point(&format!("{mpath}.flap_centre_of_mass_m"), &m.flap_centre_of_mass_m);
+            let offset = m.slot_offset_angle_deg;
+            if offset.is_finite() && offset.to_radians().sin().abs() < MIN_SLOT_OFFSET_ANGLE_DEG.to_radians().sin() {
+                self.fail(
+                    format!("{mpath}.slot_offset_angle_deg"),
+                    format!(
+                        "= {}: the two slot pins lie on one line through the hinge A0 and cannot hold the flap; keep it at least {MIN_SLOT_OFFSET_ANGLE_DEG} deg away from 0 and +-180 deg",
+                        super::number(offset)
+                    ),
+                );
+            }
+            self.point_within(&format!("{mpath}.flap_centre_of_mass_m"), &m.flap_centre_of_mass_m);
             if m.inner_slot_radius_m.is_finite() && m.inner_slot_radius_m >= m.outer_slot_radius_m {
                 // Thesis section 5.3, red-cell condition 2.
                 self.fail(

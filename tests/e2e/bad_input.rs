@@ -291,7 +291,8 @@ fn nut_starting_on_the_screw_pivot() {
 fn back_drivable_screw_is_a_readable_warning_and_not_self_locking() {
     let dir = tempfile::tempdir().unwrap();
     // lead 50 mm on a 16 mm mean radius: lead angle 26.4 deg above the friction angle 5.7 deg.
-    let scene = default_with("screw_lead_m = 0.008", "screw_lead_m = 0.050");
+    // Both stations: their screws share one torque tube, so one speed.
+    let scene = default_scene_text().replace("screw_lead_m = 0.008", "screw_lead_m = 0.050");
     std::fs::write(dir.path().join("scene.toml"), scene).unwrap();
     let output = crate::run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);
     let stderr = String::from_utf8_lossy(&output.stderr);
@@ -425,4 +426,23 @@ fn mechanism_values_have_finite_ranges() {
     ] {
         assert_rejected(&default_with(from, to), &[&format!("station[0].mechanism.{expected}")]);
     }
+}
+
+#[test]
+fn screws_on_one_torque_tube_turn_at_one_speed() {
+    // Halving only the outer station's lead: its screw would have to turn twice as fast
+    // as the inner one on the same tube (the report gave the inner speed before).
+    let text = default_scene_text();
+    let outer = text.find("name = \"outer\"").expect("outer station");
+    let (head, tail) = text.split_at(outer);
+    let scene = format!(
+        "{head}{}",
+        tail.replacen("screw_lead_m = 0.008", "screw_lead_m = 0.004", 1)
+    );
+    assert_rejected(
+        &scene,
+        &[
+            "station[1].mechanism.nut_speed_mps = 0.035: with screw_lead_m = 0.004 its screw turns 8.7500 rev/s, but station[0]'s turns 4.3750 rev/s",
+        ],
+    );
 }

@@ -205,7 +205,10 @@ fn reword(text: &str) -> String {
         .replace("expected usize", "expected a whole number >= 0")
         .replace("expected u64", "expected a whole number >= 0")
         .replace("expected u32", "expected a whole number >= 0")
-        .replace("expected fewer elements in array", "expected fewer elements");
+        .replace(
+            "expected fewer elements in array",
+            "more elements than this fixed-length array holds (points are [x, y, z]; flap_centre_of_mass_m is [x, y])",
+        );
     out.trim_end().to_string()
 }
 
@@ -319,7 +322,7 @@ mod tests {
                 "inner[0].width_m | missing: this key is required",
                 "inner[1].length_m | missing: this key is required",
                 "name | invalid type: integer `3`, expected a string",
-                "point_m | invalid length 5, expected fewer elements",
+                "point_m | invalid length 5, more elements than this fixed-length array holds (points are [x, y, z]; flap_centre_of_mass_m is [x, y])",
             ],
             "{found:#?}"
         );

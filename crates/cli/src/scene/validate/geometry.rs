@@ -76,8 +76,9 @@ impl Checker<'_> {
                         self.fail(
                             format!("{path}.y_m"),
                             format!(
-                                "= {}: sections must be in increasing spanwise order (previous y_m = {prev})",
-                                section.y_m
+                                "= {}: sections must be in increasing spanwise order (previous y_m = {})",
+                                super::number(section.y_m),
+                                super::number(prev)
                             ),
                         );
                     }
@@ -98,13 +99,16 @@ impl Checker<'_> {
             if wing.sections.len() >= 2 && first.y_m.is_finite() && last.y_m == first.y_m {
                 self.fail("wing.sections", "zero span: first and last sections have the same y_m");
             }
-            if last.y_m - first.y_m > MAX_SPAN_M {
+            // Only for sections inside their own range (reported above): a typo there would
+            // otherwise be reported twice.
+            let in_range = |y: f64| y.abs() <= MAX_SPAN_M;
+            if in_range(first.y_m) && in_range(last.y_m) && last.y_m - first.y_m > MAX_SPAN_M {
                 self.fail(
                     format!("wing.sections[{}].y_m", wing.sections.len() - 1),
                     format!(
                         "= {}: the wing spans {} m from root to tip; at most {MAX_SPAN_M} m",
-                        last.y_m,
-                        last.y_m - first.y_m
+                        super::number(last.y_m),
+                        super::number(last.y_m - first.y_m)
                     ),
                 );
             }
@@ -146,7 +150,8 @@ impl Checker<'_> {
                 format!("{path}.y_outboard_m"),
                 format!(
                     "= {}: must be greater than y_inboard_m = {}",
-                    flap.y_outboard_m, flap.y_inboard_m
+                    super::number(flap.y_outboard_m),
+                    super::number(flap.y_inboard_m)
                 ),
             );
         }
@@ -231,7 +236,8 @@ impl Checker<'_> {
                 format!("{path}.settings.takeoff_deg"),
                 format!(
                     "= {}: must not exceed landing_deg = {}",
-                    settings.takeoff_deg, settings.landing_deg
+                    super::number(settings.takeoff_deg),
+                    super::number(settings.landing_deg)
                 ),
             );
         }
@@ -273,7 +279,7 @@ impl Checker<'_> {
             if start_ok && end_ok && spar.y_end_m <= spar.y_start_m {
                 self.fail(
                     format!("{path}.y_end_m"),
-                    format!("= {}: must be greater than y_start_m", spar.y_end_m),
+                    format!("= {}: must be greater than y_start_m", super::number(spar.y_end_m)),
                 );
             }
             if !(fraction_ok && start_ok && end_ok) {

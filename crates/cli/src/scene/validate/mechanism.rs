@@ -112,12 +112,45 @@ impl Checker<'_> {
                     format!("{mpath}.inner_slot_radius_m"),
                     format!(
                         "= {}: must be smaller than outer_slot_radius_m = {} (thesis 5.3, condition 2)",
-                        m.inner_slot_radius_m, m.outer_slot_radius_m
+                        super::number(m.inner_slot_radius_m),
+                        super::number(m.outer_slot_radius_m)
                     ),
                 );
             }
         }
         self.one_rotation_per_flap(scene);
+        self.one_screw_speed(scene);
+    }
+
+    /// The torque tube turns every screw jack at one speed, so the stations' screw speeds
+    /// 2 pi v / l (nut speed over lead) must agree: otherwise the report's drive speed would
+    /// be one station's and the others' nuts would run at speeds the drive cannot give.
+    fn one_screw_speed(&mut self, scene: &Scene) {
+        if scene.structure.torque_tube.is_none() {
+            return;
+        }
+        let mut first: Option<(usize, f64)> = None;
+        for (i, station) in scene.station.iter().enumerate() {
+            let MechanismScene::CircularArcTrack(m) = &station.mechanism;
+            let turns_per_s = m.nut_speed_mps / m.screw_lead_m;
+            if !turns_per_s.is_finite() {
+                continue;
+            }
+            match first {
+                None => first = Some((i, turns_per_s)),
+                Some((j, first_turns)) if (turns_per_s - first_turns).abs() > 1e-9 * first_turns => self.fail(
+                    format!("station[{i}].mechanism.nut_speed_mps"),
+                    format!(
+                        "= {}: with screw_lead_m = {} its screw turns {:.4} rev/s, but station[{j}]'s turns {:.4} rev/s; one torque tube drives every screw at one speed: make nut_speed_mps / screw_lead_m equal",
+                        super::number(m.nut_speed_mps),
+                        super::number(m.screw_lead_m),
+                        turns_per_s,
+                        first_turns
+                    ),
+                ),
+                Some(_) => {}
+            }
+        }
     }
 
     /// A flap is one rigid body: its stations turn it through the same range, and that

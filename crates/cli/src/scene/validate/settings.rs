@@ -94,7 +94,8 @@ impl Checker<'_> {
         self.count_in(
             "interference.max_evaluations",
             interference.max_evaluations,
-            interference.initial_samples.max(2),
+            // A bad initial_samples is reported above; bound by its nearest allowed value.
+            interference.initial_samples.clamp(min, max),
             MAX_EVALUATIONS,
         );
     }

@@ -10,6 +10,15 @@ pub(crate) fn default_with(from: &str, to: &str) -> String {
     text.replacen(from, to, 1)
 }
 
+/// The default scene with the first `from` in the outer station's block replaced.
+fn outer_station_with(from: &str, to: &str) -> String {
+    let text = default_scene_text();
+    let outer = text.find("name = \"outer\"").expect("outer station");
+    let (head, tail) = text.split_at(outer);
+    assert!(tail.contains(from), "outer station has `{from}`");
+    format!("{head}{}", tail.replacen(from, to, 1))
+}
+
 pub(crate) fn assert_rejected(scene: &str, expected_in_message: &[&str]) {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("scene.toml"), scene).unwrap();
@@ -241,13 +250,7 @@ fn fairing_resolution_below_two() {
 fn stations_of_one_flap_with_different_rotation_ranges() {
     // The flap is rigid: the outer station cannot stop at 25 deg while the inner turns
     // the flap to 35 deg (its pins would leave their tracks).
-    let text = default_scene_text();
-    let outer = text.find("name = \"outer\"").expect("outer station");
-    let (head, tail) = text.split_at(outer);
-    let scene = format!(
-        "{head}{}",
-        tail.replacen("rotation_range_deg = 35.0", "rotation_range_deg = 25.0", 1)
-    );
+    let scene = outer_station_with("rotation_range_deg = 35.0", "rotation_range_deg = 25.0");
     assert_rejected(
         &scene,
         &[
@@ -432,13 +435,7 @@ fn mechanism_values_have_finite_ranges() {
 fn screws_on_one_torque_tube_turn_at_one_speed() {
     // Halving only the outer station's lead: its screw would have to turn twice as fast
     // as the inner one on the same tube (the report gave the inner speed before).
-    let text = default_scene_text();
-    let outer = text.find("name = \"outer\"").expect("outer station");
-    let (head, tail) = text.split_at(outer);
-    let scene = format!(
-        "{head}{}",
-        tail.replacen("screw_lead_m = 0.008", "screw_lead_m = 0.004", 1)
-    );
+    let scene = outer_station_with("screw_lead_m = 0.008", "screw_lead_m = 0.004");
     assert_rejected(
         &scene,
         &[

@@ -443,3 +443,31 @@ fn screws_on_one_torque_tube_turn_at_one_speed() {
         ],
     );
 }
+
+#[test]
+fn names_that_become_file_names_are_checked() {
+    // Found by the long fuzz run: a flap named "NACA 0000" failed in the URDF stage (exit 1).
+    assert_rejected(
+        &default_with("name = \"flap\"", "name = \"NACA 0000\""),
+        &["flap[0].name = \"NACA 0000\": names become file and URDF names"],
+    );
+    // A scene name is the URDF's file name: it must not reach outside the output folder.
+    assert_rejected(
+        &default_with("name = \"small-aircraft\"", "name = \"../escape\""),
+        &["name = \"../escape\""],
+    );
+    // Each part's STL is named after it: a flap cannot be called "wing", nor a spar "flap".
+    assert_rejected(
+        &default_with("name = \"front-spar\"", "name = \"flap\""),
+        &["structure.spars[0].name = \"flap\": already the name of another part"],
+    );
+}
+
+#[test]
+fn spar_web_outside_the_section() {
+    // Found by the long fuzz run: a spar at chord fraction 1e-300 failed in the mesher.
+    assert_rejected(
+        &default_with("chord_fraction = 0.20", "chord_fraction = 1e-300"),
+        &["structure.spars[0].chord_fraction = 1e-300: a 6.0 mm web centred there leaves the 1.200 m section"],
+    );
+}

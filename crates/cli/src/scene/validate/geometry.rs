@@ -274,6 +274,26 @@ impl Checker<'_> {
                 (0.1 * largest_chord).max(MIN_LENGTH_M),
                 false,
             );
+            let thickness_ok = spar.thickness_m.is_finite() && spar.thickness_m > 0.0;
+            if fraction_ok && thickness_ok {
+                // The web, centred on the chord fraction, must lie inside every section it
+                // crosses; the smallest chord is the tightest.
+                let smallest_chord = wing.sections.iter().map(|s| s.chord_m).fold(f64::INFINITY, f64::min);
+                let half_web = 0.5 * spar.thickness_m / smallest_chord;
+                if spar.chord_fraction - half_web < 0.0 || spar.chord_fraction + half_web > 1.0 {
+                    self.fail(
+                        format!("{path}.chord_fraction"),
+                        format!(
+                            "= {}: a {:.1} mm web centred there leaves the {:.3} m section; keep it in [{:.4}, {:.4}]",
+                            super::number(spar.chord_fraction),
+                            spar.thickness_m * 1e3,
+                            smallest_chord,
+                            half_web,
+                            1.0 - half_web
+                        ),
+                    );
+                }
+            }
             let start_ok = self.in_range(&format!("{path}.y_start_m"), spar.y_start_m, root, tip, false);
             let end_ok = self.in_range(&format!("{path}.y_end_m"), spar.y_end_m, root, tip, false);
             if start_ok && end_ok && spar.y_end_m <= spar.y_start_m {

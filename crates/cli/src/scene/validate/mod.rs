@@ -326,7 +326,9 @@ impl Checker<'_> {
     /// (XML comments forbid it), so that no name can reach outside the output folder.
     fn file_safe_name(&mut self, path: &str, name: &str) {
         let allowed = name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-');
-        if !name.is_empty() && !(allowed && !name.contains("--") && name.len() <= MAX_NAME_CHARS) {
+        let safe = allowed && !name.contains("--") && name.len() <= MAX_NAME_CHARS;
+        // An empty name is reported by the uniqueness rule.
+        if !name.is_empty() && !safe {
             self.fail(
                 path,
                 format!(

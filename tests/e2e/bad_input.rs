@@ -412,6 +412,11 @@ fn mechanism_values_have_finite_ranges() {
             "nut_speed_mps = 1e-300: must be in [0.0001, 10]",
         ),
         (
+            "nut_speed_mps = 0.035",
+            "nut_speed_mps = 1e308",
+            "nut_speed_mps = 1e308: must be in [0.0001, 10]",
+        ),
+        (
             "slot_offset_angle_deg = 20.0",
             "slot_offset_angle_deg = 0",
             "slot_offset_angle_deg = 0: the two slot pins lie on one line",

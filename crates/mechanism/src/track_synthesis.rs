@@ -8,7 +8,9 @@ use serde::Serialize;
 
 use crate::angle::guarded_acos;
 use crate::error::{Error, Result};
+use crate::seam::{Body, Joint};
 use crate::slider_crank::InvertedSliderCrank;
+use crate::track_seam::{bodies_and_joints, TrackHardware};
 use crate::track_spec::CircularArcTrackSpec;
 
 /// Angles closer than this (rad) are taken as equal in consistency checks.
@@ -121,6 +123,14 @@ pub struct CircularArcTrack {
     pub(crate) spec: CircularArcTrackSpec,
     pub(crate) linkage: InvertedSliderCrank,
     pub(crate) synthesis: TrackSynthesis,
+    /// Sizes of the solids behind the seam.
+    pub(crate) hardware: TrackHardware,
+    /// Bodies behind the seam ([`crate::FlapMechanism::bodies`]), built from the synthesis.
+    #[serde(skip)]
+    pub(crate) bodies: Vec<Body>,
+    /// Joints behind the seam ([`crate::FlapMechanism::joints`]).
+    #[serde(skip)]
+    pub(crate) joints: Vec<Joint>,
 }
 
 impl CircularArcTrack {
@@ -236,7 +246,25 @@ impl CircularArcTrack {
             spec,
             linkage,
             synthesis,
-        })
+            hardware: TrackHardware::default(),
+            bodies: Vec::new(),
+            joints: Vec::new(),
+        }
+        .with_hardware(TrackHardware::default()))
+    }
+
+    /// The same track with its solids sized by `hardware`.
+    pub fn with_hardware(mut self, hardware: TrackHardware) -> Self {
+        let (bodies, joints) = bodies_and_joints(&self, &hardware);
+        self.hardware = hardware;
+        self.bodies = bodies;
+        self.joints = joints;
+        self
+    }
+
+    /// The sizes of the solids that stand for the hardware.
+    pub fn hardware(&self) -> &TrackHardware {
+        &self.hardware
     }
 
     /// The dimensions this track was synthesised from.

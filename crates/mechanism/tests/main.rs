@@ -5,6 +5,7 @@ mod finite_differences;
 mod landing_gear;
 mod planar;
 mod properties;
+mod seam;
 mod thesis_appendix_c;
 mod thesis_tables;
 mod toggle;

@@ -1,0 +1,325 @@
+//! The mechanism seam: what every stage outside this crate sees of a mechanism kind.
+//!
+//! A kind (circular-arc track with screw jack, dropped hinge, four-bar, ...) is one module
+//! of this crate that implements [`FlapMechanism`]; interference, fairing, URDF and
+//! trajectory, drawings, plots, sizing and the report consume only this trait and the plain
+//! data below, as parry's queries see a `Shape`. A new kind touches its own module and the
+//! scene's kind enum, nothing that names another kind.
+//!
+//! # Parameters
+//!
+//! Two parameters describe a deployment:
+//! - the **input** of the actuator ([`InputRange`]): nut stroke (m) or crank angle (rad),
+//!   the variable of the kinetostatics and of the report's samples;
+//! - the **flap deflection** (rad, trailing edge down positive, 0 stowed): the common
+//!   parameter of every station on one rigid flap, and so of the geometry stages
+//!   (interference, fairing, gap and overlap, drawings). Every kind deploys its flap
+//!   monotonically, so each maps to the other ([`FlapMechanism::input_at_deflection`],
+//!   [`FlapMechanism::deflection_at_input`]).
+//!
+//! # Frames
+//!
+//! The station frame (origin A0 on the hinge line, x towards the nose, y up, z spanwise
+//! out of the plane). Bodies and their solids are given where they stand stowed; a
+//! [`MechanismPose`] holds each body's planar displacement from there (an `Isometry2`), so
+//! a stowed point `p` of body `b` stands at `pose.bodies[b] * p`.
+
+use nalgebra::{Isometry2, Point2};
+use serde::Serialize;
+
+use crate::error::Result;
+use crate::kinetostatics::LoadCase;
+
+/// What the actuator moves.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum InputQuantity {
+    /// A linear actuator's stroke (m): screw jack nut, hydraulic rod.
+    Stroke,
+    /// A rotary actuator's angle (rad).
+    Angle,
+}
+
+/// The actuator input over the deployment.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct InputRange {
+    /// Stroke (m) or angle (rad).
+    pub quantity: InputQuantity,
+    /// Input with the flap stowed.
+    pub stowed: f64,
+    /// Input with the flap fully deployed.
+    pub deployed: f64,
+}
+
+impl InputRange {
+    /// `samples` evenly spaced inputs from stowed to deployed, both ends exact.
+    pub fn samples(&self, samples: usize) -> Vec<f64> {
+        let last = samples.saturating_sub(1).max(1) as f64;
+        (0..samples)
+            .map(|i| {
+                if i + 1 == samples {
+                    self.deployed
+                } else {
+                    self.stowed + (self.deployed - self.stowed) * i as f64 / last
+                }
+            })
+            .collect()
+    }
+
+    /// Where `input` lies between stowed (0) and deployed (1).
+    pub fn fraction(&self, input: f64) -> f64 {
+        (input - self.stowed) / (self.deployed - self.stowed)
+    }
+}
+
+/// What a body is for: the interference check's pair policy, the drawings' styles and the
+/// viewers' materials are written in roles, never in kinds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum BodyRole {
+    /// The flap and what is rigid with it (fittings, pins, brackets).
+    Flap,
+    /// A link between pivots.
+    Link,
+    /// A track or slot fixed to the wing.
+    Track,
+    /// A carriage running on a track.
+    Carriage,
+    /// An actuator's moving part: screw, nut, rod.
+    Actuator,
+    /// Support structure fixed to the wing: hinge brackets, truss, actuator mounts.
+    Support,
+}
+
+/// A solid in the station plane, where its body stands stowed (station frame, m).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "shape", rename_all = "kebab-case")]
+pub enum PlanarShape {
+    /// All points within `radius_m` of the segment `from`-`to` (a ball when they coincide).
+    Capsule {
+        /// One end (m).
+        from: Point2<f64>,
+        /// Other end (m).
+        to: Point2<f64>,
+        /// Radius (m).
+        radius_m: f64,
+    },
+    /// A round tube along a polyline: a track swept along a pin's path.
+    Tube {
+        /// Centre line (m), at least two points.
+        centre_line: Vec<Point2<f64>>,
+        /// Radius (m).
+        radius_m: f64,
+    },
+}
+
+impl PlanarShape {
+    /// The points that, thickened by [`PlanarShape::radius_m`], make the solid.
+    pub fn skeleton(&self) -> Vec<Point2<f64>> {
+        match self {
+            Self::Capsule { from, to, .. } => vec![*from, *to],
+            Self::Tube { centre_line, .. } => centre_line.clone(),
+        }
+    }
+
+    /// The thickness about the skeleton (m).
+    pub fn radius_m(&self) -> f64 {
+        match self {
+            Self::Capsule { radius_m, .. } | Self::Tube { radius_m, .. } => *radius_m,
+        }
+    }
+
+    /// Largest distance of a point of the solid from `point` (m).
+    pub fn reach_from(&self, point: &Point2<f64>) -> f64 {
+        self.skeleton().iter().map(|p| (p - point).norm()).fold(0.0, f64::max) + self.radius_m()
+    }
+}
+
+/// One named solid of a body: its shape in the plane and its spanwise extent.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BodySolid {
+    /// Part name within the station ("screw", "outer-track"): the report and JUnit name
+    /// it `<station>.<name>`.
+    pub name: String,
+    /// Shape in the station plane, stowed.
+    pub shape: PlanarShape,
+    /// Spanwise width (m), along the station z axis; 0: as thick as the shape's radius
+    /// suggests (a round solid).
+    pub width_m: f64,
+    /// Spanwise offset of the solid's mid-plane from the station plane (m).
+    pub offset_m: f64,
+}
+
+/// A certified bound on how fast a body's points move per radian of flap deflection:
+/// |dp/dδ| <= `linear_m_per_rad` + `angular_per_rad` * |p - `reference`| for every point
+/// p of the body, over the whole deployment (stowed coordinates: the distance to the
+/// reference is the same in every pose of a rigid body).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SpeedBound {
+    /// A point of the body, stowed (m).
+    pub reference: Point2<f64>,
+    /// Largest speed of the reference point (m per rad of deflection).
+    pub linear_m_per_rad: f64,
+    /// Largest rotation rate of the body (rad per rad of deflection).
+    pub angular_per_rad: f64,
+}
+
+impl SpeedBound {
+    /// A body that does not move.
+    pub const FIXED: Self = Self {
+        reference: Point2::new(0.0, 0.0),
+        linear_m_per_rad: 0.0,
+        angular_per_rad: 0.0,
+    };
+
+    /// The bound for the points of `shape` (m per rad of deflection).
+    pub fn for_shape(&self, shape: &PlanarShape) -> f64 {
+        self.linear_m_per_rad + self.angular_per_rad * shape.reach_from(&self.reference)
+    }
+}
+
+/// A rigid body of the mechanism (the ground is not one: fixed bodies are bodies whose
+/// speed bound is zero).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Body {
+    /// Name, unique within the mechanism ("flap", "screw", "outer-track").
+    pub name: String,
+    /// What it is for.
+    pub role: BodyRole,
+    /// Its solids, stowed.
+    pub solids: Vec<BodySolid>,
+    /// How fast its points can move per radian of deflection.
+    pub speed_bound: SpeedBound,
+}
+
+impl Body {
+    /// True when the body moves with the deployment.
+    pub fn is_moving(&self) -> bool {
+        self.speed_bound != SpeedBound::FIXED
+    }
+}
+
+/// How a joint constrains its two bodies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum JointKind {
+    /// A pin: the bodies turn about a common point.
+    Revolute,
+    /// A slide: one body translates along the other without turning.
+    Prismatic,
+    /// A pin of one body in a circular slot of the other.
+    PinInCircularSlot,
+    /// A pin of one body in a straight slot of the other.
+    PinInStraightSlot,
+}
+
+/// One end of a joint: a body, or the wing (ground).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum JointEnd {
+    /// The wing structure (ground).
+    Ground,
+    /// The body with this index in [`FlapMechanism::bodies`].
+    Body(usize),
+}
+
+/// A joint between two bodies, by name (reactions are keyed by it).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Joint {
+    /// Name, unique within the mechanism ("A", "B0", "F").
+    pub name: String,
+    /// What it is, in words for reports ("nut on the screw, pivoting on the flap").
+    pub description: String,
+    /// Its kind.
+    pub kind: JointKind,
+    /// The two ends.
+    pub ends: [JointEnd; 2],
+    /// The solids of the two ends that touch by design (body solid names), checked to
+    /// stay joined instead of clear.
+    pub touching_solids: Vec<(String, String)>,
+}
+
+/// The mechanism at one flap deflection.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MechanismPose {
+    /// Flap deflection (rad).
+    pub deflection_rad: f64,
+    /// Actuator input.
+    pub input: f64,
+    /// Each body's displacement from stowed, in the order of [`FlapMechanism::bodies`].
+    pub bodies: Vec<Isometry2<f64>>,
+    /// The flap's planar displacement from stowed (general: not only a turn about A0).
+    pub flap: Isometry2<f64>,
+    /// Named points where they stand (station frame, m): pivots, pins, the centre of mass.
+    pub points: Vec<(String, Point2<f64>)>,
+}
+
+impl MechanismPose {
+    /// The point called `name`, if the kind names one.
+    pub fn point(&self, name: &str) -> Option<Point2<f64>> {
+        self.points.iter().find(|(n, _)| n == name).map(|(_, p)| *p)
+    }
+}
+
+/// Loads at one input under one load case (quasi-static unless the case asks for inertia).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Kinetostatics {
+    /// Actuator input.
+    pub input: f64,
+    /// Flap deflection (rad).
+    pub deflection_rad: f64,
+    /// Actuator force (N, stroke inputs) or torque (N m, angle inputs) by equilibrium.
+    pub actuator_load: f64,
+    /// The same by virtual work (total power): an independent cross-check.
+    pub actuator_load_virtual_work: f64,
+    /// Reaction at each joint (N), by joint name, signed along the joint's line of action.
+    pub reactions: Vec<(String, f64)>,
+    /// Transmission angle (rad): the acute angle between the driving link and the driven
+    /// one, pi/2 best, 0 a toggle.
+    pub transmission_angle_rad: f64,
+}
+
+/// A mechanism kind, synthesised for one station: everything the other stages use.
+pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
+    /// The kind's scene name ("circular-arc-track").
+    fn kind(&self) -> &'static str;
+
+    /// The actuator input over the deployment.
+    fn input_range(&self) -> InputRange;
+
+    /// Flap deflection when fully deployed (rad); stowed is 0.
+    fn deflection_range_rad(&self) -> f64;
+
+    /// The input that gives `deflection_rad`.
+    fn input_at_deflection(&self, deflection_rad: f64) -> Result<f64>;
+
+    /// The deflection `input` gives (rad).
+    fn deflection_at_input(&self, input: f64) -> Result<f64>;
+
+    /// The rigid bodies, each with its solids and speed bound.
+    fn bodies(&self) -> &[Body];
+
+    /// The joints.
+    fn joints(&self) -> &[Joint];
+
+    /// The pose at flap deflection `deflection_rad` (rad).
+    fn pose(&self, deflection_rad: f64) -> Result<MechanismPose>;
+
+    /// Loads at `input` under `load`.
+    fn kinetostatics(&self, input: f64, load: &LoadCase) -> Result<Kinetostatics>;
+}
+
+/// A solid where it stands at `pose` (station frame).
+pub fn posed_shape(shape: &PlanarShape, placement: &Isometry2<f64>) -> PlanarShape {
+    match shape {
+        PlanarShape::Capsule { from, to, radius_m } => PlanarShape::Capsule {
+            from: placement * from,
+            to: placement * to,
+            radius_m: *radius_m,
+        },
+        PlanarShape::Tube { centre_line, radius_m } => PlanarShape::Tube {
+            centre_line: centre_line.iter().map(|p| placement * p).collect(),
+            radius_m: *radius_m,
+        },
+    }
+}

@@ -1,0 +1,150 @@
+//! The thesis track behind the mechanism seam: poses agree with the track's own kinematics,
+//! speed bounds hold against finite differences, input and deflection invert each other,
+//! and the loads cross-check by virtual work.
+
+use flapwright_mechanism::seam::{posed_shape, FlapMechanism, JointEnd, PlanarShape};
+use flapwright_mechanism::{CircularArcTrack, LoadCase};
+use nalgebra::Point2;
+
+use crate::common::thesis_track;
+
+fn deflections(track: &CircularArcTrack, samples: usize) -> Vec<f64> {
+    let range = track.deflection_range_rad();
+    (0..samples).map(|i| range * i as f64 / (samples - 1) as f64).collect()
+}
+
+#[test]
+fn body_displacements_carry_the_stowed_points_to_the_tracks_own_pose() {
+    let track = thesis_track();
+    let stowed = FlapMechanism::pose(&track, 0.0).unwrap();
+    for bodies in &stowed.bodies {
+        assert!((bodies.translation.vector.norm() + bodies.rotation.angle().abs()) < 1e-12);
+    }
+    let at_stowed = |name: &str| stowed.point(name).unwrap();
+    for deflection in deflections(&track, 41) {
+        let pose = FlapMechanism::pose(&track, deflection).unwrap();
+        assert!((pose.deflection_rad - deflection).abs() < 1e-12);
+        let own = CircularArcTrack::pose(&track, pose.input, 0.0, 0.0).unwrap();
+        let close = |a: Point2<f64>, b: Point2<f64>, what: &str| {
+            assert!((a - b).norm() < 1e-12, "{what} at {deflection}: {a} vs {b}");
+        };
+        // The flap (body 0) carries D, F, G; the nut (body 2) carries A; the screw (body
+        // 1) carries B; the flap's displacement is body 0's.
+        close(pose.bodies[0] * at_stowed("D"), own.centre_of_mass_d.position_m, "D");
+        close(pose.bodies[0] * at_stowed("F"), own.outer_pin_f.position_m, "F");
+        close(pose.bodies[0] * at_stowed("G"), own.inner_pin_g.position_m, "G");
+        close(pose.bodies[2] * at_stowed("A"), own.nut_pivot_a.position_m, "A");
+        close(pose.bodies[1] * at_stowed("B"), own.screw_end_b.position_m, "B");
+        close(pose.bodies[1] * at_stowed("B0"), at_stowed("B0"), "B0 fixed");
+        assert_eq!(pose.flap, pose.bodies[0]);
+        // The screw still points at the nut pivot.
+        let screw = &track.bodies()[1].solids[0].shape;
+        let PlanarShape::Capsule { from, to, .. } = posed_shape(screw, &pose.bodies[1]) else {
+            panic!("the screw is a capsule");
+        };
+        let a = own.nut_pivot_a.position_m;
+        assert!((to - from).perp(&(a - from)).abs() < 1e-12 * (to - from).norm() * (a - from).norm());
+    }
+}
+
+#[test]
+fn input_and_deflection_invert_each_other() {
+    let track = thesis_track();
+    let range = track.input_range();
+    assert_eq!(range.stowed, track.synthesis().stroke_start_m);
+    assert_eq!(range.deployed, track.synthesis().stroke_end_m);
+    for input in range.samples(33) {
+        let deflection = track.deflection_at_input(input).unwrap();
+        let back = track.input_at_deflection(deflection).unwrap();
+        assert!((back - input).abs() < 1e-12, "{input} -> {deflection} -> {back}");
+    }
+    assert!(track.deflection_at_input(range.deployed).unwrap() - track.deflection_range_rad() < 1e-12);
+}
+
+#[test]
+fn speed_bounds_hold_against_finite_differences() {
+    // Every skeleton point of every solid, at 2001 deflections: the finite-difference speed
+    // (m per rad) stays within the body's bound for that solid, which is also not loose by
+    // more than a factor of four for the moving bodies.
+    let track = thesis_track();
+    let steps = deflections(&track, 2001);
+    let h = steps[1] - steps[0];
+    for (b, body) in track.bodies().iter().enumerate() {
+        for solid in &body.solids {
+            let bound = body.speed_bound.for_shape(&solid.shape);
+            let mut fastest: f64 = 0.0;
+            let mut previous: Option<Vec<Point2<f64>>> = None;
+            for &deflection in &steps {
+                let pose = FlapMechanism::pose(&track, deflection).unwrap();
+                let points: Vec<Point2<f64>> = solid.shape.skeleton().iter().map(|p| pose.bodies[b] * p).collect();
+                if let Some(before) = &previous {
+                    for (p, q) in points.iter().zip(before) {
+                        fastest = fastest.max((p - q).norm() / h);
+                    }
+                }
+                previous = Some(points);
+            }
+            assert!(
+                fastest <= bound * (1.0 + 1e-9),
+                "{}: {fastest} > bound {bound}",
+                solid.name
+            );
+            if body.is_moving() {
+                assert!(
+                    fastest > 0.25 * bound,
+                    "{}: bound {bound} loose (fastest {fastest})",
+                    solid.name
+                );
+            } else {
+                assert_eq!(fastest, 0.0, "{} is fixed", solid.name);
+            }
+        }
+    }
+}
+
+#[test]
+fn joints_name_existing_bodies_and_solids() {
+    let track = thesis_track();
+    let solids: Vec<&str> = track
+        .bodies()
+        .iter()
+        .flat_map(|b| b.solids.iter().map(|s| s.name.as_str()))
+        .collect();
+    for joint in track.joints() {
+        for end in joint.ends {
+            if let JointEnd::Body(i) = end {
+                assert!(i < track.bodies().len(), "{}", joint.name);
+            }
+        }
+        for (x, y) in &joint.touching_solids {
+            assert!(
+                solids.contains(&x.as_str()) && solids.contains(&y.as_str()),
+                "{}",
+                joint.name
+            );
+        }
+    }
+}
+
+#[test]
+fn loads_cross_check_by_virtual_work_and_key_reactions_by_joint() {
+    let track = thesis_track();
+    let joint_names: Vec<&str> = track.joints().iter().map(|j| j.name.as_str()).collect();
+    for load in [LoadCase::thesis_cruise(), LoadCase::thesis_landing()] {
+        for input in track.input_range().samples(21) {
+            let loads = track.kinetostatics(input, &load).unwrap();
+            let scale = loads.actuator_load.abs().max(1.0);
+            assert!(
+                (loads.actuator_load - loads.actuator_load_virtual_work).abs() < 1e-9 * scale,
+                "{input}: {} vs {}",
+                loads.actuator_load,
+                loads.actuator_load_virtual_work
+            );
+            for (joint, reaction) in &loads.reactions {
+                assert!(joint_names.contains(&joint.as_str()), "{joint}");
+                assert!(reaction.is_finite());
+            }
+            assert!(loads.transmission_angle_rad > 0.0);
+        }
+    }
+}

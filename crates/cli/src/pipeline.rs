@@ -168,7 +168,7 @@ pub fn design_with_progress(
             let flap_names: Vec<String> = scene.flap.iter().map(|f| f.name.clone()).collect();
             fairings = stages.run("fairing", || {
                 Ok(
-                    interference::fairing_depths(&mechanisms, &placed, &flap_names, &scene.resolution)
+                    interference::fairing_depths(&mechanisms, &placed, &flap_names, &scene.resolution)?
                         .into_iter()
                         .map(Some)
                         .collect(),

@@ -8,8 +8,9 @@ use serde::Serialize;
 
 use crate::error::{Error, Result};
 use crate::part::Part;
+use crate::station::{DeclaredContact, StationPart, StationParts};
 use crate::sweep::{sweep_contact, sweep_pair, JointSeparation, PairClearance, SweepSettings};
-use crate::track::{DeclaredContact, TrackParts};
+use flapwright_mechanism::seam::BodyRole;
 
 /// What is checked: fixed structure, the flap, and each station's mechanism parts.
 #[derive(Debug)]
@@ -21,8 +22,8 @@ pub struct Assembly {
     pub skins: Vec<String>,
     /// The flap, turning about its hinge line.
     pub flaps: Vec<Part>,
-    /// Per station: screw, nut, fittings.
-    pub stations: Vec<TrackParts>,
+    /// Per station: every solid of the mechanism's bodies, with its role.
+    pub stations: Vec<StationParts>,
 }
 
 /// One checked pair.
@@ -60,6 +61,8 @@ const SKIN_CUT: &str = "the skin is cut for the mechanism, which lives in the fa
 const TRACK_IN_COVE: &str = "tracks are fixed in the cove and pass through its skin";
 /// Why tracks may cross the flap.
 const FLAP_SLOTTED: &str = "the flap is slotted for its own tracks";
+/// Why a part joined to the flap by a joint is not checked against the flap itself.
+const JOINED_TO_FLAP: &str = "joined to the flap by design (a pin in a fitting on the flap)";
 /// Why same-station parts are not checked against each other.
 const STACKED: &str =
     "same-station parts are stacked spanwise (side plates, clevises); the planar model has no spanwise layout to check them in";
@@ -138,46 +141,42 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
                 reason: reason.into(),
             })
         };
-        let jack = [&station.screw, &station.jack_body];
-        let links: Vec<&Part> = jack.into_iter().chain(&station.flap_rigid).collect();
-        for &link in &links {
+        // Moving parts and the station's fixed hardware (tracks, supports) against the
+        // structure; the skin is cut where they pass.
+        for part in &station.parts {
             for &fixed in &structure {
-                jobs.push((name(), link, fixed));
+                jobs.push((name(), &part.part, fixed));
             }
+            let reason = if part.moving { SKIN_CUT } else { TRACK_IN_COVE };
             for &skin in &skins {
-                skip(link, skin, SKIN_CUT);
+                skip(&part.part, skin, reason);
             }
         }
-        for track in &station.tracks {
-            for &fixed in &structure {
-                jobs.push((name(), track, fixed));
-            }
-            for &skin in &skins {
-                skip(track, skin, TRACK_IN_COVE);
-            }
-        }
+        // Against the flap: not the flap's own body, and not what is pinned to it.
+        let flap_body = station.parts.iter().find(|p| p.role == BodyRole::Flap).map(|p| p.body);
         for flap in &assembly.flaps {
-            for part in jack {
-                jobs.push((name(), part, flap));
-            }
-            for track in &station.tracks {
-                skip(track, flap, FLAP_SLOTTED);
+            for part in station.parts.iter().filter(|p| Some(p.body) != flap_body) {
+                match flap_body.and_then(|f| station.joint_between(f, part.body)) {
+                    None => jobs.push((name(), &part.part, flap)),
+                    Some(_) if !part.moving => skip(&part.part, flap, FLAP_SLOTTED),
+                    Some(_) => skip(&part.part, flap, JOINED_TO_FLAP),
+                }
             }
         }
-        // Same-station parts that may cross in the station plane, unless joined by design.
+        // Same-station parts of different bodies, at least one moving, that may cross in
+        // the station plane, unless joined by design (then checked as a joint).
         let joined = |a: &Part, b: &Part| {
             station
                 .declared
                 .iter()
                 .any(|c| (c.part_a == a.name && c.part_b == b.name) || (c.part_a == b.name && c.part_b == a.name))
         };
-        let moving_vs_other = jack
-            .into_iter()
-            .flat_map(|j| station.flap_rigid.iter().map(move |r| (j, r)));
-        let against_tracks = links.iter().flat_map(|&l| station.tracks.iter().map(move |t| (l, t)));
-        for (a, b) in moving_vs_other.chain(against_tracks) {
-            if !joined(a, b) {
-                skip(a, b, STACKED);
+        let parts: Vec<&StationPart> = station.parts.iter().collect();
+        for (i, a) in parts.iter().enumerate() {
+            for b in &parts[i + 1..] {
+                if a.body != b.body && (a.moving || b.moving) && !joined(&a.part, &b.part) {
+                    skip(&a.part, &b.part, STACKED);
+                }
             }
         }
     }

@@ -34,6 +34,17 @@ pub enum Error {
         #[source]
         source: Box<flapwright_geom::Error>,
     },
+    /// The mechanism could not be posed where the sweep asked.
+    #[error("posing {part} at deployment {parameter}")]
+    Pose {
+        /// The part.
+        part: String,
+        /// Deployment parameter.
+        parameter: f64,
+        /// The mechanism's reason.
+        #[source]
+        source: flapwright_mechanism::Error,
+    },
     /// A declared joint names a part the station does not have.
     #[error("joint {joint} names part {name}, which its station does not have")]
     UnknownPart {

@@ -7,10 +7,10 @@ use serde::Serialize;
 
 /// A round solid of the mechanism in the station plane: a segment swept by a radius
 /// (a point when both ends coincide).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct PlanarCapsule {
     /// Part name.
-    pub part: &'static str,
+    pub part: String,
     /// One end, station frame (m).
     pub from: Point2<f64>,
     /// Other end (m).
@@ -52,14 +52,15 @@ fn lower_surface_y(polygons: &[Vec<Point2<f64>>], x: f64) -> Option<f64> {
 
 /// Fairing depth over `parameters` (flap rotations, rad) of the capsules `at(t)` gives,
 /// against the lower contour of `contour` (wing and stowed flap sections, station frame).
-/// Each capsule is sampled at `points_per_capsule` points (>= 2).
-pub fn fairing_depth(
+/// Each capsule is sampled at `points_per_capsule` points (>= 2). Errors: the first that
+/// `at` returns.
+pub fn fairing_depth<E>(
     contour: &[Vec<Point2<f64>>],
     flap_chord_m: f64,
     parameters: &[f64],
     points_per_capsule: usize,
-    at: impl Fn(f64) -> Vec<PlanarCapsule>,
-) -> FairingDepth {
+    at: impl Fn(f64) -> Result<Vec<PlanarCapsule>, E>,
+) -> Result<FairingDepth, E> {
     let mut deepest = FairingDepth {
         depth_m: 0.0,
         depth_percent_flap_chord: 0.0,
@@ -69,7 +70,7 @@ pub fn fairing_depth(
     };
     let n = points_per_capsule.max(2);
     for &t in parameters {
-        for capsule in at(t) {
+        for capsule in at(t)? {
             for k in 0..n {
                 let p = capsule.from + (capsule.to - capsule.from) * (k as f64 / (n - 1) as f64);
                 let Some(surface) = lower_surface_y(contour, p.x) else {
@@ -80,7 +81,7 @@ pub fn fairing_depth(
                     deepest = FairingDepth {
                         depth_m: depth,
                         depth_percent_flap_chord: 0.0,
-                        part: Some(capsule.part.to_string()),
+                        part: Some(capsule.part.clone()),
                         at_parameter: t,
                         point_st: [p.x, p.y - capsule.radius_m],
                     };
@@ -91,11 +92,13 @@ pub fn fairing_depth(
     if flap_chord_m > 0.0 {
         deepest.depth_percent_flap_chord = 100.0 * deepest.depth_m / flap_chord_m;
     }
-    deepest
+    Ok(deepest)
 }
 
 #[cfg(test)]
 mod tests {
+    use std::convert::Infallible;
+
     use super::*;
 
     #[test]
@@ -108,25 +111,27 @@ mod tests {
             Point2::new(0.0, 0.1),
         ]];
         let depth = fairing_depth(&plate, 0.5, &[0.0, 1.0], 2, |t| {
-            vec![PlanarCapsule {
-                part: "pin",
+            Ok::<_, Infallible>(vec![PlanarCapsule {
+                part: "pin".into(),
                 from: Point2::new(0.5, -0.2 * t),
                 to: Point2::new(0.5, -0.2 * t),
                 radius_m: 0.01,
-            }]
-        });
+            }])
+        })
+        .unwrap();
         assert!((depth.depth_m - 0.21).abs() < 1e-12);
         assert!((depth.depth_percent_flap_chord - 42.0).abs() < 1e-9);
         assert_eq!(depth.at_parameter, 1.0);
         // Outside the contour's x range nothing is measured.
         let outside = fairing_depth(&plate, 0.5, &[1.0], 2, |_| {
-            vec![PlanarCapsule {
-                part: "pin",
+            Ok::<_, Infallible>(vec![PlanarCapsule {
+                part: "pin".into(),
                 from: Point2::new(2.0, -1.0),
                 to: Point2::new(2.0, -1.0),
                 radius_m: 0.0,
-            }]
-        });
+            }])
+        })
+        .unwrap();
         assert_eq!(outside.depth_m, 0.0);
     }
 
@@ -145,17 +150,17 @@ mod tests {
         let (length, radius) = (0.45, 0.01);
         let rod = |t: f64| {
             let angle = (-60f64).to_radians() - t;
-            vec![PlanarCapsule {
-                part: "rod",
+            Ok::<_, Infallible>(vec![PlanarCapsule {
+                part: "rod".into(),
                 from: Point2::origin(),
                 to: Point2::new(length * angle.cos(), length * angle.sin()),
                 radius_m: radius,
-            }]
+            }])
         };
         let range = 60f64.to_radians();
         for samples in [3, 4, 21, 22] {
             let parameters: Vec<f64> = (0..samples).map(|i| range * i as f64 / (samples - 1) as f64).collect();
-            let depth = fairing_depth(&plate, 1.0, &parameters, 2, rod).depth_m;
+            let depth = fairing_depth(&plate, 1.0, &parameters, 2, rod).unwrap().depth_m;
             let step = range / (samples - 1) as f64;
             // The sample nearest -90 deg is at most half a step away.
             let nearest = parameters

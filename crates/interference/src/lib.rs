@@ -5,16 +5,18 @@
 //!   over the deployment parameter `t` (pose and a certified speed bound).
 //! - [`sweep_pair`] → [`PairClearance`]: smallest clearance of a pair over the deployment,
 //!   where it occurs, the closest points, and a residual bound.
-//! - [`track_parts`]: a circular-arc-track station's screw, jack body, nut, fittings and
-//!   slot tracks as parts ([`ScrewAboutMount`], [`AboutAxis`] motions with certified speed
-//!   bounds), with the joints between them ([`DeclaredContact`]).
+//! - [`station_parts`]: a station's mechanism as parts, from the mechanism seam alone
+//!   (`flapwright_mechanism::seam::FlapMechanism`): every solid of every body, moving with
+//!   its body's pose under the body's certified speed bound, with its role; the joints'
+//!   touching solids as [`DeclaredContact`]s. No mechanism kind is named here.
 //! - [`sweep_contact`] → [`JointSeparation`]: largest separation of parts joined by design.
 //! - [`check_assembly`] → [`InterferenceReport`]: every station part against the fixed
-//!   structure, the screws and jack bodies against the flap, the flap against the
-//!   structure, and the parts of different stations against each other; joints must stay
-//!   within the joint's play ([`Requirements`]); pairs left out are listed with the reason.
+//!   structure, parts not on or pinned to the flap against the flap, the flap against the
+//!   structure, and the parts of different stations against each other (the policy is
+//!   written in roles and joints); joints must stay within the joint's play
+//!   ([`Requirements`]); pairs left out are listed with the reason.
 //! - [`fairing_depth`]: how far the mechanism reaches below the lower wing/flap contour;
-//!   [`TrackLayout::planar_parts`] gives a station's solids in its plane for it.
+//!   [`planar_parts`] gives a station's solids in its plane for it.
 //!
 //! # Units and frames
 //! Metres, aircraft frame (x aft, y outboard, z up). `t` is whatever the caller's motions
@@ -44,13 +46,13 @@ mod fairing;
 mod motion;
 mod part;
 mod refine;
+mod station;
 mod sweep;
-mod track;
 
 pub use check::{check_assembly, Assembly, ContactResult, InterferenceReport, PairResult, Requirements, UncheckedPair};
 pub use error::{Error, Result};
 pub use fairing::{fairing_depth, FairingDepth, PlanarCapsule};
-pub use motion::{AboutAxis, ScrewAboutMount};
+pub use motion::AboutAxis;
 pub use part::{Fixed, Motion, Part};
+pub use station::{planar_parts, station_parts, DeclaredContact, StationPart, StationParts};
 pub use sweep::{sweep_contact, sweep_pair, JointSeparation, PairClearance, SweepSettings, JOINT_PENETRATION_GRID_M};
-pub use track::{screw_outer_radius_m, track_parts, DeclaredContact, LinkSizes, TrackLayout, TrackParts};

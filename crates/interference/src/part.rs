@@ -5,8 +5,9 @@ use nalgebra::Isometry3;
 
 /// How a rigid part moves with the deployment parameter `t` (e.g. flap deflection, rad).
 pub trait Motion: Send + Sync {
-    /// Pose of the part's local frame in the aircraft frame at deployment `t`.
-    fn pose_ac(&self, t: f64) -> Isometry3<f64>;
+    /// Pose of the part's local frame in the aircraft frame at deployment `t`; an error
+    /// when the mechanism cannot be posed there.
+    fn pose_ac(&self, t: f64) -> Result<Isometry3<f64>, flapwright_mechanism::Error>;
 
     /// A certified upper bound on the speed of any point of the part, in metres per unit
     /// of `t`, over the whole deployment range. The sweep's guarantee rests on it:
@@ -14,13 +15,14 @@ pub trait Motion: Send + Sync {
     fn speed_bound(&self) -> f64;
 }
 
-/// A part that does not move (wing skin, spars, torque tube, fixed tracks).
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Fixed;
+/// A part that does not move (wing skin, spars, torque tube, fixed tracks): its local
+/// frame stays at this pose in the aircraft frame.
+#[derive(Debug, Clone, Copy)]
+pub struct Fixed(pub Isometry3<f64>);
 
 impl Motion for Fixed {
-    fn pose_ac(&self, _t: f64) -> Isometry3<f64> {
-        Isometry3::identity()
+    fn pose_ac(&self, _t: f64) -> Result<Isometry3<f64>, flapwright_mechanism::Error> {
+        Ok(self.0)
     }
 
     fn speed_bound(&self) -> f64 {
@@ -50,10 +52,15 @@ impl std::fmt::Debug for Part {
 impl Part {
     /// A part that does not move (its shape given in the aircraft frame).
     pub fn fixed(name: impl Into<String>, shape: CollisionShape) -> Self {
+        Self::fixed_at(name, shape, Isometry3::identity())
+    }
+
+    /// A part that does not move, its shape's local frame at `pose_ac`.
+    pub fn fixed_at(name: impl Into<String>, shape: CollisionShape, pose_ac: Isometry3<f64>) -> Self {
         Self {
             name: name.into(),
             shape,
-            motion: Box::new(Fixed),
+            motion: Box::new(Fixed(pose_ac)),
         }
     }
 

@@ -177,14 +177,15 @@ struct Clearances<'p> {
 impl Clearances<'_> {
     fn at(&self, t: f64) -> Result<Clearance> {
         let (a, b) = (self.a, self.b);
-        compute_clearance(
-            &a.shape,
-            &a.motion.pose_ac(t),
-            &b.shape,
-            &b.motion.pose_ac(t),
-            self.resolution_m,
-        )
-        .map_err(|source| query_error(a, b, t, source))
+        let pose = |part: &Part| {
+            part.motion.pose_ac(t).map_err(|source| Error::Pose {
+                part: part.name.clone(),
+                parameter: t,
+                source,
+            })
+        };
+        compute_clearance(&a.shape, &pose(a)?, &b.shape, &pose(b)?, self.resolution_m)
+            .map_err(|source| query_error(a, b, t, source))
     }
 }
 

@@ -110,7 +110,7 @@ fn sweep_clearance_matches_brute_force_on_meshes() {
     let result = sweep_pair(&moving, &fixed, -0.5, 0.4, &SweepSettings::default()).unwrap();
 
     // At the reported parameter, the independent distance agrees.
-    let posed = cube_local.transformed(&motion.pose_ac(result.at_parameter));
+    let posed = cube_local.transformed(&motion.pose_ac(result.at_parameter).unwrap());
     let brute = brute_force_distance(&posed, &slab);
     assert_relative_eq!(result.min_clearance_m, brute, epsilon = 1e-9);
     // The corner at radius 0.7 + 0.1 sqrt(2) reaches x = 0.8414 at t = 0: clearance 0.1586.
@@ -120,7 +120,7 @@ fn sweep_clearance_matches_brute_force_on_meshes() {
     let certified_floor = result.min_clearance_m - result.residual_bound_m;
     for i in 0..=400 {
         let t = -0.5 + 0.9 * f64::from(i) / 400.0;
-        let d = brute_force_distance(&cube_local.transformed(&motion.pose_ac(t)), &slab);
+        let d = brute_force_distance(&cube_local.transformed(&motion.pose_ac(t).unwrap()), &slab);
         assert!(
             d >= certified_floor - 1e-12,
             "t = {t}: brute force {d} < certified {certified_floor}"

@@ -7,8 +7,8 @@ use nalgebra::{Isometry3, Point3};
 /// A nut (ball) whose centre runs along the x axis at unit speed: x = t.
 struct AlongX;
 impl Motion for AlongX {
-    fn pose_ac(&self, t: f64) -> Isometry3<f64> {
-        Isometry3::translation(t, 0.0, 0.0)
+    fn pose_ac(&self, t: f64) -> Result<Isometry3<f64>, flapwright_mechanism::Error> {
+        Ok(Isometry3::translation(t, 0.0, 0.0))
     }
     fn speed_bound(&self) -> f64 {
         1.0
@@ -55,8 +55,8 @@ fn a_nut_that_leaves_between_samples_is_not_missed() {
     // (x = 1.06 and 1.01, both still overlapping): only the certified refinement sees it.
     struct Tent;
     impl Motion for Tent {
-        fn pose_ac(&self, t: f64) -> Isometry3<f64> {
-            Isometry3::translation(1.16 - (t - 1.1).abs(), 0.0, 0.0)
+        fn pose_ac(&self, t: f64) -> Result<Isometry3<f64>, flapwright_mechanism::Error> {
+            Ok(Isometry3::translation(1.16 - (t - 1.1).abs(), 0.0, 0.0))
         }
         fn speed_bound(&self) -> f64 {
             1.0

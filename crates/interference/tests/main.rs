@@ -16,8 +16,8 @@ pub struct TurnAboutZ {
 }
 
 impl Motion for TurnAboutZ {
-    fn pose_ac(&self, t: f64) -> Isometry3<f64> {
-        Isometry3::rotation(Vector3::z() * t)
+    fn pose_ac(&self, t: f64) -> Result<Isometry3<f64>, flapwright_mechanism::Error> {
+        Ok(Isometry3::rotation(Vector3::z() * t))
     }
 
     fn speed_bound(&self) -> f64 {

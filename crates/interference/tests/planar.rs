@@ -1,16 +1,18 @@
 //! The fairing's planar solids are the interference check's 3D parts cut by the station
 //! plane: same places, same radii, at every flap rotation.
 
-use flapwright_interference::{track_parts, LinkSizes, PlanarCapsule, TrackLayout, TrackParts};
-use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec};
+use std::sync::Arc;
+
+use flapwright_interference::{planar_parts, station_parts, PlanarCapsule, StationParts};
+use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec, FlapMechanism};
 use nalgebra::{Isometry3, Point2, Point3, Vector2};
 
-fn thesis_parts() -> (CircularArcTrack, TrackParts, LinkSizes) {
-    let track = CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study()).unwrap();
-    let sizes = LinkSizes::default();
+fn thesis_parts() -> (Arc<dyn FlapMechanism>, StationParts) {
+    let track: Arc<dyn FlapMechanism> =
+        Arc::new(CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study()).unwrap());
     // Station frame = aircraft frame, so the plane is z = 0.
-    let parts = track_parts("st", &Isometry3::identity(), &track, &sizes).unwrap();
-    (track, parts, sizes)
+    let parts = station_parts("st", &Isometry3::identity(), &track).unwrap();
+    (track, parts)
 }
 
 /// Points across the middle of a planar capsule at `fraction` of its radius from its axis.
@@ -29,19 +31,18 @@ fn across_the_middle(capsule: &PlanarCapsule, fraction: f64) -> [Point3<f64>; 2]
 
 #[test]
 fn planar_parts_are_the_3d_parts_in_the_station_plane() {
-    let (track, parts, sizes) = thesis_parts();
-    let layout = TrackLayout::new(&track, &sizes);
-    let end = track.spec().rotation_range_rad;
+    let (track, parts) = thesis_parts();
+    let end = track.deflection_range_rad();
     let mut named = std::collections::BTreeSet::new();
     for t in [0.0, 0.3 * end, end] {
-        for capsule in layout.planar_parts(t) {
-            named.insert(capsule.part);
+        for capsule in planar_parts(track.as_ref(), t).unwrap() {
+            named.insert(capsule.part.clone());
             let name = format!("st.{}", capsule.part);
             let part = parts
                 .parts()
                 .find(|p| p.name == name)
                 .unwrap_or_else(|| panic!("{name}"));
-            let pose = part.motion.pose_ac(t);
+            let pose = part.motion.pose_ac(t).unwrap();
             // Inside at 90 % of the radius, outside at 110 % (the track tubes have 16
             // facets: inradius cos(pi/16) = 98 % of the radius).
             for point in across_the_middle(&capsule, 0.9) {
@@ -52,6 +53,9 @@ fn planar_parts_are_the_3d_parts_in_the_station_plane() {
             }
         }
     }
-    let every_part: std::collections::BTreeSet<_> = parts.parts().map(|p| p.name.trim_start_matches("st.")).collect();
+    let every_part: std::collections::BTreeSet<_> = parts
+        .parts()
+        .map(|p| p.name.trim_start_matches("st.").to_string())
+        .collect();
     assert_eq!(named, every_part, "every 3D part has its planar solids");
 }

@@ -66,8 +66,8 @@ fn plain_sampling_misses_it_and_says_so() {
 /// A point of the part's frame on the unit circle about z at angle t (speed 1, bound 1.1).
 struct Orbit;
 impl flapwright_interference::Motion for Orbit {
-    fn pose_ac(&self, t: f64) -> Isometry3<f64> {
-        Isometry3::translation(t.cos(), t.sin(), 0.0)
+    fn pose_ac(&self, t: f64) -> Result<Isometry3<f64>, flapwright_mechanism::Error> {
+        Ok(Isometry3::translation(t.cos(), t.sin(), 0.0))
     }
     fn speed_bound(&self) -> f64 {
         1.1
@@ -77,8 +77,8 @@ impl flapwright_interference::Motion for Orbit {
 /// Placed once, not moving.
 struct At(Isometry3<f64>);
 impl flapwright_interference::Motion for At {
-    fn pose_ac(&self, _t: f64) -> Isometry3<f64> {
-        self.0
+    fn pose_ac(&self, _t: f64) -> Result<Isometry3<f64>, flapwright_mechanism::Error> {
+        Ok(self.0)
     }
     fn speed_bound(&self) -> f64 {
         0.0

@@ -6,8 +6,8 @@ use anyhow::{Context, Result};
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::parts::{Part as MeshPart, PartKind, WingModel};
 use flapwright_interference::{
-    check_assembly, fairing_depth, track_parts, AboutAxis, Assembly, FairingDepth, InterferenceReport, LinkSizes, Part,
-    Requirements, SweepSettings, TrackLayout,
+    check_assembly, fairing_depth, planar_parts, station_parts, AboutAxis, Assembly, FairingDepth, InterferenceReport,
+    Part, Requirements, SweepSettings,
 };
 
 use crate::pipeline::mechanisms::StationMechanism;
@@ -55,15 +55,14 @@ pub fn check(
             }
         }
     }
-    let sizes = LinkSizes::default();
     let stations = mechanisms
         .iter()
         .zip(placed)
-        .map(|(m, p)| track_parts(&m.station, p.station.frame.aircraft_from_station(), &m.track, &sizes))
+        .map(|(m, p)| station_parts(&m.station, p.station.frame.aircraft_from_station(), &m.mechanism))
         .collect::<flapwright_interference::Result<Vec<_>>>()?;
     let end_rad = mechanisms
         .iter()
-        .map(|m| m.track.spec().rotation_range_rad)
+        .map(|m| m.mechanism.deflection_range_rad())
         .fold(0.0, f64::max);
     let settings = &scene.interference;
     let sweep = SweepSettings {
@@ -92,8 +91,7 @@ pub fn fairing_depths(
     placed: &[PlacedStation],
     flap_names: &[String],
     resolution: &ResolutionScene,
-) -> Vec<FairingDepth> {
-    let sizes = LinkSizes::default();
+) -> Result<Vec<FairingDepth>> {
     mechanisms
         .iter()
         .zip(placed)
@@ -108,12 +106,14 @@ pub fn fairing_depths(
                     (lo.min(p.x), hi.max(p.x))
                 });
             let flap_chord_m = (flap_chord_m.1 - flap_chord_m.0).max(0.0);
-            let end = mechanism.track.spec().rotation_range_rad;
+            let end = mechanism.mechanism.deflection_range_rad();
             let samples = resolution.fairing_samples;
             let parameters: Vec<f64> = (0..samples).map(|i| end * i as f64 / (samples - 1) as f64).collect();
             let points = resolution.fairing_points_per_capsule;
-            let layout = TrackLayout::new(&mechanism.track, &sizes);
-            fairing_depth(&contour, flap_chord_m, &parameters, points, |t| layout.planar_parts(t))
+            fairing_depth(&contour, flap_chord_m, &parameters, points, |t| {
+                planar_parts(mechanism.mechanism.as_ref(), t)
+            })
+            .with_context(|| format!("fairing depth at station {}", mechanism.station))
         })
         .collect()
 }

@@ -7,6 +7,9 @@ use flapwright_mechanism::{
 };
 use nalgebra::Point2;
 use serde::Serialize;
+use std::sync::Arc;
+
+use flapwright_mechanism::FlapMechanism;
 
 use crate::scene::{CircularArcTrackScene, MechanismScene, Problem, Scene, SceneError};
 
@@ -24,6 +27,8 @@ pub struct StationMechanism {
     pub station: String,
     /// The synthesised track.
     pub track: CircularArcTrack,
+    /// The same mechanism behind the seam: what the geometry stages use.
+    pub mechanism: Arc<dyn FlapMechanism>,
 }
 
 /// The report's record of one station's mechanism.
@@ -89,6 +94,7 @@ pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationMechanism>> {
                 problems.extend(degeneracies(&track, &format!("station[{i}].mechanism")));
                 built.push(StationMechanism {
                     station: station.name.clone(),
+                    mechanism: Arc::new(track.clone()),
                     track,
                 })
             }

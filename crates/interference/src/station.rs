@@ -1,0 +1,218 @@
+//! A station's mechanism as collision parts, from the mechanism seam alone
+//! ([`FlapMechanism`]): each solid of each body becomes a part that moves with its body's
+//! pose, with the body's certified speed bound; the joints' touching solids become
+//! [`DeclaredContact`]s. Nothing here names a mechanism kind. Deployment parameter: flap
+//! deflection (rad), common to every station of a flap.
+
+use std::sync::Arc;
+
+use flapwright_geom::collision::CollisionShape;
+use flapwright_mechanism::seam::{BodyRole, FlapMechanism, PlanarShape};
+use nalgebra::{Isometry2, Isometry3, Point2, Point3, Translation3, UnitQuaternion, Vector3};
+use serde::Serialize;
+
+use crate::error::{Error, Result};
+use crate::fairing::PlanarCapsule;
+use crate::part::{Motion, Part};
+
+/// Sides of the round tubes that stand for tracks.
+const TUBE_SIDES: usize = 16;
+
+/// A contact that exists by design (a joint): checked to stay joined, not for clearance.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DeclaredContact {
+    /// Station.
+    pub station: String,
+    /// First part.
+    pub part_a: String,
+    /// Second part.
+    pub part_b: String,
+    /// The joint that makes them touch.
+    pub joint: String,
+}
+
+/// One part of a station and where it belongs in the mechanism.
+#[derive(Debug)]
+pub struct StationPart {
+    /// The collision part, named `<station>.<solid>`.
+    pub part: Part,
+    /// Index of its body in the mechanism's bodies.
+    pub body: usize,
+    /// Its body's role.
+    pub role: BodyRole,
+    /// True when its body moves with the deployment.
+    pub moving: bool,
+}
+
+/// The parts of one station.
+#[derive(Debug)]
+pub struct StationParts {
+    /// Station name.
+    pub station: String,
+    /// Every solid of every body.
+    pub parts: Vec<StationPart>,
+    /// Contacts by design, from the joints.
+    pub declared: Vec<DeclaredContact>,
+    /// Pairs of bodies joined by a joint, with the joint (body indices; the flap body is
+    /// the one with [`BodyRole::Flap`]).
+    pub joined: Vec<(usize, usize, String)>,
+}
+
+impl StationParts {
+    /// Every part of the station.
+    pub fn parts(&self) -> impl Iterator<Item = &Part> {
+        self.parts.iter().map(|p| &p.part)
+    }
+
+    /// The joint joining bodies `a` and `b`, if one does.
+    pub fn joint_between(&self, a: usize, b: usize) -> Option<&str> {
+        self.joined
+            .iter()
+            .find(|(x, y, _)| (*x == a && *y == b) || (*x == b && *y == a))
+            .map(|(_, _, name)| name.as_str())
+    }
+}
+
+/// A body's motion in the aircraft frame: its planar displacement from the seam, lifted
+/// through the station frame, then the solid's own offset (balls are centred at their
+/// local origin).
+struct BodyMotion {
+    mechanism: Arc<dyn FlapMechanism>,
+    body: usize,
+    aircraft_from_station: Isometry3<f64>,
+    station_from_aircraft: Isometry3<f64>,
+    offset: Isometry3<f64>,
+    speed_bound_m_per_rad: f64,
+}
+
+/// The planar displacement as a rigid motion of the station frame (about its z axis).
+fn lift(displacement: &Isometry2<f64>) -> Isometry3<f64> {
+    let t = displacement.translation.vector;
+    Isometry3::from_parts(
+        Translation3::new(t.x, t.y, 0.0),
+        UnitQuaternion::from_axis_angle(&Vector3::z_axis(), displacement.rotation.angle()),
+    )
+}
+
+impl Motion for BodyMotion {
+    fn pose_ac(&self, t: f64) -> std::result::Result<Isometry3<f64>, flapwright_mechanism::Error> {
+        let pose = self.mechanism.pose(t)?;
+        Ok(self.aircraft_from_station * lift(&pose.bodies[self.body]) * self.station_from_aircraft * self.offset)
+    }
+
+    fn speed_bound(&self) -> f64 {
+        self.speed_bound_m_per_rad
+    }
+}
+
+/// Builds the station's parts, placed by `aircraft_from_station` (the station frame: origin
+/// A0 on the hinge axis, z along it).
+pub fn station_parts(
+    station: &str,
+    aircraft_from_station: &Isometry3<f64>,
+    mechanism: &Arc<dyn FlapMechanism>,
+) -> Result<StationParts> {
+    let to_ac = |p: &Point2<f64>| aircraft_from_station.transform_point(&Point3::new(p.x, p.y, 0.0));
+    let query = |source| Error::Query {
+        part_a: format!("{station}.parts"),
+        part_b: String::new(),
+        parameter: 0.0,
+        source: Box::new(source),
+    };
+    let mut parts = Vec::new();
+    for (index, body) in mechanism.bodies().iter().enumerate() {
+        for solid in &body.solids {
+            let name = format!("{station}.{}", solid.name);
+            let (shape, offset) = match &solid.shape {
+                PlanarShape::Capsule { from, to, radius_m } if from == to => {
+                    let centre = to_ac(from);
+                    (
+                        CollisionShape::ball(*radius_m).map_err(query)?,
+                        Isometry3::translation(centre.x, centre.y, centre.z),
+                    )
+                }
+                PlanarShape::Capsule { from, to, radius_m } => (
+                    CollisionShape::capsule(to_ac(from), to_ac(to), *radius_m).map_err(query)?,
+                    Isometry3::identity(),
+                ),
+                PlanarShape::Tube { centre_line, radius_m } => {
+                    let centre_line: Vec<Point3<f64>> = centre_line.iter().map(to_ac).collect();
+                    let mesh = flapwright_geom::tube_mesh(&centre_line, *radius_m, TUBE_SIDES, radius_m * 4.0)
+                        .map_err(query)?;
+                    (CollisionShape::from_mesh(&mesh).map_err(query)?, Isometry3::identity())
+                }
+            };
+            let part = if body.is_moving() {
+                Part::moving(
+                    name,
+                    shape,
+                    BodyMotion {
+                        mechanism: Arc::clone(mechanism),
+                        body: index,
+                        aircraft_from_station: *aircraft_from_station,
+                        station_from_aircraft: aircraft_from_station.inverse(),
+                        offset,
+                        speed_bound_m_per_rad: body.speed_bound.for_shape(&solid.shape),
+                    },
+                )
+            } else {
+                Part::fixed_at(name, shape, offset)
+            };
+            parts.push(StationPart {
+                part,
+                body: index,
+                role: body.role,
+                moving: body.is_moving(),
+            });
+        }
+    }
+    let mut declared = Vec::new();
+    let mut joined = Vec::new();
+    for joint in mechanism.joints() {
+        let label = format!("{} ({})", joint.name, joint.description);
+        for (a, b) in &joint.touching_solids {
+            declared.push(DeclaredContact {
+                station: station.to_string(),
+                part_a: format!("{station}.{a}"),
+                part_b: format!("{station}.{b}"),
+                joint: label.clone(),
+            });
+        }
+        if let [flapwright_mechanism::seam::JointEnd::Body(a), flapwright_mechanism::seam::JointEnd::Body(b)] =
+            joint.ends
+        {
+            joined.push((a, b, joint.name.clone()));
+        }
+    }
+    Ok(StationParts {
+        station: station.to_string(),
+        parts,
+        declared,
+        joined,
+    })
+}
+
+/// The station's solids in its plane at flap deflection `t` (rad), as the fairing measures
+/// them: capsules as they are, tubes as chains of capsules; the same solids as
+/// [`station_parts`].
+pub fn planar_parts(mechanism: &dyn FlapMechanism, t: f64) -> flapwright_mechanism::Result<Vec<PlanarCapsule>> {
+    let pose = mechanism.pose(t)?;
+    let mut capsules = Vec::new();
+    for (body, placement) in mechanism.bodies().iter().zip(&pose.bodies) {
+        for solid in &body.solids {
+            let skeleton: Vec<Point2<f64>> = solid.shape.skeleton().iter().map(|p| placement * p).collect();
+            let radius_m = solid.shape.radius_m();
+            let capsule = |from: Point2<f64>, to: Point2<f64>| PlanarCapsule {
+                part: solid.name.clone(),
+                from,
+                to,
+                radius_m,
+            };
+            match skeleton.as_slice() {
+                [only] => capsules.push(capsule(*only, *only)),
+                many => capsules.extend(many.windows(2).map(|w| capsule(w[0], w[1]))),
+            }
+        }
+    }
+    Ok(capsules)
+}

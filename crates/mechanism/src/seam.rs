@@ -239,6 +239,28 @@ pub struct Joint {
     pub touching_solids: Vec<(String, String)>,
 }
 
+/// A named point of a pose (station frame, m): a pivot, a pin, the centre of mass.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct NamedPoint {
+    /// Name ("A0", "B0", "A").
+    pub name: String,
+    /// Where it stands (m).
+    pub position: Point2<f64>,
+    /// True for a point fixed to the wing.
+    pub fixed: bool,
+}
+
+/// What a station drawing shows of a kind besides its bodies (station frame, m, rad).
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct DrawingNotes {
+    /// One line: the kind and its input travel.
+    pub summary: String,
+    /// Dimension lines: label, from, to (stowed).
+    pub dimensions: Vec<(String, Point2<f64>, Point2<f64>)>,
+    /// Arcs of slots and tracks: name, centre, radius, start and end angle.
+    pub arcs: Vec<(String, Point2<f64>, f64, f64, f64)>,
+}
+
 /// The mechanism at one flap deflection.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct MechanismPose {
@@ -250,14 +272,14 @@ pub struct MechanismPose {
     pub bodies: Vec<Isometry2<f64>>,
     /// The flap's planar displacement from stowed (general: not only a turn about A0).
     pub flap: Isometry2<f64>,
-    /// Named points where they stand (station frame, m): pivots, pins, the centre of mass.
-    pub points: Vec<(String, Point2<f64>)>,
+    /// Named points where they stand: pivots, pins, the centre of mass.
+    pub points: Vec<NamedPoint>,
 }
 
 impl MechanismPose {
     /// The point called `name`, if the kind names one.
     pub fn point(&self, name: &str) -> Option<Point2<f64>> {
-        self.points.iter().find(|(n, _)| n == name).map(|(_, p)| *p)
+        self.points.iter().find(|p| p.name == name).map(|p| p.position)
     }
 }
 
@@ -307,6 +329,9 @@ pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
 
     /// Loads at `input` under `load`.
     fn kinetostatics(&self, input: f64, load: &LoadCase) -> Result<Kinetostatics>;
+
+    /// Dimension lines, slot arcs and a summary for the station drawing.
+    fn drawing_notes(&self) -> DrawingNotes;
 }
 
 /// A solid where it stands at `pose` (station frame).

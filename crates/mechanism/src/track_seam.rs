@@ -20,8 +20,8 @@ use serde::Serialize;
 use crate::error::Result;
 use crate::kinetostatics::LoadCase;
 use crate::seam::{
-    Body, BodyRole, BodySolid, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd, JointKind, Kinetostatics,
-    MechanismPose, PlanarShape, SpeedBound,
+    Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd, JointKind,
+    Kinetostatics, MechanismPose, NamedPoint, PlanarShape, SpeedBound,
 };
 use crate::track_synthesis::CircularArcTrack;
 
@@ -278,16 +278,20 @@ impl FlapMechanism for CircularArcTrack {
         };
         let nut = Translation2::from(a.coords) * Isometry2::rotation(screw_turn) * Translation2::from(-a_stowed.coords);
         let points = [
-            ("A0", Point2::origin()),
-            ("B0", b0),
-            ("A", a),
-            ("B", pose.screw_end_b.position_m),
-            ("D", pose.centre_of_mass_d.position_m),
-            ("F", pose.outer_pin_f.position_m),
-            ("G", pose.inner_pin_g.position_m),
+            ("A0", Point2::origin(), true),
+            ("B0", b0, true),
+            ("A", a, false),
+            ("B", pose.screw_end_b.position_m, false),
+            ("D", pose.centre_of_mass_d.position_m, false),
+            ("F", pose.outer_pin_f.position_m, false),
+            ("G", pose.inner_pin_g.position_m, false),
         ]
         .into_iter()
-        .map(|(name, p)| (name.to_string(), p))
+        .map(|(name, position, fixed)| NamedPoint {
+            name: name.to_string(),
+            position,
+            fixed,
+        })
         .collect();
         Ok(MechanismPose {
             deflection_rad: pose.deflection_rad,
@@ -323,5 +327,41 @@ impl FlapMechanism for CircularArcTrack {
             ],
             transmission_angle_rad: pose.diagnostics.transmission_angle_rad,
         })
+    }
+
+    fn drawing_notes(&self) -> DrawingNotes {
+        let synthesis = self.synthesis();
+        let spec = self.spec();
+        let b0 = synthesis.screw_mount_m;
+        let a = synthesis.nut_pivot_stowed_m;
+        let inner_start = spec.outer_slot_start_angle_rad + spec.inner_slot_offset_angle_rad;
+        DrawingNotes {
+            summary: format!(
+                "circular-arc track with screw jack; s34 {:.1} -> {:.1} mm",
+                synthesis.stroke_start_m * 1e3,
+                synthesis.stroke_end_m * 1e3
+            ),
+            dimensions: vec![
+                ("a1".into(), Point2::origin(), b0),
+                ("a2".into(), Point2::origin(), a),
+                ("a3".into(), b0, b0 + (a - b0).normalize() * spec.screw_length_m),
+            ],
+            arcs: vec![
+                (
+                    "outer slot b1".into(),
+                    Point2::origin(),
+                    spec.outer_slot_radius_m,
+                    spec.outer_slot_start_angle_rad,
+                    spec.outer_slot_start_angle_rad + spec.rotation_range_rad,
+                ),
+                (
+                    "inner slot c1".into(),
+                    Point2::origin(),
+                    spec.inner_slot_radius_m,
+                    inner_start,
+                    inner_start + spec.rotation_range_rad,
+                ),
+            ],
+        }
     }
 }

@@ -8,8 +8,9 @@ use flapwright_drawing::{
 };
 use flapwright_interference::{FairingDepth, InterferenceReport};
 use flapwright_mechanism::urdf::{build_robot, to_xml, trajectory, BaseLink, CutJoint, MeshRef, StationMechanism3d};
+use flapwright_mechanism::FlapMechanism;
 use flapwright_mechanism::Sweep;
-use nalgebra::{Point2, Rotation2};
+use nalgebra::Point2;
 use serde::Serialize;
 
 use crate::output::StagedDir;
@@ -116,49 +117,45 @@ fn style_of(part: &str, flap_names: &[String]) -> PartStyle {
     }
 }
 
-/// The mechanism at flap rotation `t` (rad): links and joints, station frame.
+/// The mechanism at flap deflection `t` (rad), from the seam: each moving body's solids as
+/// links (skeletons), its named points as joints, the flap outline displaced with the flap.
 fn snapshot(
-    mechanism: &StationMechanism,
+    mechanism: &dyn FlapMechanism,
     label: &str,
     t: f64,
-    flap_outline: Vec<Vec<Point2<f64>>>,
-) -> MechanismSnapshot {
-    let synthesis = mechanism.track.synthesis();
-    let spec = mechanism.track.spec();
-    let turn = Rotation2::new(t);
-    let a = turn * synthesis.nut_pivot_stowed_m;
-    let d = turn * spec.centre_of_mass_stowed_m;
-    let f = turn * synthesis.outer_pin_stowed_m;
-    let g = turn * synthesis.inner_pin_stowed_m;
-    let b0 = synthesis.screw_mount_m;
-    let b = b0 + (a - b0).normalize() * spec.screw_length_m;
-    let link = |name: &str, points: Vec<Point2<f64>>| Link {
-        name: name.into(),
-        points,
-    };
-    let joint = |name: &str, at: Point2<f64>, fixed: bool| Joint {
-        name: name.into(),
-        at,
-        fixed,
-    };
-    MechanismSnapshot {
+    flap_outline: &[Vec<Point2<f64>>],
+) -> Result<MechanismSnapshot> {
+    let pose = mechanism.pose(t)?;
+    let links = mechanism
+        .bodies()
+        .iter()
+        .zip(&pose.bodies)
+        .filter(|(body, _)| body.is_moving())
+        .flat_map(|(body, placement)| {
+            body.solids.iter().map(move |solid| Link {
+                name: solid.name.clone(),
+                points: solid.shape.skeleton().iter().map(|p| placement * p).collect(),
+            })
+        })
+        .collect();
+    Ok(MechanismSnapshot {
         label: label.into(),
         deflection_deg: t.to_degrees(),
         flap_outline: flap_outline
             .iter()
-            .map(|polygon| polygon.iter().map(|p| turn * p).collect())
+            .map(|polygon| polygon.iter().map(|p| pose.flap * p).collect())
             .collect(),
-        links: vec![link("screw", vec![b0, b]), link("flap link", vec![a, d, f, d, g])],
-        joints: vec![
-            joint("A0", Point2::origin(), true),
-            joint("B0", b0, true),
-            joint("A", a, false),
-            joint("B", b, false),
-            joint("D", d, false),
-            joint("F", f, false),
-            joint("G", g, false),
-        ],
-    }
+        links,
+        joints: pose
+            .points
+            .iter()
+            .map(|p| Joint {
+                name: p.name.clone(),
+                at: p.position,
+                fixed: p.fixed,
+            })
+            .collect(),
+    })
 }
 
 /// Writes `station-<name>.svg` and `plots-<name>.svg` per station; returns the file names.
@@ -174,8 +171,9 @@ pub fn write_svgs(
     let flap_names: Vec<String> = scene.flap.iter().map(|f| f.name.clone()).collect();
     let mut files = Vec::new();
     for (i, (station, mechanism)) in scene.station.iter().zip(mechanisms).enumerate() {
-        let spec = mechanism.track.spec();
-        let synthesis = mechanism.track.synthesis();
+        let mechanism = mechanism.mechanism.as_ref();
+        let notes = mechanism.drawing_notes();
+        let range = mechanism.deflection_range_rad();
         let sections: Vec<SectionOutline> = placed[i]
             .map(|p| {
                 p.sections
@@ -190,8 +188,12 @@ pub fn write_svgs(
             .unwrap_or_default();
         // Show the rear of the wing only, as the thesis figures do: up to a margin ahead of
         // the furthest-forward mechanism point or slot end, so the mechanism stays legible.
-        let reach = [spec.outer_slot_radius_m, synthesis.screw_mount_m.x]
-            .into_iter()
+        let stowed = mechanism.pose(0.0)?;
+        let reach = notes
+            .arcs
+            .iter()
+            .map(|(_, centre, radius, _, _)| centre.x + radius)
+            .chain(stowed.points.iter().map(|p| p.position.x))
             .fold(0.0, f64::max);
         let x_limit = reach + VIEW_MARGIN_M;
         let sections: Vec<SectionOutline> = sections
@@ -217,57 +219,45 @@ pub fn write_svgs(
             .flap
             .as_ref()
             .and_then(|name| scene.flap.iter().find(|f| &f.name == name))
-            .map_or((spec.rotation_range_rad / 2.0, spec.rotation_range_rad), |f| {
+            .map_or((range / 2.0, range), |f| {
                 (
-                    f.settings.takeoff_deg.to_radians().min(spec.rotation_range_rad),
-                    f.settings.landing_deg.to_radians().min(spec.rotation_range_rad),
+                    f.settings.takeoff_deg.to_radians().min(range),
+                    f.settings.landing_deg.to_radians().min(range),
                 )
             });
         let settings = vec![
-            snapshot(mechanism, "stowed", 0.0, flap_outline.clone()),
-            snapshot(mechanism, "takeoff", takeoff, flap_outline.clone()),
-            snapshot(mechanism, "landing", landing, flap_outline.clone()),
+            snapshot(mechanism, "stowed", 0.0, &flap_outline)?,
+            snapshot(mechanism, "takeoff", takeoff, &flap_outline)?,
+            snapshot(mechanism, "landing", landing, &flap_outline)?,
         ];
-        let envelope = vec![convex_hull(
-            (0..=20)
-                .flat_map(|k| {
-                    let s = snapshot(mechanism, "", spec.rotation_range_rad * k as f64 / 20.0, Vec::new());
-                    s.links.into_iter().flat_map(|l| l.points)
-                })
-                .collect(),
-        )];
+        let mut swept = Vec::new();
+        for k in 0..=20 {
+            let s = snapshot(mechanism, "", range * k as f64 / 20.0, &[])?;
+            swept.extend(s.links.into_iter().flat_map(|l| l.points));
+        }
+        let envelope = vec![convex_hull(swept)];
         let fairing_line = fairings[i].as_ref().filter(|f| f.depth_m > 0.0).map(|f| {
             let y = f.point_st[1];
             let xs = envelope[0].iter().map(|p| p.x);
             let (lo, hi) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)));
             vec![Point2::new(lo, y), Point2::new(hi, y)]
         });
-        let slots = vec![
-            SlotArc {
-                name: "outer slot b1".into(),
-                centre: Point2::origin(),
-                radius_m: spec.outer_slot_radius_m,
-                start_rad: spec.outer_slot_start_angle_rad,
-                end_rad: spec.outer_slot_start_angle_rad + spec.rotation_range_rad,
-            },
-            SlotArc {
-                name: "inner slot c1".into(),
-                centre: Point2::origin(),
-                radius_m: spec.inner_slot_radius_m,
-                start_rad: spec.outer_slot_start_angle_rad + spec.inner_slot_offset_angle_rad,
-                end_rad: spec.outer_slot_start_angle_rad + spec.inner_slot_offset_angle_rad + spec.rotation_range_rad,
-            },
-        ];
-        let dimensions = vec![
-            Dimension::new("a1", Point2::origin(), synthesis.screw_mount_m),
-            Dimension::new("a2", Point2::origin(), synthesis.nut_pivot_stowed_m),
-            Dimension::new(
-                "a3",
-                synthesis.screw_mount_m,
-                synthesis.screw_mount_m
-                    + (synthesis.nut_pivot_stowed_m - synthesis.screw_mount_m).normalize() * spec.screw_length_m,
-            ),
-        ];
+        let slots = notes
+            .arcs
+            .iter()
+            .map(|(name, centre, radius_m, start_rad, end_rad)| SlotArc {
+                name: name.clone(),
+                centre: *centre,
+                radius_m: *radius_m,
+                start_rad: *start_rad,
+                end_rad: *end_rad,
+            })
+            .collect();
+        let dimensions = notes
+            .dimensions
+            .iter()
+            .map(|(label, from, to)| Dimension::new(label, *from, *to))
+            .collect();
         let fairing_text = fairings[i]
             .as_ref()
             .map(|f| {
@@ -280,11 +270,7 @@ pub fn write_svgs(
             .unwrap_or_default();
         let drawing = StationDrawing {
             title: format!("{}: station {}", scene.name, station.name),
-            subtitle: format!(
-                "circular-arc track with screw jack; s34 {:.1} -> {:.1} mm{fairing_text}",
-                synthesis.stroke_start_m * 1e3,
-                synthesis.stroke_end_m * 1e3
-            ),
+            subtitle: format!("{}{fairing_text}", notes.summary),
             sections,
             settings,
             slots,

@@ -318,6 +318,11 @@ pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
     /// The deflection `input` gives (rad).
     fn deflection_at_input(&self, input: f64) -> Result<f64>;
 
+    /// Where the mechanism holds the flap, stowed (station frame, m): pins and pivots on the
+    /// flap. The planes stage measures how far the flap's 3D motion takes them out of the
+    /// station plane; precision positions are met there.
+    fn flap_attachments(&self) -> Vec<NamedPoint>;
+
     /// The rigid bodies, each with its solids and speed bound.
     fn bodies(&self) -> &[Body];
 

@@ -256,6 +256,23 @@ impl FlapMechanism for CircularArcTrack {
         Ok(self.pose(input, 0.0, 0.0)?.deflection_rad)
     }
 
+    /// The nut pivot A and the slot pins F and G.
+    fn flap_attachments(&self) -> Vec<NamedPoint> {
+        let synthesis = self.synthesis();
+        [
+            ("A", synthesis.nut_pivot_stowed_m),
+            ("F", synthesis.outer_pin_stowed_m),
+            ("G", synthesis.inner_pin_stowed_m),
+        ]
+        .into_iter()
+        .map(|(name, position)| NamedPoint {
+            name: name.into(),
+            position,
+            fixed: false,
+        })
+        .collect()
+    }
+
     fn bodies(&self) -> &[Body] {
         &self.bodies
     }

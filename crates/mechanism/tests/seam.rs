@@ -148,3 +148,18 @@ fn loads_cross_check_by_virtual_work_and_key_reactions_by_joint() {
         }
     }
 }
+
+#[test]
+fn flap_attachments_move_with_the_flap() {
+    let track = thesis_track();
+    let attachments = track.flap_attachments();
+    assert_eq!(attachments.len(), 3);
+    for deflection in deflections(&track, 9) {
+        let pose = FlapMechanism::pose(&track, deflection).unwrap();
+        for attachment in &attachments {
+            let moved = pose.flap * attachment.position;
+            let named = pose.point(&attachment.name).unwrap();
+            assert!((moved - named).norm() < 1e-12, "{} at {deflection}", attachment.name);
+        }
+    }
+}

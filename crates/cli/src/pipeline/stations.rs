@@ -69,15 +69,12 @@ pub fn place_all(
                 .with_context(|| format!("placing station {}", station.name))?;
             let a0_ac = constructed.a0_ac;
             let frame = StationFrame::try_from_origin_and_normal(a0_ac, &axis.direction_ac)?;
-            let synthesis = mechanism.track.synthesis();
-            let attachments_ac: Vec<Point3<f64>> = [
-                synthesis.nut_pivot_stowed_m,
-                synthesis.outer_pin_stowed_m,
-                synthesis.inner_pin_stowed_m,
-            ]
-            .iter()
-            .map(|p| frame.aircraft_point_from_station(p))
-            .collect();
+            let attachments_ac: Vec<Point3<f64>> = mechanism
+                .mechanism
+                .flap_attachments()
+                .iter()
+                .map(|p| frame.aircraft_point_from_station(&p.position))
+                .collect();
             let settings = [0.0, flap_scene.settings.takeoff_deg, flap_scene.settings.landing_deg]
                 .map(|deg| FlapSetting {
                     deflection_rad: deg.to_radians(),

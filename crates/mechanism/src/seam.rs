@@ -29,6 +29,7 @@ use serde::Serialize;
 
 use crate::error::Result;
 use crate::kinetostatics::LoadCase;
+use crate::screw_jack::ScrewTorques;
 
 /// What the actuator moves.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -283,6 +284,17 @@ impl MechanismPose {
     }
 }
 
+/// How far a pose is from failing.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PoseHealth {
+    /// Loop-closure residual (m).
+    pub closure_residual_m: f64,
+    /// Condition number of the position Jacobian of the loop equations.
+    pub jacobian_condition_number: f64,
+    /// Angular distance to the nearest toggle (rad).
+    pub distance_to_toggle_rad: f64,
+}
+
 /// Loads at one input under one load case (quasi-static unless the case asks for inertia).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Kinetostatics {
@@ -299,6 +311,10 @@ pub struct Kinetostatics {
     /// Transmission angle (rad): the acute angle between the driving link and the driven
     /// one, pi/2 best, 0 a toggle.
     pub transmission_angle_rad: f64,
+    /// Closure residual, condition number, distance to toggle.
+    pub health: PoseHealth,
+    /// Raise and lower torque of a screw-jack actuator for this load (None for others).
+    pub screw_torques: Option<ScrewTorques>,
 }
 
 /// A mechanism kind, synthesised for one station: everything the other stages use.
@@ -337,6 +353,9 @@ pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
 
     /// Dimension lines, slot arcs and a summary for the station drawing.
     fn drawing_notes(&self) -> DrawingNotes;
+
+    /// The kind's own record for the report: its dimensions and what synthesis computed.
+    fn details(&self) -> serde_json::Value;
 }
 
 /// A solid where it stands at `pose` (station frame).

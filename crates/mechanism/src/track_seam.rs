@@ -21,7 +21,7 @@ use crate::error::Result;
 use crate::kinetostatics::LoadCase;
 use crate::seam::{
     Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd, JointKind,
-    Kinetostatics, MechanismPose, NamedPoint, PlanarShape, SpeedBound,
+    Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound,
 };
 use crate::track_synthesis::CircularArcTrack;
 
@@ -343,6 +343,20 @@ impl FlapMechanism for CircularArcTrack {
                 ("F".into(), forces.outer_slot_reaction_n),
             ],
             transmission_angle_rad: pose.diagnostics.transmission_angle_rad,
+            health: PoseHealth {
+                closure_residual_m: pose.diagnostics.closure_residual_m,
+                jacobian_condition_number: pose.diagnostics.jacobian_condition_number,
+                distance_to_toggle_rad: pose.diagnostics.distance_to_toggle_rad,
+            },
+            screw_torques: Some(forces.screw),
+        })
+    }
+
+    /// `dimensions` (thesis Table 2, SI) and `synthesis` (s34,i, Δs, g2, p2, q2, ...).
+    fn details(&self) -> serde_json::Value {
+        serde_json::json!({
+            "dimensions": self.spec(),
+            "synthesis": self.synthesis(),
         })
     }
 

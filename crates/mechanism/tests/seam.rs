@@ -163,3 +163,36 @@ fn flap_attachments_move_with_the_flap() {
         }
     }
 }
+
+#[test]
+fn a_deployment_through_the_seam_is_the_tracks_own_sweep() {
+    // The kind-neutral sweep gives the thesis track's own numbers, sample for sample.
+    let track = thesis_track();
+    for load in [LoadCase::thesis_cruise(), LoadCase::thesis_landing()] {
+        let seam = flapwright_mechanism::sweep_deployment(&track, 51, &load).unwrap();
+        // The same inputs as the track's own sweep, to rounding (stowed + i (deployed -
+        // stowed) / 50 against s34,i + i Δs / 50); then exactly the same samples.
+        let reference = track.sweep(51, &load).unwrap();
+        for (s, o) in seam.samples.iter().zip(&reference.samples) {
+            assert!((s.input - o.input_m).abs() <= 1e-15, "{} vs {}", s.input, o.input_m);
+        }
+        let own = track.sweep_at(seam.samples.iter().map(|s| s.input), &load);
+        assert_eq!(seam.samples.len(), own.samples.len());
+        assert!(seam.stopped.is_none() && own.stopped.is_none());
+        for (s, o) in seam.samples.iter().zip(&own.samples) {
+            assert_eq!(s.input, o.input_m);
+            assert_eq!(s.deflection_deg, o.deflection_deg);
+            assert_eq!(s.actuator_load, o.actuator_force_n);
+            assert_eq!(s.actuator_load_cross_check_relative, o.force_cross_check_relative);
+            assert_eq!(s.reactions_n["A"], o.joint_reactions_n.nut_pivot_a_n);
+            assert_eq!(s.reactions_n["B0"], o.joint_reactions_n.screw_mount_b0_n);
+            assert_eq!(s.reactions_n["F"], o.joint_reactions_n.outer_pin_f_n);
+            assert_eq!(s.reactions_n["G"], o.joint_reactions_n.inner_pin_g_n);
+            let screw = s.screw_torques_nm.unwrap();
+            assert_eq!(screw.raise_torque_nm, o.raise_torque_nm);
+            assert_eq!(screw.lower_torque_nm, o.lower_torque_nm);
+            assert_eq!(s.jacobian_condition_number, o.jacobian_condition_number);
+            assert_eq!(s.distance_to_toggle_deg, o.distance_to_toggle_deg);
+        }
+    }
+}

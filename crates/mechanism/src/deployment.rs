@@ -1,0 +1,102 @@
+//! Deployment sweeps of any mechanism kind through the seam: kinetostatics at evenly
+//! spaced actuator inputs, stopping (not failing) at the first input where the mechanism
+//! cannot be posed or loaded. Kind-neutral: reactions are keyed by joint name, the
+//! actuator load is a force or a torque as the kind's input is a stroke or an angle.
+
+use std::collections::BTreeMap;
+
+use serde::Serialize;
+
+use crate::error::{Error, Result};
+use crate::kinetostatics::LoadCase;
+use crate::screw_jack::ScrewTorques;
+use crate::seam::FlapMechanism;
+
+/// One sample of a deployment: a row of the report's `samples[]`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DeploymentSample {
+    /// Actuator input (m for a stroke, rad for an angle).
+    pub input: f64,
+    /// Flap deflection (deg), trailing edge down positive.
+    pub deflection_deg: f64,
+    /// Transmission angle (deg).
+    pub transmission_angle_deg: f64,
+    /// Actuator force (N) or torque (N m) by equilibrium.
+    pub actuator_load: f64,
+    /// |virtual work - equilibrium| / max(|load|, 1): the cross-check of the two methods.
+    pub actuator_load_cross_check_relative: f64,
+    /// Reaction at each joint (N), by joint name.
+    pub reactions_n: BTreeMap<String, f64>,
+    /// Loop-closure residual (m).
+    pub closure_residual_m: f64,
+    /// Position Jacobian condition number.
+    pub jacobian_condition_number: f64,
+    /// Distance to the nearest toggle (deg).
+    pub distance_to_toggle_deg: f64,
+    /// Raise and lower torque of a screw-jack actuator (absent for others).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub screw_torques_nm: Option<ScrewTorques>,
+}
+
+/// Where and why a deployment stopped early.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DeploymentStop {
+    /// Index of the first sample that failed.
+    pub sample_index: usize,
+    /// Its input.
+    pub input: f64,
+    /// The reason.
+    pub reason: Error,
+}
+
+/// A deployment under one load case.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Deployment {
+    /// Load case name.
+    pub load_case: String,
+    /// Samples up to (not including) the stop, if any.
+    pub samples: Vec<DeploymentSample>,
+    /// Set when the deployment could not reach the end.
+    pub stopped: Option<DeploymentStop>,
+}
+
+/// `samples` evenly spaced inputs from stowed to deployed (both included) under `load`.
+///
+/// Errors: [`Error::TooFewSamples`] for fewer than 2 samples. A pose or load failure does
+/// not error: the deployment stops there and says why in [`Deployment::stopped`].
+pub fn sweep_deployment(mechanism: &dyn FlapMechanism, samples: usize, load: &LoadCase) -> Result<Deployment> {
+    if samples < 2 {
+        return Err(Error::TooFewSamples { samples });
+    }
+    let mut deployment = Deployment {
+        load_case: load.name.clone(),
+        samples: Vec::with_capacity(samples),
+        stopped: None,
+    };
+    for (sample_index, input) in mechanism.input_range().samples(samples).into_iter().enumerate() {
+        match mechanism.kinetostatics(input, load) {
+            Ok(loads) => deployment.samples.push(DeploymentSample {
+                input,
+                deflection_deg: loads.deflection_rad.to_degrees(),
+                transmission_angle_deg: loads.transmission_angle_rad.to_degrees(),
+                actuator_load: loads.actuator_load,
+                actuator_load_cross_check_relative: (loads.actuator_load_virtual_work - loads.actuator_load).abs()
+                    / loads.actuator_load.abs().max(1.0),
+                reactions_n: loads.reactions.into_iter().collect(),
+                closure_residual_m: loads.health.closure_residual_m,
+                jacobian_condition_number: loads.health.jacobian_condition_number,
+                distance_to_toggle_deg: loads.health.distance_to_toggle_rad.to_degrees(),
+                screw_torques_nm: loads.screw_torques,
+            }),
+            Err(reason) => {
+                deployment.stopped = Some(DeploymentStop {
+                    sample_index,
+                    input,
+                    reason,
+                });
+                break;
+            }
+        }
+    }
+    Ok(deployment)
+}

@@ -54,7 +54,7 @@ fn export_writes_a_valid_urdf_with_its_meshes_and_drawings() {
         let reported = station["mechanism"]["load_cases"][0]["samples"].as_array().unwrap();
         assert_eq!(samples.len(), reported.len(), "trajectory and report sample counts");
         for (sample, reported) in samples.iter().zip(reported) {
-            assert_eq!(sample["input_m"][i], reported["input_m"], "station {i}");
+            assert_eq!(sample["input_m"][i], reported["input"], "station {i}");
         }
     }
 

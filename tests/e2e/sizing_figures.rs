@@ -97,7 +97,7 @@ fn work_per_deployment_balances_the_hinge_moments_work() {
         .as_array()
         .unwrap()
         .clone();
-    let s: Vec<f64> = samples.iter().map(|x| x["input_m"].as_f64().unwrap()).collect();
+    let s: Vec<f64> = samples.iter().map(|x| x["input"].as_f64().unwrap()).collect();
     let theta: Vec<f64> = samples
         .iter()
         .map(|x| x["deflection_deg"].as_f64().unwrap().to_radians())

@@ -82,18 +82,20 @@ fn default_scene_stations_have_frames_sections_and_sweeps() {
             let samples = case["samples"].as_array().unwrap();
             assert_eq!(samples.len(), 51);
             for key in [
-                "input_m",
+                "input",
                 "deflection_deg",
                 "transmission_angle_deg",
-                "actuator_force_n",
-                "raise_torque_nm",
-                "lower_torque_nm",
+                "actuator_load",
+                "actuator_load_cross_check_relative",
                 "closure_residual_m",
             ] {
                 assert!(samples[0][key].is_f64(), "sample field {key}");
             }
+            for key in ["raise_torque_nm", "lower_torque_nm"] {
+                assert!(samples[0]["screw_torques_nm"][key].is_f64(), "screw torque {key}");
+            }
             for joint in ["A", "B0", "F", "G"] {
-                assert!(samples[0]["joint_reactions_n"][joint].is_f64(), "reaction at {joint}");
+                assert!(samples[0]["reactions_n"][joint].is_f64(), "reaction at {joint}");
             }
             let last = samples.last().unwrap();
             assert!((last["deflection_deg"].as_f64().unwrap() - 35.0).abs() < 1e-9);
@@ -125,7 +127,9 @@ fn thesis_case_study_scene_reproduces_table_3() {
         "{stages:?}"
     );
     let mechanism = &report["stations"][0]["mechanism"];
-    let synthesis = &mechanism["synthesis"];
+    assert_eq!(mechanism["kind"], "circular-arc-track");
+    assert_eq!(mechanism["input"]["quantity"], "stroke");
+    let synthesis = &mechanism["details"]["synthesis"];
     assert!((synthesis["stroke_start_m"].as_f64().unwrap() * 1e3 - 80.3).abs() < 0.05);
     assert!((synthesis["stroke_m"].as_f64().unwrap() * 1e3 - 144.3).abs() < 0.05);
     let cases: BTreeMap<String, &Value> = mechanism["load_cases"]
@@ -140,11 +144,11 @@ fn thesis_case_study_scene_reproduces_table_3() {
             .unwrap()
             .iter()
             .map(|s| match quantity {
-                "F_input" => s["actuator_force_n"].as_f64().unwrap(),
-                "G12G" => s["joint_reactions_n"]["G"].as_f64().unwrap(),
-                "G12F" => s["joint_reactions_n"]["F"].as_f64().unwrap(),
-                "T_R" => s["raise_torque_nm"].as_f64().unwrap() * 1e3,
-                "T_L" => s["lower_torque_nm"].as_f64().unwrap() * 1e3,
+                "F_input" => s["actuator_load"].as_f64().unwrap(),
+                "G12G" => s["reactions_n"]["G"].as_f64().unwrap(),
+                "G12F" => s["reactions_n"]["F"].as_f64().unwrap(),
+                "T_R" => s["screw_torques_nm"]["raise_torque_nm"].as_f64().unwrap() * 1e3,
+                "T_L" => s["screw_torques_nm"]["lower_torque_nm"].as_f64().unwrap() * 1e3,
                 other => panic!("unknown quantity {other}"),
             })
             .collect()

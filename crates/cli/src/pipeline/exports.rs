@@ -8,8 +8,8 @@ use flapwright_drawing::{
 };
 use flapwright_interference::{FairingDepth, InterferenceReport};
 use flapwright_mechanism::urdf::{build_robot, to_xml, trajectory, BaseLink, CutJoint, MeshRef, StationMechanism3d};
+use flapwright_mechanism::Deployment;
 use flapwright_mechanism::FlapMechanism;
-use flapwright_mechanism::Sweep;
 use nalgebra::Point2;
 use serde::Serialize;
 
@@ -163,7 +163,7 @@ pub fn write_svgs(
     scene: &Scene,
     mechanisms: &[StationMechanism],
     placed: &[Option<&PlacedStation>],
-    sweeps: &[Option<&[Sweep]>],
+    sweeps: &[Option<&[Deployment]>],
     fairings: &[Option<FairingDepth>],
     interference: Option<&InterferenceReport>,
     out: &StagedDir,
@@ -288,7 +288,13 @@ pub fn write_svgs(
                 (Some(p), Some(flap_name)) => flap_behind_wing(p, flap_name)?,
                 _ => None,
             };
-            let plots = station_plots(cases, flap_behind_wing.as_ref(), interference, &station.name);
+            let plots = station_plots(
+                cases,
+                mechanism.input_range().quantity,
+                flap_behind_wing.as_ref(),
+                interference,
+                &station.name,
+            );
             // A station whose every sweep stopped at once has nothing to plot.
             if !plots.is_empty() {
                 let svg = render_plots_svg(&format!("{}: station {}", scene.name, station.name), &plots)

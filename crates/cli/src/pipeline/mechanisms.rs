@@ -1,15 +1,15 @@
 //! Mechanism stage: synthesise each station's mechanism and sweep it under every load case.
 
 use anyhow::Result;
+use std::sync::Arc;
+
+use flapwright_mechanism::seam::{InputQuantity, InputRange};
 use flapwright_mechanism::{
-    CircularArcTrack, CircularArcTrackSpec, ExternalMoment, LoadCase, ScrewJack, Sweep, TrackSynthesis,
-    DEFAULT_TOGGLE_TOLERANCE_RAD,
+    sweep_deployment, CircularArcTrack, CircularArcTrackSpec, Deployment, ExternalMoment, FlapMechanism, LoadCase,
+    ScrewJack, DEFAULT_TOGGLE_TOLERANCE_RAD,
 };
 use nalgebra::Point2;
 use serde::Serialize;
-use std::sync::Arc;
-
-use flapwright_mechanism::FlapMechanism;
 
 use crate::scene::{CircularArcTrackScene, MechanismScene, Problem, Scene, SceneError};
 
@@ -31,17 +31,17 @@ pub struct StationMechanism {
     pub mechanism: Arc<dyn FlapMechanism>,
 }
 
-/// The report's record of one station's mechanism.
+/// The report's record of one station's mechanism: kind-neutral apart from `details`.
 #[derive(Debug, Clone, Serialize)]
 pub struct MechanismReport {
-    /// Mechanism kind.
+    /// Mechanism kind (the scene's `kind`).
     pub kind: &'static str,
-    /// The dimensions used (SI).
-    pub dimensions: CircularArcTrackSpec,
-    /// What synthesis computed (thesis steps 7-10).
-    pub synthesis: TrackSynthesis,
-    /// One sweep per load case.
-    pub load_cases: Vec<Sweep>,
+    /// The actuator input: stroke (m) or angle (rad), stowed and deployed.
+    pub input: InputRange,
+    /// The kind's own record: its dimensions and what synthesis computed.
+    pub details: serde_json::Value,
+    /// One deployment per load case.
+    pub load_cases: Vec<Deployment>,
 }
 
 fn spec_from_scene(m: &CircularArcTrackScene, screw_length_m: f64) -> CircularArcTrackSpec {
@@ -212,25 +212,38 @@ pub fn sweep_station(
         include_inertia: false,
     }];
     let cases = if cases.is_empty() { &weight_only[..] } else { cases };
-    let track = &mechanism.track;
-    for warning in &track.synthesis().warnings {
+    for warning in &mechanism.track.synthesis().warnings {
         warnings.push(format!("station {}: {warning}", mechanism.station));
     }
-    let mut sweeps = Vec::with_capacity(cases.len());
+    let seam = mechanism.mechanism.as_ref();
+    let input = seam.input_range();
+    let mut deployments = Vec::with_capacity(cases.len());
     for case in cases {
-        let sweep = track.sweep(samples, case)?;
-        if let Some(stop) = &sweep.stopped {
+        let deployment = sweep_deployment(seam, samples, case)?;
+        if let Some(stop) = &deployment.stopped {
             warnings.push(format!(
-                "station {}, load case {}: deployment stopped at sample {} (s34 = {:.6} m): {}",
-                mechanism.station, case.name, stop.sample_index, stop.input_m, stop.reason
+                "station {}, load case {}: deployment stopped at sample {} (input {}): {}",
+                mechanism.station,
+                case.name,
+                stop.sample_index,
+                describe_input(input.quantity, stop.input),
+                stop.reason
             ));
         }
-        sweeps.push(sweep);
+        deployments.push(deployment);
     }
     Ok(MechanismReport {
-        kind: "circular-arc-track",
-        dimensions: *track.spec(),
-        synthesis: track.synthesis().clone(),
-        load_cases: sweeps,
+        kind: seam.kind(),
+        input,
+        details: seam.details(),
+        load_cases: deployments,
     })
+}
+
+/// An input value as people read it: a stroke in mm, an angle in degrees.
+pub fn describe_input(quantity: InputQuantity, input: f64) -> String {
+    match quantity {
+        InputQuantity::Stroke => format!("{:.3} mm", input * 1e3),
+        InputQuantity::Angle => format!("{:.3} deg", input.to_degrees()),
+    }
 }

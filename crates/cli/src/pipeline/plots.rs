@@ -3,73 +3,96 @@
 
 use flapwright_drawing::{Plot, Series};
 use flapwright_interference::{InterferenceReport, PairResult};
-use flapwright_mechanism::Sweep;
+use flapwright_mechanism::seam::InputQuantity;
+use flapwright_mechanism::{Deployment, DeploymentSample};
 use flapwright_planes::FlapBehindWing;
 
-/// The plots of one station: kinematics and loads against the nut position (first load
+/// The plots of one station: kinematics and loads against the actuator input (first load
 /// case, or every case where they differ), gap and overlap when the station has a flap
 /// section, and the clearance of its closest pairs when the interference check ran.
 /// Load cases whose sweep stopped before its first sample have nothing to draw and are
 /// left out; so are plots left with nothing (the report says why the sweep stopped).
 pub fn station_plots(
-    all_cases: &[Sweep],
+    all_cases: &[Deployment],
+    input: InputQuantity,
     flap_behind_wing: Option<&FlapBehindWing>,
     interference: Option<&InterferenceReport>,
     station: &str,
 ) -> Vec<Plot> {
-    let series = |case: &Sweep, name: String, y: &dyn Fn(&flapwright_mechanism::SweepSample) -> f64| Series {
-        name,
-        points: case.samples.iter().map(|s| (s.input_m * 1e3, y(s))).collect(),
+    // Strokes in mm, angles in degrees.
+    let (x_label, x_scale, load_label) = match input {
+        InputQuantity::Stroke => ("actuator stroke (mm)", 1e3, "actuator force (N)"),
+        InputQuantity::Angle => (
+            "actuator angle (deg)",
+            180.0 / std::f64::consts::PI,
+            "actuator torque (N m)",
+        ),
     };
-    let cases: Vec<Sweep> = all_cases.iter().filter(|c| !c.samples.is_empty()).cloned().collect();
+    let series = |case: &Deployment, name: String, y: &dyn Fn(&DeploymentSample) -> Option<f64>| Series {
+        name,
+        points: case
+            .samples
+            .iter()
+            .filter_map(|s| Some((s.input * x_scale, y(s)?)))
+            .collect(),
+    };
+    let cases: Vec<Deployment> = all_cases.iter().filter(|c| !c.samples.is_empty()).cloned().collect();
     let cases = cases.as_slice();
-    let x_label = "nut position s34 (mm)".to_string();
     let first = &cases[..cases.len().min(1)];
-    let plot =
-        |title: &str, y_label: &str, cases: &[Sweep], y: &dyn Fn(&flapwright_mechanism::SweepSample) -> f64| Plot {
-            title: title.into(),
-            x_label: x_label.clone(),
-            y_label: y_label.into(),
-            series: cases.iter().map(|c| series(c, c.load_case.clone(), y)).collect(),
-        };
+    let plot = |title: &str, y_label: &str, cases: &[Deployment], y: &dyn Fn(&DeploymentSample) -> Option<f64>| Plot {
+        title: title.into(),
+        x_label: x_label.into(),
+        y_label: y_label.into(),
+        series: cases.iter().map(|c| series(c, c.load_case.clone(), y)).collect(),
+    };
+    let joints: Vec<String> = first
+        .iter()
+        .flat_map(|c| c.samples.first())
+        .flat_map(|s| s.reactions_n.keys().cloned())
+        .collect();
     let mut plots = vec![
-        plot("Flap deflection", "deflection (deg)", first, &|s| s.deflection_deg),
-        plot("Transmission angle", "transmission angle (deg)", first, &|s| {
-            s.transmission_angle_deg
+        plot("Flap deflection", "deflection (deg)", first, &|s| {
+            Some(s.deflection_deg)
         }),
-        plot("Actuator force", "F_input (N)", cases, &|s| s.actuator_force_n),
-        plot("Screw raise torque", "T_R (N m)", cases, &|s| s.raise_torque_nm),
-        plot("Screw lower torque", "T_L (N m)", cases, &|s| s.lower_torque_nm),
+        plot("Transmission angle", "transmission angle (deg)", first, &|s| {
+            Some(s.transmission_angle_deg)
+        }),
+        plot("Actuator load", load_label, cases, &|s| Some(s.actuator_load)),
+        plot("Screw raise torque", "T_R (N m)", cases, &|s| {
+            s.screw_torques_nm.map(|t| t.raise_torque_nm)
+        }),
+        plot("Screw lower torque", "T_L (N m)", cases, &|s| {
+            s.screw_torques_nm.map(|t| t.lower_torque_nm)
+        }),
         Plot {
             title: format!(
-                "Slot reactions ({})",
+                "Joint reactions ({})",
                 first.first().map_or("", |c| c.load_case.as_str())
             ),
-            x_label: x_label.clone(),
+            x_label: x_label.into(),
             y_label: "reaction (N)".into(),
             series: first
                 .iter()
                 .flat_map(|c| {
-                    [
-                        series(c, "G12F, outer slot".into(), &|s| s.joint_reactions_n.outer_pin_f_n),
-                        series(c, "G12G, inner slot".into(), &|s| s.joint_reactions_n.inner_pin_g_n),
-                    ]
+                    joints
+                        .iter()
+                        .map(|joint| series(c, joint.clone(), &|s| s.reactions_n.get(joint).copied()))
                 })
                 .collect(),
         },
     ];
     if let Some(measure) = flap_behind_wing {
-        let at = |s: &flapwright_mechanism::SweepSample| measure.at_rotation(s.deflection_deg.to_radians());
+        let at = |s: &DeploymentSample| measure.at_rotation(s.deflection_deg.to_radians());
         plots.push(Plot {
             title: "Gap and overlap behind the cove lip".into(),
-            x_label: x_label.clone(),
+            x_label: x_label.into(),
             y_label: "% of local chord".into(),
             series: first
                 .iter()
                 .flat_map(|c| {
                     [
-                        series(c, "gap".into(), &|s| at(s).gap_percent_chord),
-                        series(c, "overlap".into(), &|s| at(s).overlap_percent_chord),
+                        series(c, "gap".into(), &|s| Some(at(s).gap_percent_chord)),
+                        series(c, "overlap".into(), &|s| Some(at(s).overlap_percent_chord)),
                     ]
                 })
                 .collect(),

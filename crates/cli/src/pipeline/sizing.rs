@@ -2,7 +2,7 @@
 //! Euler buckling), the torque-tube line between the stations, drive power and masses.
 
 use anyhow::{Context, Result};
-use flapwright_mechanism::SweepSample;
+use flapwright_mechanism::DeploymentSample;
 use flapwright_sizing::{
     axial_envelope_n, deployment_work_j, drive_demand, size_rod, size_screw_jack, size_torque_tubes, DeploymentWork,
     Material, RodInput, ScrewJackInput, ScrewJackSizing, SectionShape, SizingReport, TorqueTubeInput,
@@ -61,7 +61,7 @@ pub fn size_all(
     let mut jacks: Vec<Option<ScrewJackSizing>> = Vec::new();
     let mut notes = Vec::new();
     for (mechanism, report) in mechanisms.iter().zip(reports) {
-        let samples: Vec<&SweepSample> = report
+        let samples: Vec<&DeploymentSample> = report
             .iter()
             .flat_map(|r| r.load_cases.iter())
             .flat_map(|case| case.samples.iter())
@@ -74,17 +74,19 @@ pub fn size_all(
             jacks.push(None);
             continue;
         }
-        let forces: Vec<f64> = samples.iter().map(|s| s.actuator_force_n).collect();
-        let max_raise = samples
+        let forces: Vec<f64> = samples.iter().map(|s| s.actuator_load).collect();
+        // The track's actuator is a screw jack: every sample has its torques.
+        let torques: Vec<_> = samples.iter().filter_map(|s| s.screw_torques_nm).collect();
+        let max_raise = torques
             .iter()
-            .map(|s| s.raise_torque_nm)
+            .map(|t| t.raise_torque_nm)
             .fold(f64::NEG_INFINITY, f64::max);
-        let max_lower = samples
+        let max_lower = torques
             .iter()
-            .map(|s| s.lower_torque_nm)
+            .map(|t| t.lower_torque_nm)
             .fold(f64::NEG_INFINITY, f64::max);
         // The smallest lowering torque decides self-locking over the whole deployment.
-        let min_lower = samples.iter().map(|s| s.lower_torque_nm).fold(f64::INFINITY, f64::min);
+        let min_lower = torques.iter().map(|t| t.lower_torque_nm).fold(f64::INFINITY, f64::min);
         let jack = size_screw_jack(
             &ScrewJackInput {
                 station: mechanism.station.clone(),
@@ -187,9 +189,13 @@ fn deployment_work(
             let angles: Vec<f64> = sweep
                 .samples
                 .iter()
-                .map(|s| 2.0 * std::f64::consts::PI * (s.input_m - sweep.samples[0].input_m) / lead)
+                .map(|s| 2.0 * std::f64::consts::PI * (s.input - sweep.samples[0].input) / lead)
                 .collect();
-            let torques: Vec<f64> = sweep.samples.iter().map(|s| s.raise_torque_nm).collect();
+            let torques: Vec<f64> = sweep
+                .samples
+                .iter()
+                .map(|s| s.screw_torques_nm.map_or(0.0, |t| t.raise_torque_nm))
+                .collect();
             total += deployment_work_j(&angles, &torques)?;
         }
         if complete {

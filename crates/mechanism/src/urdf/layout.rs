@@ -92,17 +92,8 @@ pub(crate) fn velocity_limits(track: &CircularArcTrack) -> Result<[f64; 3]> {
 
 /// `samples` evenly spaced nut positions from s34,i to s34,f, both ends exact.
 pub(crate) fn stroke_inputs(track: &CircularArcTrack, samples: usize) -> Vec<f64> {
-    let synthesis = track.synthesis();
-    let last = samples.saturating_sub(1).max(1) as f64;
-    (0..samples)
-        .map(|i| {
-            if i + 1 == samples {
-                synthesis.stroke_end_m
-            } else {
-                synthesis.stroke_start_m + synthesis.stroke_m * i as f64 / last
-            }
-        })
-        .collect()
+    // The seam's spacing, so trajectory samples are the report's deployment samples.
+    crate::FlapMechanism::input_range(track).samples(samples)
 }
 
 /// Joint values of a pose, trajectory order: deflection (rad), θ13 - θ13,i (rad), s34 (m).

@@ -15,13 +15,17 @@ pub struct AboutAxis {
     /// Largest distance of any point of the part from the axis (m): the speed bound per
     /// radian.
     pub max_radius_m: f64,
+    /// The part turns up to this angle (rad) and stays there for larger `t`: a flap stops
+    /// at its own full deflection while another flap of the wing turns further.
+    pub max_angle_rad: f64,
 }
 
 impl AboutAxis {
     /// The pose at angle `t` (rad).
     pub fn pose_at(&self, t: f64) -> Isometry3<f64> {
         let p = self.point_ac.coords;
-        Translation3::from(p) * UnitQuaternion::from_axis_angle(&self.direction_ac, t) * Translation3::from(-p)
+        let angle = t.min(self.max_angle_rad);
+        Translation3::from(p) * UnitQuaternion::from_axis_angle(&self.direction_ac, angle) * Translation3::from(-p)
     }
 
     /// Largest distance from the axis (m) of `points` (aircraft frame).

@@ -95,8 +95,10 @@ fn lift(displacement: &Isometry2<f64>) -> Isometry3<f64> {
 }
 
 impl Motion for BodyMotion {
+    /// Beyond its own deflection range (another flap of the wing may turn further) the
+    /// body stays where the deployment ends: speed zero there, so the bound still holds.
     fn pose_ac(&self, t: f64) -> std::result::Result<Isometry3<f64>, flapwright_mechanism::Error> {
-        let pose = self.mechanism.pose(t)?;
+        let pose = self.mechanism.pose(t.min(self.mechanism.deflection_range_rad()))?;
         Ok(self.aircraft_from_station * lift(&pose.bodies[self.body]) * self.station_from_aircraft * self.offset)
     }
 

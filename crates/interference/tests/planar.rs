@@ -59,3 +59,20 @@ fn planar_parts_are_the_3d_parts_in_the_station_plane() {
         .collect();
     assert_eq!(named, every_part, "every 3D part has its planar solids");
 }
+
+#[test]
+fn parts_stay_at_the_end_of_their_own_deployment_beyond_it() {
+    // Another flap of the wing may turn further: this station's parts stop at its own
+    // full deflection (and can always be posed there) instead of failing out of slot.
+    let (track, parts) = thesis_parts();
+    let end = track.deflection_range_rad();
+    for part in parts.parts().filter(|p| p.is_moving()) {
+        let at_end = part.motion.pose_ac(end).unwrap();
+        let beyond = part.motion.pose_ac(end + 0.3).unwrap();
+        assert!(
+            (at_end.to_homogeneous() - beyond.to_homogeneous()).norm() < 1e-12,
+            "{}",
+            part.name
+        );
+    }
+}

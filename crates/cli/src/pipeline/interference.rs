@@ -37,6 +37,14 @@ pub fn check(
                     .with_context(|| format!("flap {} in the model", part.name))?;
                 let (point_ac, direction_ac) = flap.hinge_axis_ac();
                 let max_radius_m = AboutAxis::radius_of(&point_ac, &direction_ac, &part.mesh.vertices);
+                // The flap's own deflection range (its stations share it, by validation).
+                let max_angle_rad = scene
+                    .station
+                    .iter()
+                    .zip(mechanisms)
+                    .filter(|(station, _)| station.flap.as_deref() == Some(part.name.as_str()))
+                    .map(|(_, m)| m.mechanism.deflection_range_rad())
+                    .fold(0.0, f64::max);
                 flaps.push(Part::moving(
                     part.name.clone(),
                     shape,
@@ -44,6 +52,7 @@ pub fn check(
                         point_ac,
                         direction_ac,
                         max_radius_m,
+                        max_angle_rad,
                     },
                 ));
             }

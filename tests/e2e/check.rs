@@ -128,7 +128,7 @@ fn torque_tube_in_the_screw_path_fails_and_junit_names_the_pair() {
     );
     assert!(failing
         .iter()
-        .all(|case| case.contains("clearance") && case.contains("flap rotation")));
+        .all(|case| case.contains("clearance") && case.contains("% of the deployment")));
     // Overlapping pairs say how deep: the screw crosses the tube (radius 20 mm, 24 facets)
     // so its surface reaches the tube's axis, about the inradius deep.
     let report: serde_json::Value =

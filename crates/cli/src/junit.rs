@@ -4,14 +4,14 @@ use flapwright_interference::{ContactResult, InterferenceReport, PairClearance};
 use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
 
 /// One line on a failing pair: the parts, the clearance or how deep they overlap, the
-/// flap rotation and where (aircraft frame).
+/// place in the deployment (% of the actuator travel) and where (aircraft frame).
 pub fn describe_failure(c: &PairClearance, required_clearance_m: f64) -> String {
     let [ax, ay, az] = c.point_a_ac;
     let [bx, by, bz] = c.point_b_ac;
-    let at = c.at_parameter.to_degrees();
+    let at = 100.0 * c.at_parameter;
     if c.min_clearance_m <= 0.0 {
         format!(
-            "{} and {} overlap (clearance 0, required {:.2} mm): deepest {:.1} mm (surface sampled every {:.1} mm) at flap rotation {at:.2} deg, from ({ax:.4}, {ay:.4}, {az:.4}) on {} to ({bx:.4}, {by:.4}, {bz:.4}) on {} (aircraft frame, m)",
+            "{} and {} overlap (clearance 0, required {:.2} mm): deepest {:.1} mm (surface sampled every {:.1} mm) at {at:.1} % of the deployment, from ({ax:.4}, {ay:.4}, {az:.4}) on {} to ({bx:.4}, {by:.4}, {bz:.4}) on {} (aircraft frame, m)",
             c.part_a,
             c.part_b,
             required_clearance_m * 1e3,
@@ -22,7 +22,7 @@ pub fn describe_failure(c: &PairClearance, required_clearance_m: f64) -> String 
         )
     } else if c.min_clearance_m < required_clearance_m {
         format!(
-            "{} and {}: clearance {:.2} mm (certified >= {:.2} mm) is below the required {:.2} mm at flap rotation {at:.2} deg; closest points (aircraft frame, m) ({ax:.4}, {ay:.4}, {az:.4}) and ({bx:.4}, {by:.4}, {bz:.4})",
+            "{} and {}: clearance {:.2} mm (certified >= {:.2} mm) is below the required {:.2} mm at {at:.1} % of the deployment; closest points (aircraft frame, m) ({ax:.4}, {ay:.4}, {az:.4}) and ({bx:.4}, {by:.4}, {bz:.4})",
             c.part_a,
             c.part_b,
             c.min_clearance_m * 1e3,
@@ -32,7 +32,7 @@ pub fn describe_failure(c: &PairClearance, required_clearance_m: f64) -> String 
     } else {
         // The samples clear the requirement but the bound between them does not.
         format!(
-            "{} and {}: smallest sampled clearance {:.2} mm (at flap rotation {at:.2} deg) is not certified: between samples it may be as low as {:.2} mm, below the required {:.2} mm, after {} evaluations; lower interference.tolerance_m or raise interference.max_evaluations",
+            "{} and {}: smallest sampled clearance {:.2} mm (at {at:.1} % of the deployment) is not certified: between samples it may be as low as {:.2} mm, below the required {:.2} mm, after {} evaluations; lower interference.tolerance_m or raise interference.max_evaluations",
             c.part_a,
             c.part_b,
             c.min_clearance_m * 1e3,
@@ -47,14 +47,14 @@ pub fn describe_failure(c: &PairClearance, required_clearance_m: f64) -> String 
 pub fn describe_joint_failure(c: &ContactResult, joint_play_m: f64) -> String {
     let (d, s) = (&c.declared, &c.separation);
     format!(
-        "{} and {} (joint {}) come {:.2} mm apart (certified <= {:.2} mm), more than the joint's play {:.2} mm, at flap rotation {:.2} deg",
+        "{} and {} (joint {}) come {:.2} mm apart (certified <= {:.2} mm), more than the joint's play {:.2} mm, at {:.1} % of the deployment",
         d.part_a,
         d.part_b,
         d.joint,
         s.max_separation_m * 1e3,
         s.upper_bound_m * 1e3,
         joint_play_m * 1e3,
-        s.at_parameter.to_degrees(),
+        100.0 * s.at_parameter,
     )
 }
 

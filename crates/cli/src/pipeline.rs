@@ -150,7 +150,7 @@ pub fn design_with_progress(
         }
         if outputs.interference || !full {
             let checked = stages.run("interference", || {
-                interference::check(scene, &model, &meshed, &mechanisms, &placed)
+                interference::check(scene, &meshed, &mechanisms, &placed)
             })?;
             for pair in checked.pairs.iter().filter(|p| !p.passes) {
                 warnings.push(format!(

@@ -92,8 +92,9 @@ pub struct Requirements {
 /// The interference section of the report.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct InterferenceReport {
-    /// Deployment range swept (flap rotation, rad).
-    pub deployment_range_rad: [f64; 2],
+    /// Deployment range swept: the drive fraction τ, 0 stowed to 1 deployed at every
+    /// station.
+    pub deployment_range: [f64; 2],
     /// Required clearance (m).
     pub required_clearance_m: f64,
     /// Allowed separation of parts joined by design (m).
@@ -194,11 +195,11 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
     (jobs, unchecked)
 }
 
-/// Sweeps every pair and every declared joint for flap rotation in `[0, end_rad]`, in
+/// Sweeps every pair and every declared joint for the deployment parameter in `[0, end]`, in
 /// parallel (rayon).
 pub fn check_assembly(
     assembly: &Assembly,
-    end_rad: f64,
+    end: f64,
     required: &Requirements,
     settings: &SweepSettings,
 ) -> Result<InterferenceReport> {
@@ -207,7 +208,7 @@ pub fn check_assembly(
     let pairs = jobs
         .into_par_iter()
         .map(|(station, a, b)| {
-            let clearance = sweep_pair(a, b, 0.0, end_rad, settings)?;
+            let clearance = sweep_pair(a, b, 0.0, end, settings)?;
             let passes = clearance.min_clearance_m - clearance.residual_bound_m >= required.clearance_m;
             Ok(PairResult {
                 station,
@@ -233,7 +234,7 @@ pub fn check_assembly(
                     })
             };
             let (a, b) = (part(&contact.part_a)?, part(&contact.part_b)?);
-            let separation = sweep_contact(a, b, 0.0, end_rad, required.joint_play_m, settings)?;
+            let separation = sweep_contact(a, b, 0.0, end, required.joint_play_m, settings)?;
             let passes = separation.upper_bound_m <= required.joint_play_m;
             Ok(ContactResult {
                 declared: contact.clone(),
@@ -244,7 +245,7 @@ pub fn check_assembly(
         .collect::<Result<Vec<_>>>()?;
     let passes = pairs.iter().all(|p| p.passes) && contacts.iter().all(|c| c.passes);
     Ok(InterferenceReport {
-        deployment_range_rad: [0.0, end_rad],
+        deployment_range: [0.0, end],
         required_clearance_m: required.clearance_m,
         joint_play_m: required.joint_play_m,
         declared_contacts: contacts,

@@ -45,6 +45,12 @@ pub enum Error {
         #[source]
         source: flapwright_mechanism::Error,
     },
+    /// A flap mesh was to follow a mechanism that has no flap body.
+    #[error("flap {part}: its station's mechanism has no body with the flap role")]
+    NoFlapBody {
+        /// The flap part.
+        part: String,
+    },
     /// A declared joint names a part the station does not have.
     #[error("joint {joint} names part {name}, which its station does not have")]
     UnknownPart {

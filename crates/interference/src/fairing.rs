@@ -50,7 +50,8 @@ fn lower_surface_y(polygons: &[Vec<Point2<f64>>], x: f64) -> Option<f64> {
     lowest
 }
 
-/// Fairing depth over `parameters` (flap rotations, rad) of the capsules `at(t)` gives,
+/// Fairing depth over `parameters` (deployment parameters, e.g. drive fractions) of the
+/// capsules `at(t)` gives,
 /// against the lower contour of `contour` (wing and stowed flap sections, station frame).
 /// Each capsule is sampled at `points_per_capsule` points (>= 2). Errors: the first that
 /// `at` returns.

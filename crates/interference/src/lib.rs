@@ -20,7 +20,8 @@
 //!
 //! # Units and frames
 //! Metres, aircraft frame (x aft, y outboard, z up). `t` is whatever the caller's motions
-//! take (Flapwright uses the flap deflection in rad); speed bounds are in m per unit `t`.
+//! take; Flapwright's mechanism parts and flaps take the drive fraction τ in [0, 1]
+//! (`station_parts`, `flap_part`), and speed bounds are in m per unit `t`.
 //!
 //! # Design notes
 //! Sampling alone can miss a thin part passing between two samples. Distances between
@@ -43,7 +44,6 @@
 mod check;
 mod error;
 mod fairing;
-mod motion;
 mod part;
 mod refine;
 mod station;
@@ -52,7 +52,6 @@ mod sweep;
 pub use check::{check_assembly, Assembly, ContactResult, InterferenceReport, PairResult, Requirements, UncheckedPair};
 pub use error::{Error, Result};
 pub use fairing::{fairing_depth, FairingDepth, PlanarCapsule};
-pub use motion::AboutAxis;
 pub use part::{Fixed, Motion, Part};
-pub use station::{planar_parts, station_parts, DeclaredContact, StationPart, StationParts};
+pub use station::{flap_part, planar_parts, station_parts, DeclaredContact, StationPart, StationParts};
 pub use sweep::{sweep_contact, sweep_pair, JointSeparation, PairClearance, SweepSettings, JOINT_PENETRATION_GRID_M};

@@ -1,8 +1,10 @@
 //! A station's mechanism as collision parts, from the mechanism seam alone
 //! ([`FlapMechanism`]): each solid of each body becomes a part that moves with its body's
 //! pose, with the body's certified speed bound; the joints' touching solids become
-//! [`DeclaredContact`]s. Nothing here names a mechanism kind. Deployment parameter: flap
-//! deflection (rad), common to every station of a flap.
+//! [`DeclaredContact`]s. Nothing here names a mechanism kind. Deployment parameter: the
+//! drive fraction τ in [0, 1] common to every station of the wing (input = stowed + τ
+//! travel at each; `flapwright_mechanism::seam`), so speed bounds are per unit τ: the
+//! body's bound per unit input times the input travel.
 
 use std::sync::Arc;
 
@@ -73,16 +75,17 @@ impl StationParts {
     }
 }
 
-/// A body's motion in the aircraft frame: its planar displacement from the seam, lifted
-/// through the station frame, then the solid's own offset (balls are centred at their
-/// local origin).
+/// A body's motion in the aircraft frame at drive fraction τ: its planar displacement from
+/// the seam, lifted through the station frame, then the solid's own offset (balls are
+/// centred at their local origin).
 struct BodyMotion {
     mechanism: Arc<dyn FlapMechanism>,
     body: usize,
     aircraft_from_station: Isometry3<f64>,
     station_from_aircraft: Isometry3<f64>,
     offset: Isometry3<f64>,
-    speed_bound_m_per_rad: f64,
+    /// m per unit τ.
+    speed_bound: f64,
 }
 
 /// The planar displacement as a rigid motion of the station frame (about its z axis).
@@ -94,17 +97,65 @@ fn lift(displacement: &Isometry2<f64>) -> Isometry3<f64> {
     )
 }
 
+impl BodyMotion {
+    fn displacement(&self, fraction: f64) -> std::result::Result<Isometry2<f64>, flapwright_mechanism::Error> {
+        let input = self.mechanism.input_range().at_fraction(fraction);
+        let pose = self.mechanism.pose(input)?;
+        Ok(if self.body == FLAP_MESH {
+            pose.flap
+        } else {
+            pose.bodies[self.body]
+        })
+    }
+}
+
+/// Marks the motion of a flap's 3D mesh: it follows the pose's flap displacement.
+const FLAP_MESH: usize = usize::MAX;
+
 impl Motion for BodyMotion {
-    /// Beyond its own deflection range (another flap of the wing may turn further) the
-    /// body stays where the deployment ends: speed zero there, so the bound still holds.
-    fn pose_ac(&self, t: f64) -> std::result::Result<Isometry3<f64>, flapwright_mechanism::Error> {
-        let pose = self.mechanism.pose(t.min(self.mechanism.deflection_range_rad()))?;
-        Ok(self.aircraft_from_station * lift(&pose.bodies[self.body]) * self.station_from_aircraft * self.offset)
+    fn pose_ac(&self, fraction: f64) -> std::result::Result<Isometry3<f64>, flapwright_mechanism::Error> {
+        let displacement = self.displacement(fraction)?;
+        Ok(self.aircraft_from_station * lift(&displacement) * self.station_from_aircraft * self.offset)
     }
 
     fn speed_bound(&self) -> f64 {
-        self.speed_bound_m_per_rad
+        self.speed_bound
     }
+}
+
+/// A flap's 3D mesh moving with the flap displacement of the station that carries it
+/// (`mechanism`, placed by `aircraft_from_station`); `vertices_ac` bound its speed: the
+/// flap body's bound at the farthest vertex from its reference point.
+pub fn flap_part(
+    name: &str,
+    shape: CollisionShape,
+    vertices_ac: &[Point3<f64>],
+    aircraft_from_station: &Isometry3<f64>,
+    mechanism: &Arc<dyn FlapMechanism>,
+) -> Result<Part> {
+    let flap_body = mechanism
+        .bodies()
+        .iter()
+        .find(|b| b.role == BodyRole::Flap)
+        .ok_or_else(|| Error::NoFlapBody { part: name.to_string() })?;
+    let bound = &flap_body.speed_bound;
+    let reference_ac = aircraft_from_station.transform_point(&Point3::new(bound.reference.x, bound.reference.y, 0.0));
+    let reach_m = vertices_ac
+        .iter()
+        .map(|v| (v - reference_ac).norm())
+        .fold(0.0, f64::max);
+    Ok(Part::moving(
+        name.to_string(),
+        shape,
+        BodyMotion {
+            mechanism: Arc::clone(mechanism),
+            body: FLAP_MESH,
+            aircraft_from_station: *aircraft_from_station,
+            station_from_aircraft: aircraft_from_station.inverse(),
+            offset: Isometry3::identity(),
+            speed_bound: bound.within(reach_m) * mechanism.input_range().travel().abs(),
+        },
+    ))
 }
 
 /// Builds the station's parts, placed by `aircraft_from_station` (the station frame: origin
@@ -154,7 +205,7 @@ pub fn station_parts(
                         aircraft_from_station: *aircraft_from_station,
                         station_from_aircraft: aircraft_from_station.inverse(),
                         offset,
-                        speed_bound_m_per_rad: body.speed_bound.for_shape(&solid.shape),
+                        speed_bound: body.speed_bound.for_shape(&solid.shape) * mechanism.input_range().travel().abs(),
                     },
                 )
             } else {
@@ -194,11 +245,11 @@ pub fn station_parts(
     })
 }
 
-/// The station's solids in its plane at flap deflection `t` (rad), as the fairing measures
+/// The station's solids in its plane at drive fraction `fraction`, as the fairing measures
 /// them: capsules as they are, tubes as chains of capsules; the same solids as
 /// [`station_parts`].
-pub fn planar_parts(mechanism: &dyn FlapMechanism, t: f64) -> flapwright_mechanism::Result<Vec<PlanarCapsule>> {
-    let pose = mechanism.pose(t)?;
+pub fn planar_parts(mechanism: &dyn FlapMechanism, fraction: f64) -> flapwright_mechanism::Result<Vec<PlanarCapsule>> {
+    let pose = mechanism.pose(mechanism.input_range().at_fraction(fraction))?;
     let mut capsules = Vec::new();
     for (body, placement) in mechanism.bodies().iter().zip(&pose.bodies) {
         for solid in &body.solids {

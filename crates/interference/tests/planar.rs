@@ -32,9 +32,9 @@ fn across_the_middle(capsule: &PlanarCapsule, fraction: f64) -> [Point3<f64>; 2]
 #[test]
 fn planar_parts_are_the_3d_parts_in_the_station_plane() {
     let (track, parts) = thesis_parts();
-    let end = track.deflection_range_rad();
     let mut named = std::collections::BTreeSet::new();
-    for t in [0.0, 0.3 * end, end] {
+    // Drive fractions: stowed, part way, deployed.
+    for t in [0.0, 0.3, 1.0] {
         for capsule in planar_parts(track.as_ref(), t).unwrap() {
             named.insert(capsule.part.clone());
             let name = format!("st.{}", capsule.part);
@@ -61,18 +61,24 @@ fn planar_parts_are_the_3d_parts_in_the_station_plane() {
 }
 
 #[test]
-fn parts_stay_at_the_end_of_their_own_deployment_beyond_it() {
-    // Another flap of the wing may turn further: this station's parts stop at its own
-    // full deflection (and can always be posed there) instead of failing out of slot.
+fn the_drive_fraction_spans_each_stations_own_input_travel() {
+    // At τ = 1 every moving part stands where the mechanism's deployed pose puts it, and
+    // its speed bound per unit τ is the bound per unit input times the travel.
     let (track, parts) = thesis_parts();
-    let end = track.deflection_range_rad();
-    for part in parts.parts().filter(|p| p.is_moving()) {
-        let at_end = part.motion.pose_ac(end).unwrap();
-        let beyond = part.motion.pose_ac(end + 0.3).unwrap();
-        assert!(
-            (at_end.to_homogeneous() - beyond.to_homogeneous()).norm() < 1e-12,
-            "{}",
-            part.name
-        );
-    }
+    let range = track.input_range();
+    let deployed = track.pose(range.deployed).unwrap();
+    let stowed = track.pose(range.stowed).unwrap();
+    let screw = parts.parts().find(|p| p.name == "st.screw").unwrap();
+    // The screw capsule's local frame is the aircraft frame: its displacement moves B0 not.
+    let at_one = screw.motion.pose_ac(1.0).unwrap();
+    let b0 = deployed.point("B0").unwrap();
+    let moved = at_one.transform_point(&Point3::new(b0.x, b0.y, 0.0));
+    assert!((moved - Point3::new(b0.x, b0.y, 0.0)).norm() < 1e-12);
+    let tip_stowed = stowed.point("B").unwrap();
+    let tip = at_one.transform_point(&Point3::new(tip_stowed.x, tip_stowed.y, 0.0));
+    let expected = deployed.point("B").unwrap();
+    assert!((tip - Point3::new(expected.x, expected.y, 0.0)).norm() < 1e-12, "{tip}");
+    let body = &track.bodies()[1];
+    let solid = &body.solids[0];
+    assert!((screw.motion.speed_bound() - body.speed_bound.for_shape(&solid.shape) * range.travel()).abs() < 1e-15);
 }

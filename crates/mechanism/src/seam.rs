@@ -8,15 +8,16 @@
 //!
 //! # Parameters
 //!
-//! Two parameters describe a deployment:
-//! - the **input** of the actuator ([`InputRange`]): nut stroke (m) or crank angle (rad),
-//!   the variable of the kinetostatics and of the report's samples;
-//! - the **flap deflection** (rad, trailing edge down positive, 0 stowed): the common
-//!   parameter of every station on one rigid flap, and so of the geometry stages
-//!   (interference, fairing, gap and overlap, drawings). Every kind deploys its flap
-//!   monotonically, so each maps to the other ([`FlapMechanism::input_at_deflection`],
-//!   [`FlapMechanism::deflection_at_input`]).
+//! A mechanism moves with the **input** of its actuator ([`InputRange`]): a stroke (m) or
+//! an angle (rad), from stowed to deployed. Everything is a function of it: poses, loads,
+//! speed bounds (per unit input). Flap deflection is an output, not a parameter: a hooked
+//! track moves its flap aft before it turns it, and a double flap has two deflections.
 //!
+//! Every station of a wing is driven by one shaft, each through its own ratio, so they
+//! start and finish together (`003_...` section 3): the common parameter of the whole-wing
+//! stages (interference, fairing) is the **drive fraction** τ in [0, 1], with
+//! input = stowed + τ (deployed - stowed) at every station ([`InputRange::at_fraction`]).
+
 //! # Frames
 //!
 //! The station frame (origin A0 on the hinge line, x towards the nose, y up, z spanwise
@@ -70,6 +71,17 @@ impl InputRange {
     /// Where `input` lies between stowed (0) and deployed (1).
     pub fn fraction(&self, input: f64) -> f64 {
         (input - self.stowed) / (self.deployed - self.stowed)
+    }
+
+    /// The input at drive fraction `fraction` (0 stowed, 1 deployed).
+    pub fn at_fraction(&self, fraction: f64) -> f64 {
+        self.stowed + fraction * (self.deployed - self.stowed)
+    }
+
+    /// The input travel, deployed - stowed (m or rad; its magnitude turns a speed bound
+    /// per unit input into one per unit drive fraction).
+    pub fn travel(&self) -> f64 {
+        self.deployed - self.stowed
     }
 }
 
@@ -151,31 +163,37 @@ pub struct BodySolid {
     pub offset_m: f64,
 }
 
-/// A certified bound on how fast a body's points move per radian of flap deflection:
-/// |dp/dδ| <= `linear_m_per_rad` + `angular_per_rad` * |p - `reference`| for every point
-/// p of the body, over the whole deployment (stowed coordinates: the distance to the
-/// reference is the same in every pose of a rigid body).
+/// A certified bound on how fast a body's points move per unit of the actuator input:
+/// |dp/dq| <= `linear_per_input` + `angular_per_input` * |p - `reference`| for every point p
+/// of the body, over the whole deployment (stowed coordinates: the distance to the
+/// reference is the same in every pose of a rigid body). Finite wherever the transmission
+/// angles stay away from a toggle, which synthesis guarantees over the deployment.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct SpeedBound {
     /// A point of the body, stowed (m).
     pub reference: Point2<f64>,
-    /// Largest speed of the reference point (m per rad of deflection).
-    pub linear_m_per_rad: f64,
-    /// Largest rotation rate of the body (rad per rad of deflection).
-    pub angular_per_rad: f64,
+    /// Largest speed of the reference point (m per unit input).
+    pub linear_per_input: f64,
+    /// Largest rotation rate of the body (rad per unit input).
+    pub angular_per_input: f64,
 }
 
 impl SpeedBound {
     /// A body that does not move.
     pub const FIXED: Self = Self {
         reference: Point2::new(0.0, 0.0),
-        linear_m_per_rad: 0.0,
-        angular_per_rad: 0.0,
+        linear_per_input: 0.0,
+        angular_per_input: 0.0,
     };
 
-    /// The bound for the points of `shape` (m per rad of deflection).
+    /// The bound for the points of `shape` (m per unit input).
     pub fn for_shape(&self, shape: &PlanarShape) -> f64 {
-        self.linear_m_per_rad + self.angular_per_rad * shape.reach_from(&self.reference)
+        self.linear_per_input + self.angular_per_input * shape.reach_from(&self.reference)
+    }
+
+    /// The bound for points within `reach_m` of the reference (m per unit input).
+    pub fn within(&self, reach_m: f64) -> f64 {
+        self.linear_per_input + self.angular_per_input * reach_m
     }
 }
 
@@ -189,7 +207,7 @@ pub struct Body {
     pub role: BodyRole,
     /// Its solids, stowed.
     pub solids: Vec<BodySolid>,
-    /// How fast its points can move per radian of deflection.
+    /// How fast its points can move per unit input.
     pub speed_bound: SpeedBound,
 }
 
@@ -262,10 +280,10 @@ pub struct DrawingNotes {
     pub arcs: Vec<(String, Point2<f64>, f64, f64, f64)>,
 }
 
-/// The mechanism at one flap deflection.
+/// The mechanism at one input.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct MechanismPose {
-    /// Flap deflection (rad).
+    /// Flap deflection (rad) of the main flap element.
     pub deflection_rad: f64,
     /// Actuator input.
     pub input: f64,
@@ -328,7 +346,9 @@ pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
     /// Flap deflection when fully deployed (rad); stowed is 0.
     fn deflection_range_rad(&self) -> f64;
 
-    /// The input that gives `deflection_rad`.
+    /// The smallest input that gives `deflection_rad` (a flap setting): unique for kinds
+    /// that turn the flap from the start, the first one for a kind that moves the flap aft
+    /// before turning it.
     fn input_at_deflection(&self, deflection_rad: f64) -> Result<f64>;
 
     /// The deflection `input` gives (rad).
@@ -345,8 +365,8 @@ pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
     /// The joints.
     fn joints(&self) -> &[Joint];
 
-    /// The pose at flap deflection `deflection_rad` (rad).
-    fn pose(&self, deflection_rad: f64) -> Result<MechanismPose>;
+    /// The pose at actuator input `input`.
+    fn pose(&self, input: f64) -> Result<MechanismPose>;
 
     /// Loads at `input` under `load`.
     fn kinetostatics(&self, input: f64, load: &LoadCase) -> Result<Kinetostatics>;

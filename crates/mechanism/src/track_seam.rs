@@ -9,10 +9,13 @@
 //! sliding on the screw and pivoting on the flap; the outer and inner tracks, fixed,
 //! round tubes along the arcs of pins F and G about A0.
 //!
-//! Speed bounds per radian of deflection: the flap turns about A0 at rate 1; the nut
-//! pivot A moves a2 per radian; the screw turns about B0 at |dψ/dδ| = |v_A⊥| / s34 =
-//! a2 cos μ / s34 <= a2 cos μ_min / s34,i (the transmission angle μ stays in [μ_min, π/2]
-//! and s34 grows from s34,i over the deployment), and the nut turns with it.
+//! Speed bounds per metre of nut stroke s34, with μ the transmission angle at A, which
+//! stays in [μ_min, π/2] over the deployment (μ_min = (π - β3)/2 at both ends by
+//! collinearity, π/2 where B0A is tangent to A's circle about A0): A moves at a2 θ̇12
+//! perpendicular to A0A, whose component along the screw is the stroke rate ṡ = a2 θ̇12
+//! sin μ and across it s ψ̇ = a2 θ̇12 cos μ. So the flap turns about A0 at |dθ12/ds| =
+//! 1/(a2 sin μ) <= 1/(a2 sin μ_min); A moves at 1/sin μ <= 1/sin μ_min; the screw (and the
+//! nut with it) turns about B0 at |dψ/ds| = cot μ / s <= cot μ_min / s34,i.
 
 use nalgebra::{Isometry2, Point2, Rotation2, Translation2, Vector2};
 use serde::Serialize;
@@ -108,11 +111,11 @@ pub(crate) fn bodies_and_joints(track: &CircularArcTrack, hardware: &TrackHardwa
         offset_m: 0.0,
     };
     let capsule = |from, to, radius_m| PlanarShape::Capsule { from, to, radius_m };
-    // |dψ/dδ| = a2 cos μ / s34 with μ the transmission angle, which stays in [μ_min, π/2]
-    // over the deployment (μ_min at both ends by collinearity, π/2 where B0A is tangent to
-    // A's circle), and s34 >= s34,i.
-    let screw_turn_rate =
-        spec.crank_length_m * synthesis.minimum_transmission_angle_rad.cos() / synthesis.stroke_start_m;
+    // Per metre of stroke (module doc).
+    let mu_min = synthesis.minimum_transmission_angle_rad;
+    let flap_turn_rate = 1.0 / (spec.crank_length_m * mu_min.sin());
+    let screw_turn_rate = 1.0 / (mu_min.tan() * synthesis.stroke_start_m);
+    let nut_pivot_speed = 1.0 / mu_min.sin();
     let track_body = |name: &str, radius_m: f64, start_rad: f64| Body {
         name: name.into(),
         role: BodyRole::Track,
@@ -135,8 +138,8 @@ pub(crate) fn bodies_and_joints(track: &CircularArcTrack, hardware: &TrackHardwa
                 .collect(),
             speed_bound: SpeedBound {
                 reference: Point2::origin(),
-                linear_m_per_rad: 0.0,
-                angular_per_rad: 1.0,
+                linear_per_input: 0.0,
+                angular_per_input: flap_turn_rate,
             },
         },
         Body {
@@ -154,8 +157,8 @@ pub(crate) fn bodies_and_joints(track: &CircularArcTrack, hardware: &TrackHardwa
             ],
             speed_bound: SpeedBound {
                 reference: b0,
-                linear_m_per_rad: 0.0,
-                angular_per_rad: screw_turn_rate,
+                linear_per_input: 0.0,
+                angular_per_input: screw_turn_rate,
             },
         },
         Body {
@@ -164,8 +167,8 @@ pub(crate) fn bodies_and_joints(track: &CircularArcTrack, hardware: &TrackHardwa
             solids: vec![solid("nut", capsule(a, a, hardware.nut_radius_m))],
             speed_bound: SpeedBound {
                 reference: a,
-                linear_m_per_rad: spec.crank_length_m,
-                angular_per_rad: screw_turn_rate,
+                linear_per_input: nut_pivot_speed,
+                angular_per_input: screw_turn_rate,
             },
         },
         track_body("outer-track", spec.outer_slot_radius_m, spec.outer_slot_start_angle_rad),
@@ -281,8 +284,7 @@ impl FlapMechanism for CircularArcTrack {
         &self.joints
     }
 
-    fn pose(&self, deflection_rad: f64) -> Result<MechanismPose> {
-        let input = self.input_at_deflection(deflection_rad)?;
+    fn pose(&self, input: f64) -> Result<MechanismPose> {
         let pose = CircularArcTrack::pose(self, input, 0.0, 0.0)?;
         let synthesis = self.synthesis();
         let b0 = synthesis.screw_mount_m;

@@ -8,23 +8,24 @@ use nalgebra::Point2;
 
 use crate::common::thesis_track;
 
-fn deflections(track: &CircularArcTrack, samples: usize) -> Vec<f64> {
-    let range = track.deflection_range_rad();
-    (0..samples).map(|i| range * i as f64 / (samples - 1) as f64).collect()
+fn inputs(track: &CircularArcTrack, samples: usize) -> Vec<f64> {
+    track.input_range().samples(samples)
 }
 
 #[test]
 fn body_displacements_carry_the_stowed_points_to_the_tracks_own_pose() {
     let track = thesis_track();
-    let stowed = FlapMechanism::pose(&track, 0.0).unwrap();
+    let stowed = FlapMechanism::pose(&track, track.input_range().stowed).unwrap();
     for bodies in &stowed.bodies {
         assert!((bodies.translation.vector.norm() + bodies.rotation.angle().abs()) < 1e-12);
     }
     let at_stowed = |name: &str| stowed.point(name).unwrap();
-    for deflection in deflections(&track, 41) {
-        let pose = FlapMechanism::pose(&track, deflection).unwrap();
-        assert!((pose.deflection_rad - deflection).abs() < 1e-12);
-        let own = CircularArcTrack::pose(&track, pose.input, 0.0, 0.0).unwrap();
+    for input in inputs(&track, 41) {
+        let pose = FlapMechanism::pose(&track, input).unwrap();
+        assert_eq!(pose.input, input);
+        let own = CircularArcTrack::pose(&track, input, 0.0, 0.0).unwrap();
+        assert_eq!(pose.deflection_rad, own.deflection_rad);
+        let deflection = own.deflection_rad;
         let close = |a: Point2<f64>, b: Point2<f64>, what: &str| {
             assert!((a - b).norm() < 1e-12, "{what} at {deflection}: {a} vs {b}");
         };
@@ -63,19 +64,19 @@ fn input_and_deflection_invert_each_other() {
 
 #[test]
 fn speed_bounds_hold_against_finite_differences() {
-    // Every skeleton point of every solid, at 2001 deflections: the finite-difference speed
-    // (m per rad) stays within the body's bound for that solid, which is also not loose by
-    // more than a factor of four for the moving bodies.
+    // Every skeleton point of every solid, at 2001 inputs: the finite-difference speed
+    // (m per m of stroke) stays within the body's bound for that solid, which is also not
+    // loose by more than a factor of four for the moving bodies.
     let track = thesis_track();
-    let steps = deflections(&track, 2001);
+    let steps = inputs(&track, 2001);
     let h = steps[1] - steps[0];
     for (b, body) in track.bodies().iter().enumerate() {
         for solid in &body.solids {
             let bound = body.speed_bound.for_shape(&solid.shape);
             let mut fastest: f64 = 0.0;
             let mut previous: Option<Vec<Point2<f64>>> = None;
-            for &deflection in &steps {
-                let pose = FlapMechanism::pose(&track, deflection).unwrap();
+            for &input in &steps {
+                let pose = FlapMechanism::pose(&track, input).unwrap();
                 let points: Vec<Point2<f64>> = solid.shape.skeleton().iter().map(|p| pose.bodies[b] * p).collect();
                 if let Some(before) = &previous {
                     for (p, q) in points.iter().zip(before) {
@@ -154,12 +155,12 @@ fn flap_attachments_move_with_the_flap() {
     let track = thesis_track();
     let attachments = track.flap_attachments();
     assert_eq!(attachments.len(), 3);
-    for deflection in deflections(&track, 9) {
-        let pose = FlapMechanism::pose(&track, deflection).unwrap();
+    for input in inputs(&track, 9) {
+        let pose = FlapMechanism::pose(&track, input).unwrap();
         for attachment in &attachments {
             let moved = pose.flap * attachment.position;
             let named = pose.point(&attachment.name).unwrap();
-            assert!((moved - named).norm() < 1e-12, "{} at {deflection}", attachment.name);
+            assert!((moved - named).norm() < 1e-12, "{} at {input}", attachment.name);
         }
     }
 }

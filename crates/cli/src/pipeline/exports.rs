@@ -117,15 +117,15 @@ fn style_of(part: &str, flap_names: &[String]) -> PartStyle {
     }
 }
 
-/// The mechanism at flap deflection `t` (rad), from the seam: each moving body's solids as
+/// The mechanism at actuator input `input`, from the seam: each moving body's solids as
 /// links (skeletons), its named points as joints, the flap outline displaced with the flap.
 fn snapshot(
     mechanism: &dyn FlapMechanism,
     label: &str,
-    t: f64,
+    input: f64,
     flap_outline: &[Vec<Point2<f64>>],
 ) -> Result<MechanismSnapshot> {
-    let pose = mechanism.pose(t)?;
+    let pose = mechanism.pose(input)?;
     let links = mechanism
         .bodies()
         .iter()
@@ -140,7 +140,7 @@ fn snapshot(
         .collect();
     Ok(MechanismSnapshot {
         label: label.into(),
-        deflection_deg: t.to_degrees(),
+        deflection_deg: pose.deflection_rad.to_degrees(),
         flap_outline: flap_outline
             .iter()
             .map(|polygon| polygon.iter().map(|p| pose.flap * p).collect())
@@ -188,7 +188,7 @@ pub fn write_svgs(
             .unwrap_or_default();
         // Show the rear of the wing only, as the thesis figures do: up to a margin ahead of
         // the furthest-forward mechanism point or slot end, so the mechanism stays legible.
-        let stowed = mechanism.pose(0.0)?;
+        let stowed = mechanism.pose(mechanism.input_range().stowed)?;
         let reach = notes
             .arcs
             .iter()
@@ -225,14 +225,25 @@ pub fn write_svgs(
                     f.settings.landing_deg.to_radians().min(range),
                 )
             });
+        let input = mechanism.input_range();
         let settings = vec![
-            snapshot(mechanism, "stowed", 0.0, &flap_outline)?,
-            snapshot(mechanism, "takeoff", takeoff, &flap_outline)?,
-            snapshot(mechanism, "landing", landing, &flap_outline)?,
+            snapshot(mechanism, "stowed", input.stowed, &flap_outline)?,
+            snapshot(
+                mechanism,
+                "takeoff",
+                mechanism.input_at_deflection(takeoff)?,
+                &flap_outline,
+            )?,
+            snapshot(
+                mechanism,
+                "landing",
+                mechanism.input_at_deflection(landing)?,
+                &flap_outline,
+            )?,
         ];
         let mut swept = Vec::new();
         for k in 0..=20 {
-            let s = snapshot(mechanism, "", range * k as f64 / 20.0, &[])?;
+            let s = snapshot(mechanism, "", input.at_fraction(k as f64 / 20.0), &[])?;
             swept.extend(s.links.into_iter().flat_map(|l| l.points));
         }
         let envelope = vec![convex_hull(swept)];

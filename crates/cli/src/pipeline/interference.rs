@@ -4,9 +4,9 @@
 
 use anyhow::{Context, Result};
 use flapwright_geom::collision::CollisionShape;
-use flapwright_geom::parts::{Part as MeshPart, PartKind, WingModel};
+use flapwright_geom::parts::{Part as MeshPart, PartKind};
 use flapwright_interference::{
-    check_assembly, fairing_depth, planar_parts, station_parts, AboutAxis, Assembly, FairingDepth, InterferenceReport,
+    check_assembly, fairing_depth, flap_part, planar_parts, station_parts, Assembly, FairingDepth, InterferenceReport,
     Part, Requirements, SweepSettings,
 };
 
@@ -17,7 +17,6 @@ use crate::scene::{ResolutionScene, Scene};
 /// Builds the assembly and sweeps every pair.
 pub fn check(
     scene: &Scene,
-    model: &WingModel,
     meshed: &[MeshPart],
     mechanisms: &[StationMechanism],
     placed: &[PlacedStation],
@@ -30,31 +29,23 @@ pub fn check(
             CollisionShape::from_mesh(&part.mesh).with_context(|| format!("collision shape of {}", part.name))?;
         match part.kind {
             PartKind::Flap => {
-                let flap = model
-                    .flaps()
-                    .iter()
-                    .find(|f| f.spec().name == part.name)
-                    .with_context(|| format!("flap {} in the model", part.name))?;
-                let (point_ac, direction_ac) = flap.hinge_axis_ac();
-                let max_radius_m = AboutAxis::radius_of(&point_ac, &direction_ac, &part.mesh.vertices);
-                // The flap's own deflection range (its stations share it, by validation).
-                let max_angle_rad = scene
+                // The flap follows the flap displacement of the first station carrying it
+                // (validation requires every flap to have one; all its stations agree).
+                let carrier = scene
                     .station
                     .iter()
-                    .zip(mechanisms)
-                    .filter(|(station, _)| station.flap.as_deref() == Some(part.name.as_str()))
-                    .map(|(_, m)| m.mechanism.deflection_range_rad())
-                    .fold(0.0, f64::max);
-                flaps.push(Part::moving(
-                    part.name.clone(),
+                    .zip(mechanisms.iter().zip(placed))
+                    .find(|(station, _)| station.flap.as_deref() == Some(part.name.as_str()))
+                    .map(|(_, carrier)| carrier)
+                    .with_context(|| format!("flap {} has no station", part.name))?;
+                let (mechanism, station) = carrier;
+                flaps.push(flap_part(
+                    &part.name,
                     shape,
-                    AboutAxis {
-                        point_ac,
-                        direction_ac,
-                        max_radius_m,
-                        max_angle_rad,
-                    },
-                ));
+                    &part.mesh.vertices,
+                    station.station.frame.aircraft_from_station(),
+                    &mechanism.mechanism,
+                )?);
             }
             kind => {
                 if kind == PartKind::WingSkin {
@@ -69,10 +60,6 @@ pub fn check(
         .zip(placed)
         .map(|(m, p)| station_parts(&m.station, p.station.frame.aircraft_from_station(), &m.mechanism))
         .collect::<flapwright_interference::Result<Vec<_>>>()?;
-    let end_rad = mechanisms
-        .iter()
-        .map(|m| m.mechanism.deflection_range_rad())
-        .fold(0.0, f64::max);
     let settings = &scene.interference;
     let sweep = SweepSettings {
         initial_samples: settings.initial_samples,
@@ -90,7 +77,8 @@ pub fn check(
         clearance_m: settings.required_clearance_m,
         joint_play_m: settings.joint_play_m,
     };
-    Ok(check_assembly(&assembly, end_rad, &required, &sweep)?)
+    // The drive fraction: 0 stowed, 1 deployed at every station.
+    Ok(check_assembly(&assembly, 1.0, &required, &sweep)?)
 }
 
 /// Fairing depth of each station: the mechanism against the lower contour of the wing and
@@ -115,9 +103,8 @@ pub fn fairing_depths(
                     (lo.min(p.x), hi.max(p.x))
                 });
             let flap_chord_m = (flap_chord_m.1 - flap_chord_m.0).max(0.0);
-            let end = mechanism.mechanism.deflection_range_rad();
             let samples = resolution.fairing_samples;
-            let parameters: Vec<f64> = (0..samples).map(|i| end * i as f64 / (samples - 1) as f64).collect();
+            let parameters: Vec<f64> = (0..samples).map(|i| i as f64 / (samples - 1) as f64).collect();
             let points = resolution.fairing_points_per_capsule;
             fairing_depth(&contour, flap_chord_m, &parameters, points, |t| {
                 planar_parts(mechanism.mechanism.as_ref(), t)

@@ -106,7 +106,8 @@ pub fn station_plots(
 /// How many of a station's pairs its clearance plot shows, closest first.
 const CLEARANCE_PLOT_PAIRS: usize = 4;
 
-/// Signed clearance against flap rotation of the station's closest pairs, from every
+/// Signed clearance against the deployment (drive fraction, %) of the station's closest
+/// pairs, from every
 /// distance evaluation of the check (the initial samples and the refinements near each
 /// minimum, so the lines are densest where the clearance is smallest), with the required
 /// clearance.
@@ -118,7 +119,7 @@ fn clearance_plot(report: &InterferenceReport, station: &str) -> Option<Plot> {
         .filter(|p| p.station.as_deref() == Some(station) && !p.clearance.trace.is_empty())
         .collect();
     pairs.sort_by(|a, b| signed(a).total_cmp(&signed(b)));
-    let [start, end] = report.deployment_range_rad.map(f64::to_degrees);
+    let [start, end] = report.deployment_range.map(|t| 100.0 * t);
     let prefix = format!("{station}.");
     let short = |name: &str| name.strip_prefix(&prefix).unwrap_or(name).to_string();
     let mut series: Vec<Series> = pairs
@@ -126,11 +127,7 @@ fn clearance_plot(report: &InterferenceReport, station: &str) -> Option<Plot> {
         .take(CLEARANCE_PLOT_PAIRS)
         .map(|pair| {
             let clearance = &pair.clearance;
-            let mut points: Vec<(f64, f64)> = clearance
-                .trace
-                .iter()
-                .map(|&(t, d)| (t.to_degrees(), d * 1e3))
-                .collect();
+            let mut points: Vec<(f64, f64)> = clearance.trace.iter().map(|&(t, d)| (100.0 * t, d * 1e3)).collect();
             if let [(_, only)] = points[..] {
                 // Parts that do not move are evaluated once.
                 points = vec![(start, only), (end, only)];
@@ -151,7 +148,7 @@ fn clearance_plot(report: &InterferenceReport, station: &str) -> Option<Plot> {
     });
     Some(Plot {
         title: "Clearance of the closest pairs".into(),
-        x_label: "flap rotation (deg)".into(),
+        x_label: "deployment (% of the actuator travel)".into(),
         y_label: "clearance (mm), < 0: overlap".into(),
         series,
     })

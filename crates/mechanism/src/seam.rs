@@ -30,7 +30,7 @@ use serde::Serialize;
 
 use crate::error::Result;
 use crate::kinetostatics::LoadCase;
-use crate::screw_jack::ScrewTorques;
+use crate::screw_jack::{ScrewJack, ScrewTorques};
 
 /// What the actuator moves.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -83,6 +83,23 @@ impl InputRange {
     pub fn travel(&self) -> f64 {
         self.deployed - self.stowed
     }
+}
+
+/// The actuator a mechanism drives its flap with: sizing and the drive are written in
+/// actuator types, never in mechanism kinds (a dropped hinge or a four-bar may take any).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "type", rename_all = "kebab-case")]
+pub enum Actuator {
+    /// A screw turned by the drive shaft moves a nut along it (thesis section 3.6); the
+    /// input is the nut's stroke.
+    ScrewJack {
+        /// Lead, mean radius and thread friction.
+        screw: ScrewJack,
+        /// Screw length (m): the rod sized for buckling.
+        screw_length_m: f64,
+        /// Nominal nut speed (m/s): with the lead, the drive shaft's speed.
+        nominal_speed_mps: f64,
+    },
 }
 
 /// What a body is for: the interference check's pair policy, the drawings' styles and the
@@ -376,6 +393,12 @@ pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
 
     /// The kind's own record for the report: its dimensions and what synthesis computed.
     fn details(&self) -> serde_json::Value;
+
+    /// The actuator.
+    fn actuator(&self) -> Actuator;
+
+    /// Conditions worth a designer's look that do not stop the design, in words.
+    fn warnings(&self) -> Vec<String>;
 }
 
 /// A solid where it stands at `pose` (station frame).

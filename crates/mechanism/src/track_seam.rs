@@ -23,8 +23,8 @@ use serde::Serialize;
 use crate::error::Result;
 use crate::kinetostatics::LoadCase;
 use crate::seam::{
-    Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd, JointKind,
-    Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound,
+    Actuator, Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd,
+    JointKind, Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound,
 };
 use crate::track_synthesis::CircularArcTrack;
 
@@ -352,6 +352,19 @@ impl FlapMechanism for CircularArcTrack {
             },
             screw_torques: Some(forces.screw),
         })
+    }
+
+    fn actuator(&self) -> Actuator {
+        let spec = self.spec();
+        Actuator::ScrewJack {
+            screw: spec.screw,
+            screw_length_m: spec.screw_length_m,
+            nominal_speed_mps: spec.nominal_input_speed_mps,
+        }
+    }
+
+    fn warnings(&self) -> Vec<String> {
+        self.synthesis().warnings.iter().map(|w| w.to_string()).collect()
     }
 
     /// `dimensions` (thesis Table 2, SI) and `synthesis` (s34,i, Δs, g2, p2, q2, ...).

@@ -91,7 +91,11 @@ pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationMechanism>> {
         let MechanismScene::CircularArcTrack(m) = &station.mechanism;
         match synthesise(m) {
             Ok(track) => {
-                problems.extend(degeneracies(&track, &format!("station[{i}].mechanism")));
+                problems.extend(degeneracies(
+                    &track,
+                    &format!("station[{i}].mechanism"),
+                    SCREW_GEOMETRY_KEYS,
+                ));
                 built.push(StationMechanism {
                     station: station.name.clone(),
                     mechanism: Arc::new(track.clone()),
@@ -126,18 +130,19 @@ pub const MIN_DISTANCE_TO_TOGGLE_DEG: f64 = 1.0;
 /// The keys that place the screw line and the nut's travel.
 const SCREW_GEOMETRY_KEYS: &str = "base_distance_m, base_angle_deg, crank_length_m and rotation_range_deg";
 
-/// Dimensions that synthesise but give a degenerate mechanism: a nut starting on the
-/// screw pivot, a singular or near-toggle position at a stroke end, a sweep that cannot
-/// even start. Each names the keys that decide it, with the numbers in mm and degrees.
-fn degeneracies(track: &CircularArcTrack, path: &str) -> Vec<Problem> {
+/// Dimensions that synthesise but give a degenerate mechanism, for any kind: a singular or
+/// near-toggle position at a stroke end, a deployment that cannot even start. Each names
+/// `keys`, the scene keys that decide the kind's geometry, with the numbers in mm and
+/// degrees.
+fn degeneracies(mechanism: &dyn FlapMechanism, path: &str, keys: &str) -> Vec<Problem> {
     let mut problems = Vec::new();
-    let geometry_keys = SCREW_GEOMETRY_KEYS;
     let unloaded = LoadCase {
         name: "unloaded".into(),
         external_moment: ExternalMoment::Constant(0.0),
         include_inertia: false,
     };
-    let probe = match track.sweep(2, &unloaded) {
+    let quantity = mechanism.input_range().quantity;
+    let probe = match sweep_deployment(mechanism, 2, &unloaded) {
         Ok(probe) => probe,
         Err(error) => {
             problems.push(Problem::new(
@@ -151,8 +156,8 @@ fn degeneracies(track: &CircularArcTrack, path: &str) -> Vec<Problem> {
         problems.push(Problem::new(
             path,
             format!(
-                "cannot be posed at s34 = {:.3} mm: {}; change {geometry_keys} or the slot keys",
-                stop.input_m * 1e3,
+                "cannot be posed at input {}: {}; change {keys}",
+                describe_input(quantity, stop.input),
                 stop.reason
             ),
         ));
@@ -162,8 +167,8 @@ fn degeneracies(track: &CircularArcTrack, path: &str) -> Vec<Problem> {
             problems.push(Problem::new(
                 path,
                 format!(
-                    "singular at the {end} end (s34 = {:.3} mm): Jacobian condition number {:.3e} above {MAX_CONDITION_NUMBER:e}; change {geometry_keys}",
-                    sample.input_m * 1e3,
+                    "singular at the {end} end (input {}): Jacobian condition number {:.3e} above {MAX_CONDITION_NUMBER:e}; change {keys}",
+                    describe_input(quantity, sample.input),
                     sample.jacobian_condition_number
                 ),
             ));
@@ -171,7 +176,7 @@ fn degeneracies(track: &CircularArcTrack, path: &str) -> Vec<Problem> {
             problems.push(Problem::new(
                 path,
                 format!(
-                    "{:.3} deg from a toggle position at the {end} end (at least {MIN_DISTANCE_TO_TOGGLE_DEG} deg); change {geometry_keys}",
+                    "{:.3} deg from a toggle position at the {end} end (at least {MIN_DISTANCE_TO_TOGGLE_DEG} deg); change {keys}",
                     sample.distance_to_toggle_deg
                 ),
             ));
@@ -212,10 +217,10 @@ pub fn sweep_station(
         include_inertia: false,
     }];
     let cases = if cases.is_empty() { &weight_only[..] } else { cases };
-    for warning in &mechanism.track.synthesis().warnings {
+    let seam = mechanism.mechanism.as_ref();
+    for warning in seam.warnings() {
         warnings.push(format!("station {}: {warning}", mechanism.station));
     }
-    let seam = mechanism.mechanism.as_ref();
     let input = seam.input_range();
     let mut deployments = Vec::with_capacity(cases.len());
     for case in cases {

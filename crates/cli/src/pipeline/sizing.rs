@@ -2,6 +2,7 @@
 //! Euler buckling), the torque-tube line between the stations, drive power and masses.
 
 use anyhow::{Context, Result};
+use flapwright_mechanism::seam::Actuator;
 use flapwright_mechanism::DeploymentSample;
 use flapwright_sizing::{
     axial_envelope_n, deployment_work_j, drive_demand, size_rod, size_screw_jack, size_torque_tubes, DeploymentWork,
@@ -61,6 +62,10 @@ pub fn size_all(
     let mut jacks: Vec<Option<ScrewJackSizing>> = Vec::new();
     let mut notes = Vec::new();
     for (mechanism, report) in mechanisms.iter().zip(reports) {
+        // Sizing is written per actuator type; a new type is a new arm here.
+        let Actuator::ScrewJack {
+            screw, screw_length_m, ..
+        } = mechanism.mechanism.actuator();
         let samples: Vec<&DeploymentSample> = report
             .iter()
             .flat_map(|r| r.load_cases.iter())
@@ -94,7 +99,7 @@ pub fn size_all(
                 max_raise_torque_nm: max_raise,
                 max_lower_torque_nm: max_lower,
                 min_lower_torque_nm: min_lower,
-                thread_self_locking: mechanism.track.spec().screw.is_self_locking(),
+                thread_self_locking: screw.is_self_locking(),
             },
             safety_factor,
         )?;
@@ -102,16 +107,9 @@ pub fn size_all(
         // F_input > 0 pushes the nut away from B0: the screw is in compression.
         let axial: Vec<f64> = forces.iter().map(|f| -f * safety_factor).collect();
         let (tension, compression) = axial_envelope_n(&axial)?;
-        let spec = mechanism.track.spec();
-        let mut rod = RodInput::new(
-            mechanism.station.clone(),
-            "screw",
-            spec.screw_length_m,
-            tension,
-            compression,
-        );
+        let mut rod = RodInput::new(mechanism.station.clone(), "screw", screw_length_m, tension, compression);
         rod.end_fixity_factor = scene.sizing.screw_end_fixity_factor;
-        rod.max_outer_radius_m = Some(spec.screw.mean_radius_m);
+        rod.max_outer_radius_m = Some(screw.mean_radius_m);
         rods.push(size_rod(&rod, &screw_material)?);
     }
     let mut tubes = Vec::new();
@@ -148,8 +146,12 @@ pub fn size_all(
         };
         tubes = size_torque_tubes(&inputs, scene.sizing.gearbox_efficiency, shape, &tube_material)?;
         // All screws turn together: drive speed = nut speed / lead turns per second.
-        let spec = mechanisms[order[0].0].track.spec();
-        let angular_speed = 2.0 * std::f64::consts::PI * spec.nominal_input_speed_mps / spec.screw.lead_m;
+        let Actuator::ScrewJack {
+            screw,
+            nominal_speed_mps,
+            ..
+        } = mechanisms[order[0].0].mechanism.actuator();
+        let angular_speed = 2.0 * std::f64::consts::PI * nominal_speed_mps / screw.lead_m;
         let ordered_torques: Vec<f64> = order.iter().map(|&(i, _)| motor_torque(i)).collect();
         let work = deployment_work(scene, mechanisms, reports, &order)?;
         drive = Some(drive_demand(
@@ -185,7 +187,8 @@ fn deployment_work(
                 complete = false;
                 break;
             };
-            let lead = mechanisms[i].track.spec().screw.lead_m;
+            let Actuator::ScrewJack { screw, .. } = mechanisms[i].mechanism.actuator();
+            let lead = screw.lead_m;
             let angles: Vec<f64> = sweep
                 .samples
                 .iter()

@@ -229,6 +229,14 @@ pub enum Error {
         /// Station name.
         station: String,
     },
+    /// A moving body is joined to the rest only through slots: no URDF tree reaches it.
+    #[error("station `{station}`: body `{body}` is reached by no revolute or prismatic joint, so the URDF tree cannot place it")]
+    UrdfTreeIncomplete {
+        /// Station name.
+        station: String,
+        /// Body name.
+        body: String,
+    },
     /// A URDF robot needs at least one station.
     #[error("a URDF robot needs at least one station")]
     NoStations,

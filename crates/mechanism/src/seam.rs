@@ -25,7 +25,7 @@
 //! [`MechanismPose`] holds each body's planar displacement from there (an `Isometry2`), so
 //! a stowed point `p` of body `b` stands at `pose.bodies[b] * p`.
 
-use nalgebra::{Isometry2, Point2};
+use nalgebra::{Isometry2, Point2, Unit, Vector2};
 use serde::Serialize;
 
 use crate::error::Result;
@@ -235,18 +235,36 @@ impl Body {
     }
 }
 
-/// How a joint constrains its two bodies.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum JointKind {
+/// How a joint constrains its two bodies, and where (stowed, station frame, m).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
+pub enum JointGeometry {
     /// A pin: the bodies turn about a common point.
-    Revolute,
-    /// A slide: one body translates along the other without turning.
-    Prismatic,
-    /// A pin of one body in a circular slot of the other.
-    PinInCircularSlot,
-    /// A pin of one body in a straight slot of the other.
-    PinInStraightSlot,
+    Revolute {
+        /// The pin's centre.
+        at: Point2<f64>,
+    },
+    /// A slide: the second end translates along the first without turning.
+    Prismatic {
+        /// A point on the line of the slide.
+        origin: Point2<f64>,
+        /// Direction of the slide (unit).
+        direction: Unit<Vector2<f64>>,
+    },
+    /// A pin of the first end in a circular slot of the second.
+    PinInCircularSlot {
+        /// The pin's centre.
+        pin: Point2<f64>,
+        /// The slot's centre of curvature.
+        centre: Point2<f64>,
+    },
+    /// A pin of the first end in a straight slot of the second.
+    PinInStraightSlot {
+        /// The pin's centre.
+        pin: Point2<f64>,
+        /// Direction of the slot (unit).
+        direction: Unit<Vector2<f64>>,
+    },
 }
 
 /// One end of a joint: a body, or the wing (ground).
@@ -266,8 +284,8 @@ pub struct Joint {
     pub name: String,
     /// What it is, in words for reports ("nut on the screw, pivoting on the flap").
     pub description: String,
-    /// Its kind.
-    pub kind: JointKind,
+    /// Its kind and where it is.
+    pub geometry: JointGeometry,
     /// The two ends.
     pub ends: [JointEnd; 2],
     /// The solids of the two ends that touch by design (body solid names), checked to

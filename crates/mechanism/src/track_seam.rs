@@ -17,14 +17,14 @@
 //! 1/(a2 sin μ) <= 1/(a2 sin μ_min); A moves at 1/sin μ <= 1/sin μ_min; the screw (and the
 //! nut with it) turns about B0 at |dψ/ds| = cot μ / s <= cot μ_min / s34,i.
 
-use nalgebra::{Isometry2, Point2, Rotation2, Translation2, Vector2};
+use nalgebra::{Isometry2, Point2, Rotation2, Translation2, Unit, Vector2};
 use serde::Serialize;
 
 use crate::error::Result;
 use crate::kinetostatics::LoadCase;
 use crate::seam::{
     Actuator, Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd,
-    JointKind, Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound,
+    JointGeometry, Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound,
 };
 use crate::track_synthesis::CircularArcTrack;
 
@@ -178,10 +178,10 @@ pub(crate) fn bodies_and_joints(track: &CircularArcTrack, hardware: &TrackHardwa
             spec.outer_slot_start_angle_rad + spec.inner_slot_offset_angle_rad,
         ),
     ];
-    let joint = |name: &str, description: &str, kind, ends, touching: &[(&str, &str)]| Joint {
+    let joint = |name: &str, description: &str, geometry, ends, touching: &[(&str, &str)]| Joint {
         name: name.into(),
         description: description.into(),
-        kind,
+        geometry,
         ends,
         touching_solids: touching.iter().map(|(x, y)| (x.to_string(), y.to_string())).collect(),
     };
@@ -189,35 +189,44 @@ pub(crate) fn bodies_and_joints(track: &CircularArcTrack, hardware: &TrackHardwa
         joint(
             "A",
             "nut on the screw, pivoting on the flap",
-            JointKind::Revolute,
+            JointGeometry::Revolute { at: a },
             [JointEnd::Body(NUT), JointEnd::Body(FLAP)],
             &[("screw", "nut"), ("screw", "fitting-A")],
         ),
         joint(
             "nut-slide",
             "nut riding along the screw",
-            JointKind::Prismatic,
-            [JointEnd::Body(NUT), JointEnd::Body(SCREW)],
+            JointGeometry::Prismatic {
+                origin: a,
+                direction: Unit::new_normalize(a - b0),
+            },
+            [JointEnd::Body(SCREW), JointEnd::Body(NUT)],
             &[],
         ),
         joint(
             "B0",
             "screw turning in the jack body",
-            JointKind::Revolute,
-            [JointEnd::Body(SCREW), JointEnd::Ground],
+            JointGeometry::Revolute { at: b0 },
+            [JointEnd::Ground, JointEnd::Body(SCREW)],
             &[],
         ),
         joint(
             "F",
             "pin in the outer slot",
-            JointKind::PinInCircularSlot,
+            JointGeometry::PinInCircularSlot {
+                pin: f,
+                centre: Point2::origin(),
+            },
             [JointEnd::Body(FLAP), JointEnd::Body(3)],
             &[("fitting-F", "outer-track")],
         ),
         joint(
             "G",
             "pin in the inner slot",
-            JointKind::PinInCircularSlot,
+            JointGeometry::PinInCircularSlot {
+                pin: g,
+                centre: Point2::origin(),
+            },
             [JointEnd::Body(FLAP), JointEnd::Body(4)],
             &[("fitting-G", "inner-track")],
         ),

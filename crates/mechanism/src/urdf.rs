@@ -2,33 +2,33 @@
 //! check of the URDF rules.
 //!
 //! One robot per wing. The base link is the wing structure in the aircraft frame (its
-//! meshes need no offset). Each [`StationMechanism3d`] adds the circular-arc track of
-//! thesis Chapter 3 as a tree (`<s>` = station name):
+//! meshes need no offset). Each [`StationMechanism3d`] adds its mechanism, through the
+//! seam ([`crate::seam::FlapMechanism`]), as a tree (`<s>` = station name):
 //!
 //! ```text
-//! base ──fixed <s>_station_mount (aircraft_from_station)──> <s>_station        (ground, station frame)
-//!   <s>_station ──revolute <s>_flap_hinge (about z at A0)──> <s>_flap_fitting  (flap side: A, D, F, G)
-//!     <s>_flap_fitting ──fixed <s>_flap_mount──> <flap>                         (owning station only)
-//!   <s>_station ──revolute <s>_screw_pivot (about z at B0)──> <s>_screw        (B0, B)
-//!     <s>_screw ──prismatic <s>_nut_slide (along the screw)──> <s>_nut         (A)
+//! base ──fixed <s>_station_mount (aircraft_from_station)──> <s>_station   (ground, station frame)
+//!   <s>_station ──fixed──> <s>_<fixed body>                                 (tracks, supports)
+//!   <s>_station ──revolute/prismatic <s>_<joint>──> <s>_<body> ──...        (a spanning tree)
+//!     <s>_<flap body> ──fixed <s>_flap_mount──> <flap>                       (owning station only)
 //! ```
 //!
-//! Joint values: `<s>_flap_hinge` = deflection θ12 - θ12,i in [0, β3] (rad);
-//! `<s>_screw_pivot` = θ13 - θ13,i (rad), limits the extremes over the stroke;
-//! `<s>_nut_slide` = s34 in [s34,i, s34,f] (m), the nut's distance from B0. At zero hinge
-//! and screw values every link is stowed; the nut sits at B0 until its joint reads s34.
+//! The spanning tree starts at the ground and reaches each moving body by the first
+//! revolute or prismatic seam joint (in the kind's order) to a body already placed; for
+//! the circular-arc track: `<s>_B0` (screw about B0), `<s>_nut_slide` (nut along the
+//! screw), `<s>_A` (flap about the nut pivot A). Joint values are each body's rotation
+//! (rad) or slide (m) against its parent since stowed, so every link is stowed at zero.
 //!
 //! Closed loops are cut because URDF describes trees only ([`CutJoint`], listed in the
-//! file's comment by [`to_xml`]): the nut-on-flap revolute A at every station, and the
-//! rigid attachment of a non-owning station's flap fitting to the flap. The two
-//! pin-in-slot joints F and G are not cut but represented exactly by the hinge revolute
-//! at A0, since both slots are circular arcs centred at A0 (thesis Fig. 12).
+//! file's comment by [`to_xml`]): every seam joint outside the tree (the track's pins F
+//! and G in their slots) and the rigid attachment of a non-owning station's flap body to
+//! the flap. The tree alone poses every body exactly: a loop's other joints close by
+//! construction, because the joint values come from the mechanism's own poses.
 //!
 //! Frames and units: metres and radians; the base link frame is the aircraft frame; each
-//! station link frame is the thesis station frame (origin A0, x to the nose, y up, z
-//! outboard along the hinge axis), placed by `aircraft_from_station`. Every joint axis is
-//! the station z (or, for the nut, the screw direction) mapped into the aircraft frame
-//! by the joint origins; origins carry URDF fixed-axis rpy, R = Rz(yaw) Ry(pitch) Rx(roll)
+//! station link frame is the station frame (origin A0, x to the nose, y up, z outboard),
+//! placed by `aircraft_from_station`; a body's link frame is its parent joint's frame
+//! where the body stands stowed. Revolute axes are the station z; prismatic axes the
+//! slide's direction. Origins carry URDF fixed-axis rpy, R = Rz(yaw) Ry(pitch) Rx(roll)
 //! ([`rpy_from_rotation`]).
 //!
 //! ```
@@ -45,7 +45,7 @@
 //!         Vector3::new(3.2, 1.5, 0.4),
 //!         Vector3::new(0.0, 1.0, 1.0).normalize() * std::f64::consts::PI,
 //!     ),
-//!     track: &track,
+//!     mechanism: &track,
 //!     flap_name: "flap".into(),
 //!     owns_flap: true,
 //!     flap_mesh: Some("meshes/flap.stl".into()),
@@ -56,15 +56,16 @@
 //! let xml = urdf::to_xml(&model)?;
 //! assert!(xml.starts_with("<?xml"));
 //! let trajectory = urdf::trajectory(&stations, 11)?;
-//! assert_eq!(trajectory.joint_names[0], "inner_flap_hinge");
+//! assert_eq!(trajectory.joint_names, ["inner_B0", "inner_nut_slide", "inner_A"]);
 //! let outboard = stations[0].aircraft_from_station * Vector3::z();
 //! assert!((outboard - Vector3::y()).norm() < 1e-15);
 //! # Ok::<(), flapwright_mechanism::Error>(())
 //! ```
 //!
 //! Limitations: links carry no inertia (mass 0: the file is for viewers and checks, not
-//! for dynamics); joint efforts are 0 (unknown here); velocity limits are the largest
-//! rates sampled at the spec's nominal nut speed.
+//! for dynamics); joint efforts are 0 (unknown here); joint and velocity limits are the
+//! extremes of 129 samples of the deployment (widened by half the largest step) at the
+//! actuator's nominal speed.
 
 mod build;
 mod layout;
@@ -75,7 +76,7 @@ mod trajectory;
 use nalgebra::Isometry3;
 use serde::Serialize;
 
-use crate::track_synthesis::CircularArcTrack;
+use crate::seam::FlapMechanism;
 
 pub use build::{build_robot, to_xml};
 pub use rpy::{isometry_from_origin, origin_from_isometry, rotation_from_rpy, rpy_from_rotation};
@@ -108,8 +109,8 @@ pub struct StationMechanism3d<'a> {
     /// Rigid placement of the station frame (origin A0, x to the nose, y up, z outboard)
     /// in the aircraft frame (x aft, y starboard, z up): p_ac = aircraft_from_station p_st.
     pub aircraft_from_station: Isometry3<f64>,
-    /// The synthesised mechanism.
-    pub track: &'a CircularArcTrack,
+    /// The synthesised mechanism, through the seam.
+    pub mechanism: &'a dyn FlapMechanism,
     /// Name of the flap this station drives (the flap link's name).
     pub flap_name: String,
     /// Whether the flap link hangs off this station; exactly one station per flap.
@@ -124,9 +125,11 @@ pub struct StationMechanism3d<'a> {
 pub struct CutJoint {
     /// Station name.
     pub station: String,
-    /// Joint name: `"A"` (nut on flap) or `"flap_attachment"` (fitting on flap).
+    /// The seam joint's name (the track's `F`, `G`), or `"flap_attachment"` (a non-owning
+    /// station's flap body on the flap).
     pub joint: String,
-    /// `"revolute"` (A, about `axis_ac`) or `"fixed"` (rigid attachment).
+    /// `"revolute"`, `"prismatic"`, `"pin-in-circular-slot"`, `"pin-in-straight-slot"` or
+    /// `"fixed"`.
     pub kind: &'static str,
     /// The two URDF links the cut joint would connect.
     pub between: (String, String),

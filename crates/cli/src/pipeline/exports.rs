@@ -68,7 +68,7 @@ pub fn write_urdf(
             StationMechanism3d {
                 name: station.name.clone(),
                 aircraft_from_station: *place.station.frame.aircraft_from_station(),
-                track: &mechanism.track,
+                mechanism: mechanism.mechanism.as_ref(),
                 flap_mesh: if owns_flap {
                     parts
                         .iter()

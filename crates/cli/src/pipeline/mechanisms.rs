@@ -25,9 +25,7 @@ const SCREW_LENGTH_MARGIN: f64 = 1.10;
 pub struct StationMechanism {
     /// Station name.
     pub station: String,
-    /// The synthesised track.
-    pub track: CircularArcTrack,
-    /// The same mechanism behind the seam: what the geometry stages use.
+    /// The synthesised mechanism, behind the seam: all the other stages see of it.
     pub mechanism: Arc<dyn FlapMechanism>,
 }
 
@@ -98,8 +96,7 @@ pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationMechanism>> {
                 ));
                 built.push(StationMechanism {
                     station: station.name.clone(),
-                    mechanism: Arc::new(track.clone()),
-                    track,
+                    mechanism: Arc::new(track),
                 })
             }
             Err(error) => problems.push(Problem {

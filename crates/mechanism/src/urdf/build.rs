@@ -3,16 +3,14 @@
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
-use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
+use nalgebra::{Isometry2, Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use urdf_rs::{Axis, Geometry, Joint, JointLimit, JointType, Link, LinkName, Robot, Vec3, Visual};
 
-use super::layout::{
-    joint_limits, screw_stowed_direction_rad, validate_mesh_path, validate_name, validate_stations, velocity_limits,
-    StationNames,
-};
+use super::layout::{validate_mesh_path, validate_name, validate_stations, StationTree, TreeJointType};
 use super::rpy::origin_from_isometry;
 use super::{BaseLink, CutJoint, StationMechanism3d, UrdfModel};
 use crate::error::{Error, Result};
+use crate::seam::{JointEnd, JointGeometry};
 
 /// The URDF version written (`<robot version>`); 1.0 keeps every reader happy.
 const URDF_VERSION: &str = "1.0";
@@ -79,7 +77,8 @@ pub fn to_xml(model: &UrdfModel) -> Result<String> {
         text,
         "  Robot `{}` written by flapwright-mechanism (urdf module).\n  \
          Units: metres, radians. Base link frame = aircraft frame (x aft, y starboard, z up).\n  \
-         Station links: thesis station frame (origin A0 = hinge, x to the nose, y up, z outboard).\n  \
+         Station links: station frame (origin A0, x to the nose, y up, z outboard); a body's\n  \
+         link frame is its parent joint's frame where the body stands stowed.\n  \
          Joint values per deployment sample are in the trajectory file beside this one.\n  \
          URDF describes trees only: these closed-loop joints are cut (not in this file):",
         model.robot.name
@@ -94,10 +93,7 @@ pub fn to_xml(model: &UrdfModel) -> Result<String> {
             cut.station, cut.kind, cut.joint, cut.between.0, cut.between.1
         );
     }
-    text.push_str(
-        "  Pin-in-slot joints F and G are represented exactly by each <station>_flap_hinge\n  \
-         revolute at A0: both slots are circular arcs centred at A0.\n-->\n",
-    );
+    text.push_str("-->\n");
     text.push_str(&body);
     if !text.ends_with('\n') {
         text.push('\n');
@@ -111,68 +107,77 @@ fn add_station(
     base_name: &str,
     station: &StationMechanism3d,
 ) -> Result<()> {
-    let names = StationNames::new(&station.name);
-    let track = station.track;
-    let limits = joint_limits(track)?;
-    let velocities = velocity_limits(track)?;
+    let tree = StationTree::new(station)?;
+    let limits = tree.limits(station.mechanism)?;
     let z = Vector3::z();
     let placement = &station.aircraft_from_station;
-    for link in [
-        &names.station_link,
-        &names.fitting_link,
-        &names.screw_link,
-        &names.nut_link,
-    ] {
-        robot.links.push(empty_link(link));
-    }
+    robot.links.push(empty_link(&tree.station_link));
     robot.joints.push(joint(
-        &names.mount_joint,
+        &tree.mount_joint,
         JointType::Fixed,
-        (base_name, &names.station_link),
+        (base_name, &tree.station_link),
         placement,
         z,
         None,
     ));
-    robot.joints.push(joint(
-        &names.hinge_joint,
-        JointType::Revolute,
-        (&names.station_link, &names.fitting_link),
-        &Isometry3::identity(),
-        z,
-        Some((limits[0], velocities[0])),
-    ));
-    let b0 = track.synthesis().screw_mount_m;
-    let screw_origin = Isometry3::from_parts(
-        Translation3::new(b0.x, b0.y, 0.0),
-        UnitQuaternion::from_axis_angle(&Vector3::z_axis(), screw_stowed_direction_rad(track)),
-    );
-    robot.joints.push(joint(
-        &names.screw_joint,
-        JointType::Revolute,
-        (&names.station_link, &names.screw_link),
-        &screw_origin,
-        z,
-        Some((limits[1], velocities[1])),
-    ));
-    robot.joints.push(joint(
-        &names.nut_joint,
-        JointType::Prismatic,
-        (&names.screw_link, &names.nut_link),
-        &Isometry3::identity(),
-        Vector3::x(),
-        Some((limits[2], velocities[2])),
-    ));
+    let frame_of = |body: Option<usize>| {
+        body.and_then(|b| tree.links.iter().find(|l| l.body == b))
+            .map_or(Isometry2::identity(), |l| l.frame)
+    };
+    let mut movable_limits = limits.iter();
+    for link in &tree.links {
+        robot.links.push(empty_link(&link.name));
+        let parent_from_child = lift(&(frame_of(link.parent_body).inverse() * link.frame));
+        let (joint_type, axis, limit) = match link.joint_type {
+            TreeJointType::Fixed => (JointType::Fixed, z, None),
+            TreeJointType::Revolute => (JointType::Revolute, z, movable_limits.next().copied()),
+            TreeJointType::Prismatic { sign } => (
+                JointType::Prismatic,
+                Vector3::x() * sign,
+                movable_limits.next().copied(),
+            ),
+        };
+        robot.joints.push(joint(
+            &link.joint_name,
+            joint_type,
+            (&link.parent, &link.name),
+            &parent_from_child,
+            axis,
+            limit,
+        ));
+    }
     let axis_ac = placement * z;
     let to_array = |p: Point3<f64>| [p.x, p.y, p.z];
-    let a_stowed = track.synthesis().nut_pivot_stowed_m;
-    cut_joints.push(CutJoint {
-        station: station.name.clone(),
-        joint: "A".to_owned(),
-        kind: "revolute",
-        between: (names.nut_link.clone(), names.fitting_link.clone()),
-        location_stowed_ac_m: to_array(placement * Point3::new(a_stowed.x, a_stowed.y, 0.0)),
-        axis_ac: [axis_ac.x, axis_ac.y, axis_ac.z],
-    });
+    let link_of = |end: JointEnd| match end {
+        JointEnd::Ground => tree.station_link.clone(),
+        JointEnd::Body(b) => tree
+            .links
+            .iter()
+            .find(|l| l.body == b)
+            .map_or_else(|| tree.station_link.clone(), |l| l.name.clone()),
+    };
+    for &j in &tree.cut {
+        let seam_joint = &station.mechanism.joints()[j];
+        let (kind, at) = match seam_joint.geometry {
+            JointGeometry::Revolute { at } => ("revolute", at),
+            JointGeometry::Prismatic { origin, .. } => ("prismatic", origin),
+            JointGeometry::PinInCircularSlot { pin, .. } => ("pin-in-circular-slot", pin),
+            JointGeometry::PinInStraightSlot { pin, .. } => ("pin-in-straight-slot", pin),
+        };
+        cut_joints.push(CutJoint {
+            station: station.name.clone(),
+            joint: seam_joint.name.clone(),
+            kind,
+            between: (link_of(seam_joint.ends[0]), link_of(seam_joint.ends[1])),
+            location_stowed_ac_m: to_array(placement * Point3::new(at.x, at.y, 0.0)),
+            axis_ac: [axis_ac.x, axis_ac.y, axis_ac.z],
+        });
+    }
+    let flap_frame = tree
+        .links
+        .iter()
+        .find(|l| l.name == tree.flap_link)
+        .map_or(Isometry2::identity(), |l| l.frame);
     if station.owns_flap {
         // The flap link frame = this station's frame with the flap stowed, so a mesh given
         // in the aircraft frame needs the visual origin station_from_aircraft.
@@ -184,10 +189,10 @@ fn add_station(
         }
         robot.links.push(flap);
         robot.joints.push(joint(
-            &names.flap_mount_joint,
+            &format!("{}_flap_mount", station.name),
             JointType::Fixed,
-            (&names.fitting_link, &station.flap_name),
-            &Isometry3::identity(),
+            (&tree.flap_link, &station.flap_name),
+            &lift(&flap_frame.inverse()),
             z,
             None,
         ));
@@ -196,12 +201,21 @@ fn add_station(
             station: station.name.clone(),
             joint: "flap_attachment".to_owned(),
             kind: "fixed",
-            between: (names.fitting_link.clone(), station.flap_name.clone()),
+            between: (tree.flap_link.clone(), station.flap_name.clone()),
             location_stowed_ac_m: to_array(placement * Point3::origin()),
             axis_ac: [axis_ac.x, axis_ac.y, axis_ac.z],
         });
     }
     Ok(())
+}
+
+/// A planar placement as a rigid motion of the station frame (about its z axis).
+pub(crate) fn lift(placement: &Isometry2<f64>) -> Isometry3<f64> {
+    let t = placement.translation.vector;
+    Isometry3::from_parts(
+        Translation3::new(t.x, t.y, 0.0),
+        UnitQuaternion::from_axis_angle(&Vector3::z_axis(), placement.rotation.angle()),
+    )
 }
 
 fn empty_link(name: &str) -> Link {

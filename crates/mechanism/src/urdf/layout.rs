@@ -1,199 +1,310 @@
-//! Names, joint placements, limits, joint values and key points of one station's tree,
-//! shared by the robot builder and the trajectory so that both always agree.
+//! One station's URDF tree, built from the mechanism seam alone: a link per body, a
+//! spanning tree over the revolute and prismatic joints from the ground, joint values from
+//! the bodies' poses, key points on the links that carry them. Shared by the robot builder
+//! and the trajectory so that both always agree.
+//!
+//! Link frames: the station link is the station frame; a body's link frame is its parent
+//! joint's frame (revolute: at the pin, axes of the station; prismatic: at a point of the
+//! slide, x along it) where the body stands stowed. A body's stowed points are moved into its
+//! link frame by [`TreeLink::frame`]'s inverse. With zero joint values every link is stowed.
 
 use std::collections::BTreeSet;
 
-use nalgebra::{Point2, Point3};
+use nalgebra::{Isometry2, Point2, Point3, Translation2, UnitComplex};
 
 use super::StationMechanism3d;
 use crate::error::{Error, Result};
-use crate::track_pose::Pose;
-use crate::track_synthesis::{wrap, CircularArcTrack};
+use crate::seam::{Actuator, FlapMechanism, JointEnd, JointGeometry, MechanismPose};
 
-/// Samples used to find the largest joint rates for the URDF velocity limits.
-const VELOCITY_LIMIT_SAMPLES: usize = 33;
+/// Samples of the deployment used for the joint limits and velocity limits.
+const LIMIT_SAMPLES: usize = 129;
 
-/// Link and joint names of one station.
-pub(crate) struct StationNames {
+/// A point is carried by a body when the body's displacement moves its stowed position to
+/// its posed one within this distance (m) at every probe.
+const CARRIED_TOLERANCE_M: f64 = 1e-9;
+
+/// How a tree link hangs off its parent.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum TreeJointType {
+    /// Turns about the link frame's z axis.
+    Revolute,
+    /// Slides along the link frame's x axis.
+    Prismatic {
+        /// +1 when the child is the joint's second end (the slide), -1 when the first.
+        sign: f64,
+    },
+    /// Rigidly on the station (a fixed body: track, support).
+    Fixed,
+}
+
+/// One body's link in the tree.
+#[derive(Debug, Clone)]
+pub(crate) struct TreeLink {
+    /// Index of the body in the mechanism.
+    pub body: usize,
+    /// URDF link name `<station>_<body>`.
+    pub name: String,
+    /// Parent link name (the station link or another body's link).
+    pub parent: String,
+    /// Parent's body index (None: the station link).
+    pub parent_body: Option<usize>,
+    /// URDF joint name `<station>_<joint>` (`<station>_<body>_mount` for a fixed body).
+    pub joint_name: String,
+    /// Joint type.
+    pub joint_type: TreeJointType,
+    /// The link frame in the station frame, stowed.
+    pub frame: Isometry2<f64>,
+}
+
+/// A station's tree: links in parent-first order, and the seam joints left out of it.
+pub(crate) struct StationTree {
+    /// The station link's name.
     pub station_link: String,
-    pub fitting_link: String,
-    pub screw_link: String,
-    pub nut_link: String,
+    /// The fixed joint placing the station link on the base.
     pub mount_joint: String,
-    pub hinge_joint: String,
-    pub flap_mount_joint: String,
-    pub screw_joint: String,
-    pub nut_joint: String,
+    /// Links of the bodies, parents first.
+    pub links: Vec<TreeLink>,
+    /// Indices of the seam joints not in the tree (closed loops, slots).
+    pub cut: Vec<usize>,
+    /// The link of the flap body.
+    pub flap_link: String,
 }
 
-impl StationNames {
-    pub fn new(station: &str) -> Self {
-        let name = |suffix: &str| format!("{station}_{suffix}");
-        Self {
-            station_link: name("station"),
-            fitting_link: name("flap_fitting"),
-            screw_link: name("screw"),
-            nut_link: name("nut"),
+/// The link frame of a joint's child: at the pin (revolute), or at the slide's origin with
+/// x along it (prismatic).
+fn joint_frame(geometry: &JointGeometry) -> Option<Isometry2<f64>> {
+    match geometry {
+        JointGeometry::Revolute { at } => Some(Isometry2::from_parts(
+            Translation2::from(at.coords),
+            UnitComplex::identity(),
+        )),
+        JointGeometry::Prismatic { origin, direction } => Some(Isometry2::from_parts(
+            Translation2::from(origin.coords),
+            UnitComplex::new(direction.y.atan2(direction.x)),
+        )),
+        JointGeometry::PinInCircularSlot { .. } | JointGeometry::PinInStraightSlot { .. } => None,
+    }
+}
+
+impl StationTree {
+    /// The spanning tree of `station`'s mechanism: from the ground, each moving body is
+    /// reached by the first revolute or prismatic joint (in the kind's order) to a body
+    /// already placed; fixed bodies hang on the station link.
+    ///
+    /// Errors: [`Error::UrdfTreeIncomplete`] when a moving body is reachable only through
+    /// slots.
+    pub fn new(station: &StationMechanism3d) -> Result<Self> {
+        let mechanism = station.mechanism;
+        let bodies = mechanism.bodies();
+        let joints = mechanism.joints();
+        let name = |suffix: &str| format!("{}_{}", station.name, suffix.replace('-', "_"));
+        let station_link = name("station");
+        let mut links: Vec<TreeLink> = Vec::new();
+        let mut in_tree = BTreeSet::new();
+        for (b, body) in bodies.iter().enumerate().filter(|(_, body)| !body.is_moving()) {
+            links.push(TreeLink {
+                body: b,
+                name: name(&body.name),
+                parent: station_link.clone(),
+                parent_body: None,
+                joint_name: name(&format!("{}_mount", body.name)),
+                joint_type: TreeJointType::Fixed,
+                frame: Isometry2::identity(),
+            });
+        }
+        let placed = |links: &[TreeLink], end: JointEnd| match end {
+            JointEnd::Ground => Some((station_link.clone(), None, Isometry2::identity())),
+            JointEnd::Body(b) => links
+                .iter()
+                .find(|l| l.body == b && l.joint_type != TreeJointType::Fixed)
+                .map(|l| (l.name.clone(), Some(b), l.frame)),
+        };
+        loop {
+            let mut grew = false;
+            for (j, joint) in joints.iter().enumerate() {
+                if in_tree.contains(&j) {
+                    continue;
+                }
+                let Some(frame) = joint_frame(&joint.geometry) else {
+                    continue;
+                };
+                for (parent_end, child_end, sign) in [(0, 1, 1.0), (1, 0, -1.0)] {
+                    let JointEnd::Body(child) = joint.ends[child_end] else {
+                        continue;
+                    };
+                    let child_placed = links.iter().any(|l| l.body == child);
+                    let Some((parent, parent_body, _)) = placed(&links, joint.ends[parent_end]) else {
+                        continue;
+                    };
+                    if child_placed || !bodies[child].is_moving() {
+                        continue;
+                    }
+                    let joint_type = match joint.geometry {
+                        JointGeometry::Prismatic { .. } => TreeJointType::Prismatic { sign },
+                        _ => TreeJointType::Revolute,
+                    };
+                    links.push(TreeLink {
+                        body: child,
+                        name: name(&bodies[child].name),
+                        parent,
+                        parent_body,
+                        joint_name: name(&joint.name),
+                        joint_type,
+                        frame,
+                    });
+                    in_tree.insert(j);
+                    grew = true;
+                    break;
+                }
+            }
+            if !grew {
+                break;
+            }
+        }
+        if let Some((_, body)) = bodies
+            .iter()
+            .enumerate()
+            .find(|(b, body)| body.is_moving() && !links.iter().any(|l| l.body == *b))
+        {
+            return Err(Error::UrdfTreeIncomplete {
+                station: station.name.clone(),
+                body: body.name.clone(),
+            });
+        }
+        let flap_link = bodies
+            .iter()
+            .position(|b| b.role == crate::seam::BodyRole::Flap)
+            .and_then(|f| links.iter().find(|l| l.body == f))
+            .map(|l| l.name.clone())
+            .ok_or_else(|| Error::UrdfTreeIncomplete {
+                station: station.name.clone(),
+                body: "flap".into(),
+            })?;
+        Ok(Self {
             mount_joint: name("station_mount"),
-            hinge_joint: name("flap_hinge"),
-            flap_mount_joint: name("flap_mount"),
-            screw_joint: name("screw_pivot"),
-            nut_joint: name("nut_slide"),
-        }
+            station_link,
+            cut: (0..joints.len()).filter(|j| !in_tree.contains(j)).collect(),
+            links,
+            flap_link,
+        })
     }
 
-    /// The movable joints, in trajectory order.
-    pub fn movable_joints(&self) -> [String; 3] {
-        [
-            self.hinge_joint.clone(),
-            self.screw_joint.clone(),
-            self.nut_joint.clone(),
-        ]
+    /// The movable links (revolute and prismatic), in trajectory order.
+    pub fn movable(&self) -> impl Iterator<Item = &TreeLink> {
+        self.links.iter().filter(|l| l.joint_type != TreeJointType::Fixed)
     }
-}
 
-/// Joint limits (lower, upper) in trajectory order: hinge (rad), screw (rad), nut (m).
-pub(crate) fn joint_limits(track: &CircularArcTrack) -> Result<[(f64, f64); 3]> {
-    let synthesis = track.synthesis();
-    let linkage = track.linkage();
-    let (start, end) = (synthesis.stroke_start_m, synthesis.stroke_end_m);
-    let stowed = synthesis.end_slider_angle_rad;
-    // The screw direction is the same at both stroke ends (collinearity, thesis step 8), so
-    // its extreme lies inside the stroke where B0A is tangent to A's circle about A0:
-    // s = sqrt(a1² - a2²) (right angle at A).
-    let (a1, a2) = (linkage.base_distance_m, linkage.crank_length_m);
-    let tangent = ((a1 - a2) * (a1 + a2)).sqrt();
-    let mut candidates = vec![start, end];
-    if tangent.is_finite() && tangent > start && tangent < end {
-        candidates.push(tangent);
+    /// The joint value of each movable link at `pose`: the relative rotation (rad) or the
+    /// slide (m) of the body against its parent since stowed.
+    pub fn joint_values(&self, pose: &MechanismPose) -> Vec<f64> {
+        self.movable()
+            .map(|link| {
+                let parent = link.parent_body.map_or(Isometry2::identity(), |b| pose.bodies[b]);
+                let relative = parent.inverse() * pose.bodies[link.body];
+                match link.joint_type {
+                    TreeJointType::Prismatic { sign } => {
+                        let along = link.frame.rotation * nalgebra::Vector2::x();
+                        sign * relative.translation.vector.dot(&along)
+                    }
+                    _ => relative.rotation.angle(),
+                }
+            })
+            .collect()
     }
-    let (mut lower, mut upper) = (0.0_f64, 0.0_f64);
-    for input in candidates {
-        let (_, slider) = linkage.angles(input)?;
-        let relative = wrap(slider - stowed);
-        lower = lower.min(relative);
-        upper = upper.max(relative);
-    }
-    Ok([(0.0, track.spec().rotation_range_rad), (lower, upper), (start, end)])
-}
 
-/// Largest |rate| over the stroke at the spec's nominal nut speed, trajectory order:
-/// hinge (rad/s), screw (rad/s), nut (m/s).
-pub(crate) fn velocity_limits(track: &CircularArcTrack) -> Result<[f64; 3]> {
-    let speed = track.spec().nominal_input_speed_mps;
-    let mut limits = [0.0, 0.0, speed.abs()];
-    for input in stroke_inputs(track, VELOCITY_LIMIT_SAMPLES) {
-        let pose = track.pose(input, speed, 0.0)?;
-        limits[0] = f64::max(limits[0], pose.linkage.crank_rate_radps.abs());
-        limits[1] = f64::max(limits[1], pose.linkage.slider_rate_radps.abs());
-    }
-    Ok(limits)
-}
-
-/// `samples` evenly spaced nut positions from s34,i to s34,f, both ends exact.
-pub(crate) fn stroke_inputs(track: &CircularArcTrack, samples: usize) -> Vec<f64> {
-    // The seam's spacing, so trajectory samples are the report's deployment samples.
-    crate::FlapMechanism::input_range(track).samples(samples)
-}
-
-/// Joint values of a pose, trajectory order: deflection (rad), θ13 - θ13,i (rad), s34 (m).
-pub(crate) fn joint_values(track: &CircularArcTrack, pose: &Pose) -> [f64; 3] {
-    let stowed = track.synthesis().end_slider_angle_rad;
-    [
-        pose.deflection_rad,
-        wrap(pose.linkage.slider_angle_rad - stowed),
-        pose.linkage.input_m,
-    ]
-}
-
-/// Absolute direction of the stowed screw in the station plane (rad from +x): α0 + θ13,i.
-pub(crate) fn screw_stowed_direction_rad(track: &CircularArcTrack) -> f64 {
-    wrap(track.spec().base_angle_rad + track.synthesis().end_slider_angle_rad)
-}
-
-/// Which point of a pose a key point follows.
-#[derive(Clone, Copy)]
-pub(crate) enum PosePoint {
-    Hinge,
-    ScrewMount,
-    ScrewEnd,
-    NutPivot,
-    CentreOfMass,
-    OuterPin,
-    InnerPin,
-}
-
-impl PosePoint {
-    /// The point's position in the station frame (m) at `pose`.
-    pub fn at(self, track: &CircularArcTrack, pose: &Pose) -> Point2<f64> {
-        match self {
-            Self::Hinge => Point2::origin(),
-            Self::ScrewMount => track.synthesis().screw_mount_m,
-            Self::ScrewEnd => pose.screw_end_b.position_m,
-            Self::NutPivot => pose.nut_pivot_a.position_m,
-            Self::CentreOfMass => pose.centre_of_mass_d.position_m,
-            Self::OuterPin => pose.outer_pin_f.position_m,
-            Self::InnerPin => pose.inner_pin_g.position_m,
-        }
+    /// Lower and upper joint values and the largest rate at the actuator's nominal speed,
+    /// per movable link, over the deployment (sampled, widened by the largest step between
+    /// samples so that every value of the deployment lies inside).
+    pub fn limits(&self, mechanism: &dyn FlapMechanism) -> Result<Vec<((f64, f64), f64)>> {
+        let range = mechanism.input_range();
+        let inputs = range.samples(LIMIT_SAMPLES);
+        let values = inputs
+            .iter()
+            .map(|&q| Ok(self.joint_values(&mechanism.pose(q)?)))
+            .collect::<Result<Vec<_>>>()?;
+        let Actuator::ScrewJack { nominal_speed_mps, .. } = mechanism.actuator();
+        let step = range.travel().abs() / (LIMIT_SAMPLES - 1) as f64;
+        Ok((0..self.movable().count())
+            .map(|k| {
+                let column: Vec<f64> = values.iter().map(|v| v[k]).collect();
+                let largest_step = column.windows(2).map(|w| (w[1] - w[0]).abs()).fold(0.0, f64::max);
+                let lower = column.iter().copied().fold(f64::INFINITY, f64::min) - 0.5 * largest_step;
+                let upper = column.iter().copied().fold(f64::NEG_INFINITY, f64::max) + 0.5 * largest_step;
+                (
+                    (lower.min(0.0), upper.max(0.0)),
+                    largest_step / step * nominal_speed_mps.abs(),
+                )
+            })
+            .collect())
     }
 }
 
 /// A key point: its name, the link that carries it, where it sits in that link's frame
-/// (m) and which pose point it must follow.
+/// (m) and which named point of the pose it follows.
 pub(crate) struct KeyPointLayout {
     pub name: String,
     pub link: String,
     pub position_link_m: Point3<f64>,
-    pub follows: PosePoint,
+    pub follows: String,
 }
 
-/// Key points of one station (and of its flap link when it owns the flap).
-pub(crate) fn key_points(station: &StationMechanism3d) -> Vec<KeyPointLayout> {
-    let names = StationNames::new(&station.name);
-    let track = station.track;
-    let synthesis = track.synthesis();
-    let in_plane = |p: Point2<f64>| Point3::new(p.x, p.y, 0.0);
-    let on_flap = [
-        ("A", synthesis.nut_pivot_stowed_m, PosePoint::NutPivot),
-        ("D", track.spec().centre_of_mass_stowed_m, PosePoint::CentreOfMass),
-        ("F", synthesis.outer_pin_stowed_m, PosePoint::OuterPin),
-        ("G", synthesis.inner_pin_stowed_m, PosePoint::InnerPin),
+/// Key points of one station: every named point on every link that carries it (and on the
+/// flap link when the station owns the flap).
+pub(crate) fn key_points(station: &StationMechanism3d, tree: &StationTree) -> Result<Vec<KeyPointLayout>> {
+    let mechanism = station.mechanism;
+    let range = mechanism.input_range();
+    let stowed = mechanism.pose(range.stowed)?;
+    let probes = [
+        mechanism.pose(range.at_fraction(0.37))?,
+        mechanism.pose(range.deployed)?,
     ];
-    let point = |group: &str, label: &str, link: &str, local: Point3<f64>, follows| KeyPointLayout {
-        name: format!("{group}.{label}"),
-        link: link.to_owned(),
-        position_link_m: local,
-        follows,
+    let carried = |body: Option<usize>, name: &str, position: Point2<f64>| {
+        probes.iter().all(|pose| {
+            let moved = body.map_or(position, |b| pose.bodies[b] * position);
+            pose.point(name)
+                .is_some_and(|p| (p - moved).norm() < CARRIED_TOLERANCE_M)
+        })
     };
-    let s = station.name.as_str();
-    let mut points = vec![
-        point(s, "A0", &names.station_link, Point3::origin(), PosePoint::Hinge),
-        point(s, "B0", &names.screw_link, Point3::origin(), PosePoint::ScrewMount),
-        point(
-            s,
-            "B",
-            &names.screw_link,
-            Point3::new(track.spec().screw_length_m, 0.0, 0.0),
-            PosePoint::ScrewEnd,
-        ),
-        point(s, "A_nut", &names.nut_link, Point3::origin(), PosePoint::NutPivot),
-    ];
-    for (label, stowed, follows) in on_flap {
-        points.push(point(s, label, &names.fitting_link, in_plane(stowed), follows));
+    let in_plane = |p: Point2<f64>| Point3::new(p.x, p.y, 0.0);
+    let mut points = Vec::new();
+    for point in &stowed.points {
+        if carried(None, &point.name, point.position) {
+            points.push(KeyPointLayout {
+                name: format!("{}.{}", station.name, point.name),
+                link: tree.station_link.clone(),
+                position_link_m: in_plane(point.position),
+                follows: point.name.clone(),
+            });
+        }
+        for link in tree.movable() {
+            if carried(Some(link.body), &point.name, point.position) {
+                points.push(KeyPointLayout {
+                    name: format!("{}.{}.{}", station.name, mechanism.bodies()[link.body].name, point.name),
+                    link: link.name.clone(),
+                    position_link_m: in_plane(link.frame.inverse() * point.position),
+                    follows: point.name.clone(),
+                });
+            }
+        }
     }
     if station.owns_flap {
         // The flap link frame is the owning station's frame with the flap stowed.
-        for (label, stowed, follows) in &on_flap[1..] {
-            points.push(point(
-                &station.flap_name,
-                label,
-                &station.flap_name,
-                in_plane(*stowed),
-                *follows,
-            ));
+        for point in &stowed.points {
+            let on_flap = probes.iter().all(|pose| {
+                pose.point(&point.name)
+                    .is_some_and(|p| (p - pose.flap * point.position).norm() < CARRIED_TOLERANCE_M)
+            });
+            if on_flap && !carried(None, &point.name, point.position) {
+                points.push(KeyPointLayout {
+                    name: format!("{}.{}", station.flap_name, point.name),
+                    link: station.flap_name.clone(),
+                    position_link_m: in_plane(point.position),
+                    follows: point.name.clone(),
+                });
+            }
         }
     }
-    points
+    Ok(points)
 }
 
 /// Checks names, flap ownership, placements and mesh paths of a set of stations.

@@ -5,14 +5,15 @@ use std::collections::BTreeMap;
 use nalgebra::Point3;
 use serde::Serialize;
 
-use super::layout::{joint_values, key_points, stroke_inputs, validate_stations, StationNames};
+use super::layout::{key_points, validate_stations, StationTree};
 use super::StationMechanism3d;
 use crate::error::{Error, Result};
 
 /// A named point fixed on one URDF link, for checking forward kinematics.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct KeyPoint {
-    /// `<station>.<point>` (A0, B0, B, A_nut, A, D, F, G) or `<flap>.<point>` (D, F, G).
+    /// `<station>.<point>` for a point fixed on the station (A0, B0),
+    /// `<station>.<body>.<point>` for one a body carries, `<flap>.<point>` on the flap link.
     pub name: String,
     /// The URDF link that carries the point.
     pub link: String,
@@ -23,7 +24,7 @@ pub struct KeyPoint {
 /// One deployment sample.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TrajectorySample {
-    /// Nut position s34 (m) of every station, in [`Trajectory::stations`] order.
+    /// Actuator input of every station (m or rad), in [`Trajectory::stations`] order.
     pub input_m: Vec<f64>,
     /// URDF joint values in [`Trajectory::joint_names`] order (rad for revolute joints,
     /// m for prismatic ones).
@@ -41,8 +42,8 @@ pub struct TrajectorySample {
 pub struct Trajectory {
     /// Station names, in input order.
     pub stations: Vec<String>,
-    /// Movable joint names: per station `<s>_flap_hinge` (deflection θ12 - θ12,i, rad),
-    /// `<s>_screw_pivot` (θ13 - θ13,i, rad), `<s>_nut_slide` (s34, m).
+    /// Movable joint names `<station>_<seam joint>` in each station's tree order: the
+    /// relative rotation (rad, revolute) or slide (m, prismatic) since stowed.
     pub joint_names: Vec<String>,
     /// Key points and the links that carry them.
     pub key_points: Vec<KeyPoint>,
@@ -50,10 +51,9 @@ pub struct Trajectory {
     pub samples: Vec<TrajectorySample>,
 }
 
-/// `samples` deployment samples: each station's nut at evenly spaced s34 from s34,i to
-/// s34,f (both included, the same fraction of each station's stroke), posed by
-/// [`crate::CircularArcTrack::pose`], with key points mapped to the aircraft frame by
-/// `aircraft_from_station`.
+/// `samples` deployment samples: each station at the same drive fraction, from stowed to
+/// deployed (both included), posed through the mechanism seam, with key points mapped to
+/// the aircraft frame by `aircraft_from_station`.
 ///
 /// Errors: [`Error::TooFewSamples`] below 2, the station checks of
 /// [`super::build_robot`], and pose errors.
@@ -62,13 +62,21 @@ pub fn trajectory(stations: &[StationMechanism3d], samples: usize) -> Result<Tra
         return Err(Error::TooFewSamples { samples });
     }
     validate_stations(stations)?;
-    let layouts: Vec<_> = stations.iter().map(key_points).collect();
-    let inputs: Vec<Vec<f64>> = stations.iter().map(|s| stroke_inputs(s.track, samples)).collect();
+    let trees = stations.iter().map(StationTree::new).collect::<Result<Vec<_>>>()?;
+    let layouts = stations
+        .iter()
+        .zip(&trees)
+        .map(|(s, t)| key_points(s, t))
+        .collect::<Result<Vec<_>>>()?;
+    let inputs: Vec<Vec<f64>> = stations
+        .iter()
+        .map(|s| s.mechanism.input_range().samples(samples))
+        .collect();
     let mut trajectory = Trajectory {
         stations: stations.iter().map(|s| s.name.clone()).collect(),
-        joint_names: stations
+        joint_names: trees
             .iter()
-            .flat_map(|s| StationNames::new(&s.name).movable_joints())
+            .flat_map(|t| t.movable().map(|l| l.joint_name.clone()))
             .collect(),
         key_points: layouts
             .iter()
@@ -84,25 +92,29 @@ pub fn trajectory(stations: &[StationMechanism3d], samples: usize) -> Result<Tra
     for index in 0..samples {
         let mut sample = TrajectorySample {
             input_m: Vec::with_capacity(stations.len()),
-            joint_values: Vec::with_capacity(3 * stations.len()),
+            joint_values: Vec::with_capacity(trajectory.joint_names.len()),
             key_points_ac_m: BTreeMap::new(),
         };
-        for ((station, layout), station_inputs) in stations.iter().zip(&layouts).zip(&inputs) {
-            let input_m = station_inputs[index];
-            let pose = station.track.pose(input_m, 0.0, 0.0)?;
-            sample.input_m.push(input_m);
-            sample.joint_values.extend(joint_values(station.track, &pose));
+        for (((station, tree), layout), station_inputs) in stations.iter().zip(&trees).zip(&layouts).zip(&inputs) {
+            let input = station_inputs[index];
+            let pose = station.mechanism.pose(input)?;
+            sample.input_m.push(input);
+            let values = tree.joint_values(&pose);
+            if values.iter().any(|v| !v.is_finite()) {
+                return Err(Error::NonFinite {
+                    quantity: "URDF joint value",
+                    input_m: input,
+                });
+            }
+            sample.joint_values.extend(values);
             for point in layout {
-                let p = point.follows.at(station.track, &pose);
+                let p = pose.point(&point.follows).ok_or(Error::NonFinite {
+                    quantity: "key point",
+                    input_m: input,
+                })?;
                 let p_ac = station.aircraft_from_station * Point3::new(p.x, p.y, 0.0);
                 sample.key_points_ac_m.insert(point.name.clone(), to_array(p_ac));
             }
-        }
-        if let Some(bad) = sample.joint_values.iter().position(|v| !v.is_finite()) {
-            return Err(Error::NonFinite {
-                quantity: "URDF joint value",
-                input_m: sample.input_m[bad / 3],
-            });
         }
         trajectory.samples.push(sample);
     }

@@ -65,7 +65,29 @@ fn forward_kinematics_of_the_file_reproduces_every_key_point() {
     let model = build_robot("right_wing", &base_link(), &stations).unwrap();
     let trajectory = trajectory(&stations, SAMPLES).unwrap();
     assert_eq!(trajectory.samples.len(), SAMPLES);
-    assert_eq!(trajectory.key_points.len(), 2 * 8 + 3);
+    // Every named point on every link that carries it: A0 and B0 on the station, A0 also on
+    // the flap (it turns about it), B0 and B on the screw, A on the nut and the flap, D F G
+    // on the flap, and A D F G on the owning station's flap link.
+    let names: Vec<&str> = trajectory.key_points.iter().map(|k| k.name.as_str()).collect();
+    let inner: Vec<&str> = names.iter().copied().filter(|n| n.starts_with("inner.")).collect();
+    assert_eq!(
+        inner,
+        [
+            "inner.A0",
+            "inner.flap.A0",
+            "inner.B0",
+            "inner.screw.B0",
+            "inner.nut.A",
+            "inner.flap.A",
+            "inner.screw.B",
+            "inner.flap.D",
+            "inner.flap.F",
+            "inner.flap.G"
+        ]
+    );
+    let on_flap_link: Vec<&str> = names.iter().copied().filter(|n| n.starts_with("flap.")).collect();
+    assert_eq!(on_flap_link, ["flap.A", "flap.D", "flap.F", "flap.G"]);
+    assert_eq!(names.len(), 2 * inner.len() + on_flap_link.len());
     let robot = read_back(&model);
     let error = key_point_error(&robot, &trajectory);
     assert!(error <= KEY_POINT_TOLERANCE_M, "key point error {error} m");
@@ -87,7 +109,7 @@ fn placements_at_gimbal_lock_survive_the_file() {
         let station = StationMechanism3d {
             name: "only".to_owned(),
             aircraft_from_station: Isometry3::from_parts(Translation3::new(1.0, -2.0, 0.5), rotation),
-            track: &track,
+            mechanism: &track,
             flap_name: "flap".to_owned(),
             owns_flap: true,
             flap_mesh: None,
@@ -130,12 +152,15 @@ fn joint_values_start_stowed_and_stay_within_limits() {
     let robot = build_robot("right_wing", &base_link(), &stations).unwrap().robot;
     let trajectory = trajectory(&stations, SAMPLES).unwrap();
     let synthesis = inner.synthesis();
+    // Inner station: screw about B0 (rad), nut along the screw (m), flap about A (rad).
     let first = &trajectory.samples[0].joint_values;
-    assert!(first[0].abs() <= 1e-15 && first[1].abs() <= 1e-15, "stowed: {first:?}");
-    assert_relative_eq!(first[2], synthesis.stroke_start_m, max_relative = 1e-15);
+    assert!(first[..3].iter().all(|v| v.abs() <= 1e-15), "stowed: {first:?}");
     let last = &trajectory.samples[SAMPLES - 1].joint_values;
-    assert_relative_eq!(last[0], 35f64.to_radians(), max_relative = 1e-12);
-    assert_relative_eq!(last[2], synthesis.stroke_end_m, max_relative = 1e-15);
+    assert_relative_eq!(last[1], synthesis.stroke_m, max_relative = 1e-12);
+    // The flap turns by the screw's turn plus its own about A: 35 deg in all.
+    assert_relative_eq!(last[0] + last[2], 35f64.to_radians(), max_relative = 1e-12);
+    // Collinearity (thesis step 8): the screw points the same way at both stroke ends.
+    assert!(last[0].abs() < 1e-12, "{}", last[0]);
     let limit = |name: &str| {
         let joint = robot.joints.iter().find(|j| j.name == name).unwrap();
         (joint.limit.lower, joint.limit.upper)
@@ -149,17 +174,22 @@ fn joint_values_start_stowed_and_stay_within_limits() {
                 "{name} = {value} outside [{lower}, {upper}]"
             );
         }
-        screw_range.0 = screw_range.0.min(sample.joint_values[1]);
-        screw_range.1 = screw_range.1.max(sample.joint_values[1]);
+        screw_range.0 = screw_range.0.min(sample.joint_values[0]);
+        screw_range.1 = screw_range.1.max(sample.joint_values[0]);
     }
-    // The analytic screw extreme (B0A tangent to A's circle) bounds the sampled one
-    // closely: 41 samples miss the peak by a second-order amount only.
-    let (lower, upper) = limit("inner_screw_pivot");
-    assert!(lower < 0.0 || upper > 0.0, "the screw swings");
-    let extreme = if upper > 0.0 {
-        (upper, screw_range.1)
-    } else {
-        (lower, screw_range.0)
-    };
-    assert_relative_eq!(extreme.0, extreme.1, max_relative = 1e-2);
+    // The screw's extreme is where B0A is tangent to A's circle about A0, s34 =
+    // sqrt(a1^2 - a2^2): its angle there bounds the sampled range, and the limit (129
+    // samples widened by half a step) holds it within 1 %.
+    let (a1, a2) = (inner.spec().base_distance_m, inner.spec().crank_length_m);
+    let tangent = ((a1 - a2) * (a1 + a2)).sqrt();
+    let (_, slider_tangent) = inner.linkage().angles(tangent).unwrap();
+    let analytic = slider_tangent - synthesis.end_slider_angle_rad;
+    let (lower, upper) = limit("inner_B0");
+    let limit_extreme = if analytic > 0.0 { upper } else { lower };
+    let sampled = if analytic > 0.0 { screw_range.1 } else { screw_range.0 };
+    assert!(sampled.abs() <= analytic.abs() + 1e-12, "{sampled} vs {analytic}");
+    // The limit holds the true extreme, widened by at most one sample step of the screw
+    // (about 1.1 mm of stroke: 3 % of this extreme).
+    assert!(limit_extreme.abs() >= analytic.abs(), "{limit_extreme} vs {analytic}");
+    assert_relative_eq!(limit_extreme, analytic, max_relative = 5e-2);
 }

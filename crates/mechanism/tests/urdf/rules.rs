@@ -12,6 +12,10 @@ fn built_and_read_back_robots_pass_the_rule_check() {
 
 #[test]
 fn rule_check_catches_broken_robots() {
+    /// The inner station's screw pivot, a revolute joint.
+    fn revolute(r: &mut Robot) -> &mut urdf_rs::Joint {
+        r.joints.iter_mut().find(|j| j.name == "inner_B0").expect("inner_B0")
+    }
     let (inner, outer) = (thesis_track(), scaled_track(0.8));
     let good = build_robot("right_wing", &base_link(), &two_stations(&inner, &outer))
         .unwrap()
@@ -21,8 +25,8 @@ fn rule_check_catches_broken_robots() {
         ("link name `inner_screw` is not unique", |r| {
             r.links[2].name = "inner_screw".to_owned()
         }),
-        ("joint name `inner_flap_hinge` is not unique", |r| {
-            r.joints[2].name = "inner_flap_hinge".to_owned()
+        ("joint name `inner_B0` is not unique", |r| {
+            r.joints[2].name = "inner_B0".to_owned()
         }),
         ("parent link `nowhere` does not exist", |r| {
             r.joints[1].parent.link = "nowhere".to_owned()
@@ -37,9 +41,9 @@ fn rule_check_catches_broken_robots() {
             extra.parent.link = "outer_station".to_owned();
             r.joints.push(extra);
         }),
-        ("has length", |r| r.joints[1].axis.xyz.0 = [0.0, 0.0, 1.1]),
+        ("has length", |r| revolute(r).axis.xyz.0 = [0.0, 0.0, 1.1]),
         ("lower limit", |r| {
-            let limit = &mut r.joints[1].limit;
+            let limit = &mut revolute(r).limit;
             std::mem::swap(&mut limit.lower, &mut limit.upper);
         }),
         ("not reachable from root", |r| {

@@ -114,6 +114,17 @@ fn no_arguments_designs_the_default_scene() {
             (value(&settings[0], "overlap_m") - (nose - te[0])).abs() < 1e-12,
             "{name}: stowed overlap"
         );
+        // Every deployment sample carries its gap and overlap; the last one is the landing
+        // setting (35 deg, the end of the stroke) and the first the stowed one.
+        for case in station["mechanism"]["load_cases"].as_array().unwrap() {
+            let samples = case["samples"].as_array().unwrap();
+            for (sample, setting) in [(&samples[0], &settings[0]), (samples.last().unwrap(), &settings[2])] {
+                for key in ["gap_m", "overlap_m", "gap_percent_chord", "overlap_percent_chord"] {
+                    let at_sample = sample["flap_position"][key].as_f64().unwrap();
+                    assert!((at_sample - value(setting, key)).abs() < 1e-9, "{name}: {key}");
+                }
+            }
+        }
         // The thesis mechanism turns the flap about a fixed hinge: its landing gap is far from
         // the 0-3 % chord of slotted flaps, and the report and terminal say so with the numbers.
         let landing = &settings[2];

@@ -140,7 +140,7 @@ pub fn design_with_progress(
             .collect();
         if full {
             flap_positions = stages.run("gap-overlap", || {
-                flap_position::flap_positions(&scene.station, &scene.flap, &placed)
+                flap_position::flap_positions(&scene.station, &scene.flap, &mechanisms, &placed)
             })?;
             for (station, position) in scene.station.iter().zip(&flap_positions) {
                 if let Some(position) = position {
@@ -190,7 +190,17 @@ pub fn design_with_progress(
         mechanism_reports = stages.run("kinematics", || {
             mechanisms
                 .iter()
-                .map(|m| mechanisms::sweep_station(m, &cases, samples, &mut warnings).map(Some))
+                .enumerate()
+                .map(|(i, m)| {
+                    let mut report = mechanisms::sweep_station(m, &cases, samples, &mut warnings)?;
+                    let flap = scene.station[i].flap.as_deref();
+                    if let (Some(place), Some(flap)) = (placed.get(i), flap) {
+                        if let Some(measure) = flap_position::flap_behind_wing(place, flap)? {
+                            flap_position::annotate_samples(m, &measure, &mut report)?;
+                        }
+                    }
+                    Ok(Some(report))
+                })
                 .collect::<Result<Vec<_>>>()
         })?;
     }

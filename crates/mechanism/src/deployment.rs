@@ -36,6 +36,24 @@ pub struct DeploymentSample {
     /// Raise and lower torque of a screw-jack actuator (absent for others).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub screw_torques_nm: Option<ScrewTorques>,
+    /// Gap and overlap of the flap behind the main wing here: filled by the caller that
+    /// knows the wing section (absent without one).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub flap_position: Option<FlapGapOverlap>,
+}
+
+/// Gap and overlap of the flap behind the main wing at one sample (`003_...` Fig. 3
+/// definitions, measured in the station plane).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FlapGapOverlap {
+    /// Gap (m); negative when the wing's trailing edge lies inside the flap section.
+    pub gap_m: f64,
+    /// Gap, % of the local clean chord.
+    pub gap_percent_chord: f64,
+    /// Overlap (m); positive while the flap nose is ahead of the trailing edge.
+    pub overlap_m: f64,
+    /// Overlap, % of the local clean chord.
+    pub overlap_percent_chord: f64,
 }
 
 /// Where and why a deployment stopped early.
@@ -87,6 +105,7 @@ pub fn sweep_deployment(mechanism: &dyn FlapMechanism, samples: usize, load: &Lo
                 jacobian_condition_number: loads.health.jacobian_condition_number,
                 distance_to_toggle_deg: loads.health.distance_to_toggle_rad.to_degrees(),
                 screw_torques_nm: loads.screw_torques,
+                flap_position: None,
             }),
             Err(reason) => {
                 deployment.stopped = Some(DeploymentStop {

@@ -82,7 +82,7 @@ mod track_synthesis;
 pub mod urdf;
 
 pub use angle::{four_times_triangle_area, guarded_acos, ACOS_ROUNDING_TOLERANCE, DEFAULT_TOGGLE_TOLERANCE_RAD};
-pub use deployment::{sweep_deployment, Deployment, DeploymentSample, DeploymentStop};
+pub use deployment::{sweep_deployment, Deployment, DeploymentSample, DeploymentStop, FlapGapOverlap};
 pub use error::{Error, Result};
 pub use kinetostatics::{ExternalMoment, Forces, LoadCase};
 pub use planar_solve::PlanarSolution;

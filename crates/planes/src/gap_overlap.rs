@@ -22,11 +22,11 @@
 //! cambered upper skin that is the front of the band, 14-16 mm ahead of the lip in the
 //! default scene.)
 //!
-//! The flap turns rigidly about A0 by the flap rotation; this holds exactly in a plane
-//! perpendicular to a fixed hinge line (the thesis stations) and is the usual planar
-//! reading elsewhere.
+//! The flap moves rigidly in the station plane: [`FlapBehindWing::at_displacement`] takes
+//! any planar displacement (a mechanism's pose of the flap), [`FlapBehindWing::at_rotation`]
+//! a turn about A0 (a fixed hinge line, exact in a plane perpendicular to it).
 
-use nalgebra::{Point2, Rotation2};
+use nalgebra::{Isometry2, Point2};
 use serde::Serialize;
 
 use crate::boundary::distance_to_segment_m;
@@ -139,7 +139,15 @@ impl FlapBehindWing {
 
     /// Gap and overlap with the flap turned by `rotation_rad` about A0.
     pub fn at_rotation(&self, rotation_rad: f64) -> GapOverlap {
-        let turn = Rotation2::new(rotation_rad);
+        self.at_displacement(&Isometry2::rotation(rotation_rad))
+    }
+
+    /// Gap and overlap with the flap moved by `displacement` from stowed (station frame):
+    /// any planar motion, as a mechanism's pose gives it. `rotation_rad` of the result is
+    /// the displacement's rotation.
+    pub fn at_displacement(&self, displacement: &Isometry2<f64>) -> GapOverlap {
+        let turn = displacement;
+        let rotation_rad = displacement.rotation.angle();
         let te = self.trailing_edge;
         let mut distance = f64::INFINITY;
         let mut nose_x = f64::NEG_INFINITY;

@@ -138,3 +138,29 @@ fn the_cove_lip_of_a_cambered_upper_skin_is_found_at_any_resolution() {
         );
     }
 }
+
+#[test]
+fn a_general_displacement_moves_the_flap_as_a_rigid_body() {
+    // A disc flap moved aft and down without turning (a hooked track's first travel):
+    // gap and overlap follow the disc's centre.
+    let (centre, r, n) = (Point2::new(0.35, -0.1), 0.15, 720);
+    let measure = FlapBehindWing::new(&wing(0.5, 0.0), &disc(centre, r, n)).unwrap();
+    let te = Point2::new(0.5, 0.1);
+    let r_in = r * (std::f64::consts::PI / n as f64).cos();
+    for (dx, dy) in [(0.0, 0.0), (-0.05, -0.02), (-0.12, -0.08)] {
+        let moved = nalgebra::Isometry2::translation(dx, dy);
+        let result = measure.at_displacement(&moved);
+        let c = centre + nalgebra::Vector2::new(dx, dy);
+        let to_centre = (te - c).norm();
+        assert!(result.gap_m >= to_centre - r - 1e-12 && result.gap_m <= to_centre - r_in + 1e-12);
+        assert!(result.overlap_m >= c.x + r_in - te.x - 1e-12 && result.overlap_m <= c.x + r - te.x + 1e-12);
+        assert_eq!(result.rotation_rad, 0.0);
+    }
+    // A turn about A0 is the displacement of that turn.
+    for t in [0.1, 0.6] {
+        assert_eq!(
+            measure.at_rotation(t),
+            measure.at_displacement(&nalgebra::Isometry2::rotation(t))
+        );
+    }
+}

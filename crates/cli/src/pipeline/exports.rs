@@ -14,7 +14,6 @@ use nalgebra::Point2;
 use serde::Serialize;
 
 use crate::output::StagedDir;
-use crate::pipeline::flap_position::flap_behind_wing;
 use crate::pipeline::mechanisms::StationMechanism;
 use crate::pipeline::plots::station_plots;
 use crate::pipeline::stations::PlacedStation;
@@ -295,17 +294,7 @@ pub fn write_svgs(
         files.push(name);
         if let Some(cases) = sweeps[i] {
             let name = format!("plots-{}.svg", station.name);
-            let flap_behind_wing = match (placed[i], station.flap.as_deref()) {
-                (Some(p), Some(flap_name)) => flap_behind_wing(p, flap_name)?,
-                _ => None,
-            };
-            let plots = station_plots(
-                cases,
-                mechanism.input_range().quantity,
-                flap_behind_wing.as_ref(),
-                interference,
-                &station.name,
-            );
+            let plots = station_plots(cases, mechanism.input_range().quantity, interference, &station.name);
             // A station whose every sweep stopped at once has nothing to plot.
             if !plots.is_empty() {
                 let svg = render_plots_svg(&format!("{}: station {}", scene.name, station.name), &plots)

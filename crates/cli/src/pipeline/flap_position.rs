@@ -6,6 +6,7 @@ use anyhow::{Context, Result};
 use flapwright_planes::{FlapBehindWing, GapOverlap};
 use serde::Serialize;
 
+use crate::pipeline::mechanisms::StationMechanism;
 use crate::pipeline::stations::PlacedStation;
 use crate::scene::{FlapScene, StationScene};
 
@@ -52,12 +53,13 @@ pub fn flap_behind_wing(placed: &PlacedStation, flap_name: &str) -> Result<Optio
 pub fn flap_positions(
     stations: &[StationScene],
     flaps: &[FlapScene],
+    mechanisms: &[StationMechanism],
     placed: &[PlacedStation],
 ) -> Result<Vec<Option<FlapPositionReport>>> {
     stations
         .iter()
-        .zip(placed)
-        .map(|(station, placed)| {
+        .zip(mechanisms.iter().zip(placed))
+        .map(|(station, (mechanism, placed))| {
             let Some(flap) = station
                 .flap
                 .as_ref()
@@ -74,12 +76,17 @@ pub fn flap_positions(
                 ("landing", flap.settings.landing_deg),
             ]
             .into_iter()
-            .map(|(setting, deflection_deg)| SettingPosition {
-                setting: setting.into(),
-                deflection_deg,
-                position: measure.at_rotation(f64::to_radians(deflection_deg)),
+            .map(|(setting, deflection_deg)| {
+                // Where the mechanism puts the flap at this deflection: any planar motion.
+                let seam = mechanism.mechanism.as_ref();
+                let pose = seam.pose(seam.input_at_deflection(deflection_deg.to_radians())?)?;
+                Ok(SettingPosition {
+                    setting: setting.into(),
+                    deflection_deg,
+                    position: measure.at_displacement(&pose.flap),
+                })
             })
-            .collect();
+            .collect::<Result<Vec<_>>>()?;
             let te = measure.trailing_edge();
             Ok(Some(FlapPositionReport {
                 trailing_edge_st_m: [te.x, te.y],
@@ -88,4 +95,26 @@ pub fn flap_positions(
             }))
         })
         .collect()
+}
+
+/// Fills each deployment sample's gap and overlap, where the mechanism puts the flap at
+/// that sample's input.
+pub fn annotate_samples(
+    mechanism: &StationMechanism,
+    measure: &FlapBehindWing,
+    report: &mut crate::pipeline::mechanisms::MechanismReport,
+) -> Result<()> {
+    for case in &mut report.load_cases {
+        for sample in &mut case.samples {
+            let pose = mechanism.mechanism.pose(sample.input)?;
+            let at = measure.at_displacement(&pose.flap);
+            sample.flap_position = Some(flapwright_mechanism::FlapGapOverlap {
+                gap_m: at.gap_m,
+                gap_percent_chord: at.gap_percent_chord,
+                overlap_m: at.overlap_m,
+                overlap_percent_chord: at.overlap_percent_chord,
+            });
+        }
+    }
+    Ok(())
 }

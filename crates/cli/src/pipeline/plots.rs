@@ -5,7 +5,6 @@ use flapwright_drawing::{Plot, Series};
 use flapwright_interference::{InterferenceReport, PairResult};
 use flapwright_mechanism::seam::InputQuantity;
 use flapwright_mechanism::{Deployment, DeploymentSample};
-use flapwright_planes::FlapBehindWing;
 
 /// The plots of one station: kinematics and loads against the actuator input (first load
 /// case, or every case where they differ), gap and overlap when the station has a flap
@@ -15,7 +14,6 @@ use flapwright_planes::FlapBehindWing;
 pub fn station_plots(
     all_cases: &[Deployment],
     input: InputQuantity,
-    flap_behind_wing: Option<&FlapBehindWing>,
     interference: Option<&InterferenceReport>,
     station: &str,
 ) -> Vec<Plot> {
@@ -81,23 +79,22 @@ pub fn station_plots(
                 .collect(),
         },
     ];
-    if let Some(measure) = flap_behind_wing {
-        let at = |s: &DeploymentSample| measure.at_rotation(s.deflection_deg.to_radians());
-        plots.push(Plot {
-            title: "Gap and overlap behind the cove lip".into(),
-            x_label: x_label.into(),
-            y_label: "% of local chord".into(),
-            series: first
-                .iter()
-                .flat_map(|c| {
-                    [
-                        series(c, "gap".into(), &|s| Some(at(s).gap_percent_chord)),
-                        series(c, "overlap".into(), &|s| Some(at(s).overlap_percent_chord)),
-                    ]
-                })
-                .collect(),
-        });
-    }
+    plots.push(Plot {
+        title: "Gap and overlap behind the cove lip".into(),
+        x_label: x_label.into(),
+        y_label: "% of local chord".into(),
+        series: first
+            .iter()
+            .flat_map(|c| {
+                [
+                    series(c, "gap".into(), &|s| s.flap_position.map(|p| p.gap_percent_chord)),
+                    series(c, "overlap".into(), &|s| {
+                        s.flap_position.map(|p| p.overlap_percent_chord)
+                    }),
+                ]
+            })
+            .collect(),
+    });
     plots.extend(interference.and_then(|report| clearance_plot(report, station)));
     plots.retain(|plot| !plot.series.is_empty() && plot.series.iter().all(|s| !s.points.is_empty()));
     plots

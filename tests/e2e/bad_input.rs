@@ -443,9 +443,7 @@ fn screws_on_one_torque_tube_turn_at_one_speed() {
     let scene = outer_station_with("screw_lead_m = 0.008", "screw_lead_m = 0.004");
     assert_rejected(
         &scene,
-        &[
-            "station[1].mechanism.nut_speed_mps = 0.035: with screw_lead_m = 0.004 its screw turns 8.7500 rev/s, but station[0]'s turns 4.3750 rev/s",
-        ],
+        &["station[1].mechanism: its screw turns 8.7500 rev/s at its nominal nut speed, station inner's 4.3750 rev/s"],
     );
 }
 

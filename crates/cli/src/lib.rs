@@ -3,6 +3,8 @@
 //!
 //! # Overview
 //! - [`scene`]: the TOML scene format, parsed with serde and validated with paths.
+//! - [`kinds`]: each mechanism kind's scene table, its checks and its synthesis into the
+//!   mechanism seam (`flapwright_mechanism::seam::FlapMechanism`).
 //! - [`pipeline`]: runs the stages (geometry, planes, mechanisms) and times them.
 //! - [`report`]: the `report.json` schema (documented in the README).
 //! - [`junit`]: JUnit XML of the interference check, for CI.
@@ -11,6 +13,7 @@
 //! Libraries below return typed errors; this crate alone decides wording and exit codes.
 
 pub mod junit;
+pub mod kinds;
 pub mod output;
 pub mod pipeline;
 pub mod report;

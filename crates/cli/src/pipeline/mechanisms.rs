@@ -3,22 +3,11 @@
 use anyhow::Result;
 use std::sync::Arc;
 
-use flapwright_mechanism::seam::{InputQuantity, InputRange};
-use flapwright_mechanism::{
-    sweep_deployment, CircularArcTrack, CircularArcTrackSpec, Deployment, ExternalMoment, FlapMechanism, LoadCase,
-    ScrewJack, DEFAULT_TOGGLE_TOLERANCE_RAD,
-};
-use nalgebra::Point2;
+use flapwright_mechanism::seam::{Actuator, InputQuantity, InputRange};
+use flapwright_mechanism::{sweep_deployment, Deployment, ExternalMoment, FlapMechanism, LoadCase};
 use serde::Serialize;
 
-use crate::scene::{CircularArcTrackScene, MechanismScene, Problem, Scene, SceneError};
-
-/// Standard gravity used by the mechanism's weight term (m/s²), as the thesis (Table 2).
-const GRAVITY_MPS2: f64 = 9.81;
-
-/// Thesis step 9: "select a3 slightly greater than Δs + s34,i"; Table 2 has 250 mm for
-/// 224.6 mm, so an unspecified screw is 10 % longer than the full stroke.
-const SCREW_LENGTH_MARGIN: f64 = 1.10;
+use crate::scene::{Problem, Scene, SceneError};
 
 /// A synthesised station mechanism.
 #[derive(Debug, Clone)]
@@ -42,74 +31,27 @@ pub struct MechanismReport {
     pub load_cases: Vec<Deployment>,
 }
 
-fn spec_from_scene(m: &CircularArcTrackScene, screw_length_m: f64) -> CircularArcTrackSpec {
-    CircularArcTrackSpec {
-        base_distance_m: m.base_distance_m,
-        crank_length_m: m.crank_length_m,
-        screw_length_m,
-        base_angle_rad: m.base_angle_deg.to_radians(),
-        outer_slot_radius_m: m.outer_slot_radius_m,
-        inner_slot_radius_m: m.inner_slot_radius_m,
-        outer_slot_start_angle_rad: m.slot_start_angle_deg.to_radians(),
-        inner_slot_offset_angle_rad: m.slot_offset_angle_deg.to_radians(),
-        rotation_range_rad: m.rotation_range_deg.to_radians(),
-        centre_of_mass_stowed_m: Point2::new(m.flap_centre_of_mass_m[0], m.flap_centre_of_mass_m[1]),
-        flap_mass_kg: m.flap_mass_kg,
-        flap_moment_of_inertia_kgm2: 0.0,
-        gravity_mps2: GRAVITY_MPS2,
-        screw: ScrewJack {
-            lead_m: m.screw_lead_m,
-            mean_radius_m: m.screw_mean_radius_m,
-            friction_coefficient: m.screw_friction,
-        },
-        nominal_input_speed_mps: m.nut_speed_mps,
-        nominal_input_accel_mps2: 0.0,
-        toggle_tolerance_rad: DEFAULT_TOGGLE_TOLERANCE_RAD,
-    }
-}
-
-fn synthesise(m: &CircularArcTrackScene) -> flapwright_mechanism::Result<CircularArcTrack> {
-    match m.screw_length_m {
-        Some(length) => CircularArcTrack::synthesise(spec_from_scene(m, length)),
-        None => {
-            // Synthesise once with an unbounded screw to learn the stroke, then size it.
-            let probe = CircularArcTrack::synthesise(spec_from_scene(m, f64::MAX))?;
-            let length = SCREW_LENGTH_MARGIN * probe.synthesis().stroke_end_m;
-            CircularArcTrack::synthesise(spec_from_scene(m, length))
-        }
-    }
-}
-
 /// Synthesises every station; a mechanism that cannot be built from its dimensions is bad
 /// input, reported with the station's path like any other scene problem.
 pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationMechanism>> {
     let mut problems = Vec::new();
     let mut built = Vec::new();
     for (i, station) in scene.station.iter().enumerate() {
-        let MechanismScene::CircularArcTrack(m) = &station.mechanism;
-        match synthesise(m) {
-            Ok(track) => {
-                problems.extend(degeneracies(
-                    &track,
-                    &format!("station[{i}].mechanism"),
-                    SCREW_GEOMETRY_KEYS,
-                ));
+        let path = format!("station[{i}].mechanism");
+        let kind = station.mechanism.kind();
+        match kind.synthesise() {
+            Ok(mechanism) => {
+                problems.extend(degeneracies(mechanism.as_ref(), &path, kind.geometry_keys()));
                 built.push(StationMechanism {
                     station: station.name.clone(),
-                    mechanism: Arc::new(track),
+                    mechanism,
                 })
             }
-            Err(error) => problems.push(Problem {
-                path: format!("station[{i}].mechanism"),
-                message: match error {
-                    flapwright_mechanism::Error::NutOnScrewPivot { .. }
-                    | flapwright_mechanism::Error::CollinearityImpossible { .. } => {
-                        format!("cannot be synthesised: {error}; change {SCREW_GEOMETRY_KEYS}")
-                    }
-                    _ => format!("cannot be synthesised: {error}"),
-                },
-            }),
+            Err(message) => problems.push(Problem { path, message }),
         }
+    }
+    if problems.is_empty() && scene.structure.torque_tube.is_some() {
+        problems.extend(one_drive_speed(&built));
     }
     if problems.is_empty() {
         Ok(built)
@@ -124,8 +66,40 @@ pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationMechanism>> {
 pub const MAX_CONDITION_NUMBER: f64 = 1e8;
 /// Smallest distance to a toggle position at the stroke ends, deg.
 pub const MIN_DISTANCE_TO_TOGGLE_DEG: f64 = 1.0;
-/// The keys that place the screw line and the nut's travel.
-const SCREW_GEOMETRY_KEYS: &str = "base_distance_m, base_angle_deg, crank_length_m and rotation_range_deg";
+
+/// One torque tube turns every actuator at one speed: a screw jack turns at nut speed /
+/// lead, so every station's must agree (the report's drive speed would otherwise be one
+/// station's, and the others' nuts would run at speeds the drive cannot give).
+fn one_drive_speed(mechanisms: &[StationMechanism]) -> Vec<Problem> {
+    let turns = |m: &StationMechanism| {
+        let Actuator::ScrewJack {
+            screw,
+            nominal_speed_mps,
+            ..
+        } = m.mechanism.actuator();
+        nominal_speed_mps / screw.lead_m
+    };
+    let Some(first) = mechanisms.first() else {
+        return Vec::new();
+    };
+    mechanisms
+        .iter()
+        .enumerate()
+        .skip(1)
+        .filter(|(_, m)| (turns(m) - turns(first)).abs() > 1e-9 * turns(first))
+        .map(|(i, m)| {
+            Problem::new(
+                format!("station[{i}].mechanism"),
+                format!(
+                    "its screw turns {:.4} rev/s at its nominal nut speed, station {}'s {:.4} rev/s; one torque tube drives every screw at one speed: make nut_speed_mps / screw_lead_m equal",
+                    turns(m),
+                    first.station,
+                    turns(first)
+                ),
+            )
+        })
+        .collect()
+}
 
 /// Dimensions that synthesise but give a degenerate mechanism, for any kind: a singular or
 /// near-toggle position at a stroke end, a deployment that cannot even start. Each names

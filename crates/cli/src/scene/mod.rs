@@ -8,7 +8,7 @@
 
 mod airfoil_ref;
 mod key_path;
-mod parse;
+pub(crate) mod parse;
 mod settings;
 mod station;
 mod validate;
@@ -17,8 +17,8 @@ mod wing;
 pub use airfoil_ref::{load_airfoil, AirfoilRef, AirfoilSource};
 pub use key_path::Location;
 pub use settings::{InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene};
-pub use station::{CircularArcTrackScene, LoadCaseScene, LoadsScene, MechanismScene, StationScene};
-pub use validate::{LocatedProblem, Problem, SceneError, MAX_SCENE_BYTES};
+pub use station::{LoadCaseScene, LoadsScene, StationScene};
+pub use validate::{limits, number, KeyChecker, LocatedProblem, Problem, SceneError, MAX_SCENE_BYTES};
 pub use wing::{
     FlapScene, HingeScene, PanelScene, SettingsScene, SparScene, StructureScene, SweepReferenceScene, TorqueTubeScene,
     WingScene, WingSectionScene,

@@ -47,7 +47,7 @@ impl Checker<'_> {
         if scene.wing.is_none() {
             return;
         }
-        let moving: usize = scene.station.iter().map(|s| s.mechanism.moving_parts()).sum();
+        let moving: usize = scene.station.iter().map(|s| s.mechanism.kind().moving_parts()).sum();
         let fairing = moving * res.fairing_samples * res.fairing_points_per_capsule;
         if fairing > MAX_FAIRING_QUERIES {
             self.fail(
@@ -67,8 +67,11 @@ impl Checker<'_> {
                 .iter()
                 .enumerate()
                 .map(|(i, a)| {
-                    let others: usize = scene.station[i + 1..].iter().map(|b| b.mechanism.moving_parts()).sum();
-                    a.mechanism.moving_parts() * others
+                    let others: usize = scene.station[i + 1..]
+                        .iter()
+                        .map(|b| b.mechanism.kind().moving_parts())
+                        .sum();
+                    a.mechanism.kind().moving_parts() * others
                 })
                 .sum();
             let pairs = moving * FIXED_PARTS_ESTIMATE + cross;

@@ -233,7 +233,7 @@ impl Scene {
 }
 
 /// A value as a person reads it: `1e308`, not 309 digits.
-pub(crate) fn number(value: f64) -> String {
+pub fn number(value: f64) -> String {
     let magnitude = value.abs();
     if magnitude != 0.0 && magnitude.is_finite() && !(1e-4..1e6).contains(&magnitude) {
         format!("{value:e}")
@@ -249,6 +249,31 @@ pub const MAX_SCENE_BYTES: usize = 1 << 20;
 
 /// Longest name of a scene, flap, spar or station (they become file names).
 pub const MAX_NAME_CHARS: usize = 64;
+
+/// What a kind's table may ask of validation: the same checks, messages and locations as
+/// every other key (`crate::kinds::KindScene::check`).
+pub trait KeyChecker {
+    /// A problem at `path`.
+    fn fail(&mut self, path: &str, message: String);
+    /// Finite and inside `[min, max]` (or open bounds where `open`); true when fine.
+    fn in_range(&mut self, path: &str, value: f64, min: f64, max: f64, open: bool) -> bool;
+    /// Finite and within the scene's coordinate limits in every coordinate.
+    fn point_within(&mut self, path: &str, point: &[f64]) -> bool;
+}
+
+impl KeyChecker for Checker<'_> {
+    fn fail(&mut self, path: &str, message: String) {
+        Checker::fail(self, path, message);
+    }
+
+    fn in_range(&mut self, path: &str, value: f64, min: f64, max: f64, open: bool) -> bool {
+        Checker::in_range(self, path, value, min, max, open)
+    }
+
+    fn point_within(&mut self, path: &str, point: &[f64]) -> bool {
+        Checker::point_within(self, path, point)
+    }
+}
 
 struct Checker<'a> {
     problems: Vec<Problem>,

@@ -296,8 +296,9 @@ pub struct Joint {
 /// A named point of a pose (station frame, m): a pivot, a pin, the centre of mass.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct NamedPoint {
-    /// Name ("A0", "B0", "A").
-    pub name: String,
+    /// Name ("A0", "B0", "A"): static, so that posing allocates no strings (the
+    /// interference sweep poses a mechanism thousands of times).
+    pub name: &'static str,
     /// Where it stands (m).
     pub position: Point2<f64>,
     /// True for a point fixed to the wing.

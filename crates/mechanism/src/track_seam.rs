@@ -278,7 +278,7 @@ impl FlapMechanism for CircularArcTrack {
         ]
         .into_iter()
         .map(|(name, position)| NamedPoint {
-            name: name.into(),
+            name,
             position,
             fixed: false,
         })
@@ -315,11 +315,7 @@ impl FlapMechanism for CircularArcTrack {
             ("G", pose.inner_pin_g.position_m, false),
         ]
         .into_iter()
-        .map(|(name, position, fixed)| NamedPoint {
-            name: name.to_string(),
-            position,
-            fixed,
-        })
+        .map(|(name, position, fixed)| NamedPoint { name, position, fixed })
         .collect();
         Ok(MechanismPose {
             deflection_rad: pose.deflection_rad,

@@ -149,7 +149,7 @@ fn snapshot(
             .points
             .iter()
             .map(|p| Joint {
-                name: p.name.clone(),
+                name: p.name.to_string(),
                 at: p.position,
                 fixed: p.fixed,
             })

@@ -273,7 +273,7 @@ pub(crate) fn key_points(station: &StationMechanism3d, tree: &StationTree) -> Re
                 name: format!("{}.{}", station.name, point.name),
                 link: tree.station_link.clone(),
                 position_link_m: in_plane(point.position),
-                follows: point.name.clone(),
+                follows: point.name.to_string(),
             });
         }
         for link in tree.movable() {
@@ -282,7 +282,7 @@ pub(crate) fn key_points(station: &StationMechanism3d, tree: &StationTree) -> Re
                     name: format!("{}.{}.{}", station.name, mechanism.bodies()[link.body].name, point.name),
                     link: link.name.clone(),
                     position_link_m: in_plane(link.frame.inverse() * point.position),
-                    follows: point.name.clone(),
+                    follows: point.name.to_string(),
                 });
             }
         }
@@ -299,7 +299,7 @@ pub(crate) fn key_points(station: &StationMechanism3d, tree: &StationTree) -> Re
                     name: format!("{}.{}", station.flap_name, point.name),
                     link: station.flap_name.clone(),
                     position_link_m: in_plane(point.position),
-                    follows: point.name.clone(),
+                    follows: point.name.to_string(),
                 });
             }
         }

@@ -125,7 +125,8 @@ impl Motion for BodyMotion {
 
 /// A flap's 3D mesh moving with the flap displacement of the station that carries it
 /// (`mechanism`, placed by `aircraft_from_station`); `vertices_ac` bound its speed: the
-/// flap body's bound at the farthest vertex from its reference point.
+/// flap body's bound at the vertex farthest from the station z line through its reference
+/// point.
 pub fn flap_part(
     name: &str,
     shape: CollisionShape,
@@ -139,10 +140,16 @@ pub fn flap_part(
         .find(|b| b.role == BodyRole::Flap)
         .ok_or_else(|| Error::NoFlapBody { part: name.to_string() })?;
     let bound = &flap_body.speed_bound;
-    let reference_ac = aircraft_from_station.transform_point(&Point3::new(bound.reference.x, bound.reference.y, 0.0));
+    // The lifted planar motion turns about the station's z axis: a point's speed grows
+    // with its distance from the z line through the reference, not with its spanwise
+    // offset (a flap's far end lies metres away along the span, at the same radius).
+    let station_from_aircraft = aircraft_from_station.inverse();
     let reach_m = vertices_ac
         .iter()
-        .map(|v| (v - reference_ac).norm())
+        .map(|v| {
+            let p = station_from_aircraft.transform_point(v);
+            (Point2::new(p.x, p.y) - bound.reference).norm()
+        })
         .fold(0.0, f64::max);
     Ok(Part::moving(
         name.to_string(),

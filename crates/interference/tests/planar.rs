@@ -82,3 +82,39 @@ fn the_drive_fraction_spans_each_stations_own_input_travel() {
     let solid = &body.solids[0];
     assert!((screw.motion.speed_bound() - body.speed_bound.for_shape(&solid.shape) * range.travel()).abs() < 1e-15);
 }
+
+#[test]
+fn a_flap_mesh_bound_counts_the_distance_from_the_axis_not_the_span() {
+    // Flap points at the station and 2 m outboard along its z axis move alike: the bound
+    // holds against finite differences and is not loosened by the spanwise offset.
+    let (track, _) = thesis_parts();
+    let near = [Point3::new(-0.35, 0.33, 0.0), Point3::new(0.1, 0.3, 0.0)];
+    let far: Vec<Point3<f64>> = near.iter().map(|p| p + nalgebra::Vector3::new(0.0, 0.0, 2.0)).collect();
+    let shape = || flapwright_geom::collision::CollisionShape::ball(0.01).unwrap();
+    let at_station =
+        flapwright_interference::flap_part("flap", shape(), &near, &Isometry3::identity(), &track).unwrap();
+    let spanwise = flapwright_interference::flap_part(
+        "flap",
+        shape(),
+        &[near.as_slice(), far.as_slice()].concat(),
+        &Isometry3::identity(),
+        &track,
+    )
+    .unwrap();
+    assert!((spanwise.motion.speed_bound() - at_station.motion.speed_bound()).abs() < 1e-12);
+    let steps = 2000;
+    let mut fastest: f64 = 0.0;
+    for k in 0..steps {
+        let (t0, t1) = (k as f64 / steps as f64, (k + 1) as f64 / steps as f64);
+        let (a, b) = (
+            spanwise.motion.pose_ac(t0).unwrap(),
+            spanwise.motion.pose_ac(t1).unwrap(),
+        );
+        for p in near.iter().chain(&far) {
+            fastest = fastest.max((b * p - a * p).norm() * steps as f64);
+        }
+    }
+    let bound = spanwise.motion.speed_bound();
+    assert!(fastest <= bound * (1.0 + 1e-9), "{fastest} > {bound}");
+    assert!(fastest > 0.5 * bound, "{fastest} vs {bound}");
+}

@@ -159,7 +159,7 @@ fn flap_attachments_move_with_the_flap() {
         let pose = FlapMechanism::pose(&track, input).unwrap();
         for attachment in &attachments {
             let moved = pose.flap * attachment.position;
-            let named = pose.point(&attachment.name).unwrap();
+            let named = pose.point(attachment.name).unwrap();
             assert!((moved - named).norm() < 1e-12, "{} at {input}", attachment.name);
         }
     }

@@ -268,7 +268,7 @@ pub(crate) fn key_points(station: &StationMechanism3d, tree: &StationTree) -> Re
     let in_plane = |p: Point2<f64>| Point3::new(p.x, p.y, 0.0);
     let mut points = Vec::new();
     for point in &stowed.points {
-        if carried(None, &point.name, point.position) {
+        if carried(None, point.name, point.position) {
             points.push(KeyPointLayout {
                 name: format!("{}.{}", station.name, point.name),
                 link: tree.station_link.clone(),
@@ -277,7 +277,7 @@ pub(crate) fn key_points(station: &StationMechanism3d, tree: &StationTree) -> Re
             });
         }
         for link in tree.movable() {
-            if carried(Some(link.body), &point.name, point.position) {
+            if carried(Some(link.body), point.name, point.position) {
                 points.push(KeyPointLayout {
                     name: format!("{}.{}.{}", station.name, mechanism.bodies()[link.body].name, point.name),
                     link: link.name.clone(),
@@ -291,10 +291,10 @@ pub(crate) fn key_points(station: &StationMechanism3d, tree: &StationTree) -> Re
         // The flap link frame is the owning station's frame with the flap stowed.
         for point in &stowed.points {
             let on_flap = probes.iter().all(|pose| {
-                pose.point(&point.name)
+                pose.point(point.name)
                     .is_some_and(|p| (p - pose.flap * point.position).norm() < CARRIED_TOLERANCE_M)
             });
-            if on_flap && !carried(None, &point.name, point.position) {
+            if on_flap && !carried(None, point.name, point.position) {
                 points.push(KeyPointLayout {
                     name: format!("{}.{}", station.flap_name, point.name),
                     link: station.flap_name.clone(),

@@ -110,13 +110,8 @@ pub fn design_with_progress(
     let mut parts: Vec<PartReport> = Vec::new();
     let mut warnings: Vec<String> = Vec::new();
     let mut interference_report = None;
-    let mut flap_positions = vec![None; scene.station.len()];
 
-    let mechanisms = stages.run("synthesis", || mechanisms::synthesise_all(scene))?;
-    let mut planes = vec![None; scene.station.len()];
-    let mut fairings = vec![None; scene.station.len()];
-    let mut station_planes_ac = Vec::new();
-    let mut placed = Vec::new();
+    let mut records = stages.run("synthesis", || mechanisms::synthesise_all(scene))?;
     let mut meshed = Vec::new();
     if let Some(wing) = &scene.wing {
         let model = stages.run("geometry", || geometry::build_model(scene, wing, inputs.scene_dir))?;
@@ -125,33 +120,23 @@ pub fn design_with_progress(
         let write_stl = full && (outputs.stl || outputs.urdf);
         let stage = if write_stl { "stl" } else { "part-statistics" };
         parts = stages.run(stage, || geometry::write_parts(&meshed, write_stl, out))?;
-        placed = stages.run("planes", || stations::place_all(scene, &model, &meshed, &mechanisms))?;
-        let implausible = plausibility::station_problems(scene, &placed);
+        stages.run("planes", || stations::place_all(scene, &model, &meshed, &mut records))?;
+        let implausible = plausibility::station_problems(scene, &records);
         if !implausible.is_empty() {
             return Err(crate::scene::SceneError::Invalid(implausible).into());
         }
-        station_planes_ac = placed
-            .iter()
-            .map(|p| (p.station.frame.origin_ac(), p.station.frame.z_axis_ac().into_inner()))
-            .collect();
-        planes = placed
-            .iter()
-            .map(|p| Some(flapwright_planes::StationReport::new(&p.station, &p.sections)))
-            .collect();
         if full {
-            flap_positions = stages.run("gap-overlap", || {
-                flap_position::flap_positions(&scene.station, &scene.flap, &mechanisms, &placed)
+            stages.run("gap-overlap", || {
+                flap_position::flap_positions(&scene.flap, &mut records)
             })?;
-            for (station, position) in scene.station.iter().zip(&flap_positions) {
-                if let Some(position) = position {
-                    warnings.extend(plausibility::gap_overlap_warnings(&station.name, position));
+            for record in &records {
+                if let Some(position) = &record.flap_position {
+                    warnings.extend(plausibility::gap_overlap_warnings(&record.station, position));
                 }
             }
         }
         if outputs.interference || !full {
-            let checked = stages.run("interference", || {
-                interference::check(scene, &meshed, &mechanisms, &placed)
-            })?;
+            let checked = stages.run("interference", || interference::check(scene, &meshed, &records))?;
             for pair in checked.pairs.iter().filter(|p| !p.passes) {
                 warnings.push(format!(
                     "interference: {}",
@@ -166,42 +151,30 @@ pub fn design_with_progress(
             }
             interference_report = Some(checked);
             let flap_names: Vec<String> = scene.flap.iter().map(|f| f.name.clone()).collect();
-            fairings = stages.run("fairing", || {
-                Ok(
-                    interference::fairing_depths(&mechanisms, &placed, &flap_names, &scene.resolution)?
-                        .into_iter()
-                        .map(Some)
-                        .collect(),
-                )
+            stages.run("fairing", || {
+                interference::fairing_depths(&mut records, &flap_names, &scene.resolution)
             })?;
-            for (station, fairing) in scene.station.iter().zip(&fairings) {
-                warnings.extend(
-                    fairing
-                        .as_ref()
-                        .and_then(|f| plausibility::fairing_warning(&station.name, f)),
-                );
+            for record in &records {
+                if let Some(fairing) = &record.fairing {
+                    warnings.extend(plausibility::fairing_warning(&record.station, fairing));
+                }
             }
         }
     }
-    let mut mechanism_reports = vec![None; scene.station.len()];
     if full && outputs.kinematics {
         let cases = mechanisms::load_cases(scene);
         let samples = scene.resolution.deployment_samples;
-        mechanism_reports = stages.run("kinematics", || {
-            mechanisms
-                .iter()
-                .enumerate()
-                .map(|(i, m)| {
-                    let mut report = mechanisms::sweep_station(m, &cases, samples, &mut warnings)?;
-                    let flap = scene.station[i].flap.as_deref();
-                    if let (Some(place), Some(flap)) = (placed.get(i), flap) {
-                        if let Some(measure) = flap_position::flap_behind_wing(place, flap)? {
-                            flap_position::annotate_samples(m, &measure, &mut report)?;
-                        }
+        stages.run("kinematics", || {
+            for record in &mut records {
+                let mut report = mechanisms::sweep_station(record, &cases, samples, &mut warnings)?;
+                if let (Some(place), Some(flap)) = (&record.placed, record.flap.as_deref()) {
+                    if let Some(measure) = flap_position::flap_behind_wing(place, flap)? {
+                        flap_position::annotate_samples(record, &measure, &mut report)?;
                     }
-                    Ok(Some(report))
-                })
-                .collect::<Result<Vec<_>>>()
+                }
+                record.kinematics = Some(report);
+            }
+            Ok(())
         })?;
     }
     let mut sizing_report = None;
@@ -213,59 +186,34 @@ pub fn design_with_progress(
             .flat_map(|t| t.path_m.iter())
             .map(|p| nalgebra::Point3::new(p[0], p[1], p[2]))
             .collect();
-        let (sized, notes) = stages.run("sizing", || {
-            sizing::size_all(
-                scene,
-                &mechanisms,
-                &mechanism_reports,
-                &station_planes_ac,
-                &tube_path_ac,
-            )
-        })?;
+        let (sized, notes) = stages.run("sizing", || sizing::size_all(scene, &records, &tube_path_ac))?;
         warnings.extend(notes);
         warnings.extend(sized.warnings.iter().map(|w| w.to_string()));
         sizing_report = Some(sized);
     }
     let mut exported = Exports::default();
-    if full && outputs.urdf && !placed.is_empty() {
-        exported.urdf = Some(stages.run("urdf", || exports::write_urdf(scene, &parts, &mechanisms, &placed, out))?);
+    if full && outputs.urdf && records.iter().all(|r| r.placed.is_some()) && scene.wing.is_some() {
+        exported.urdf = Some(stages.run("urdf", || exports::write_urdf(scene, &parts, &records, out))?);
     }
     if full && outputs.svg {
-        let placed_refs: Vec<_> = (0..scene.station.len()).map(|i| placed.get(i)).collect();
-        let sweeps: Vec<_> = mechanism_reports
-            .iter()
-            .map(|m| m.as_ref().map(|m| m.load_cases.as_slice()))
-            .collect();
         exported.svg = stages.run("svg", || {
-            exports::write_svgs(
-                scene,
-                &mechanisms,
-                &placed_refs,
-                &sweeps,
-                &fairings,
-                interference_report.as_ref(),
-                out,
-            )
+            exports::write_svgs(scene, &records, interference_report.as_ref(), out)
         })?;
     }
     drop(meshed);
-    let station_reports: Vec<StationReport> = scene
-        .station
-        .iter()
-        .zip(planes)
-        .zip(mechanism_reports)
-        .zip(fairings)
-        .zip(flap_positions)
-        .map(
-            |((((station, plane), mechanism), fairing), flap_position)| StationReport {
-                name: station.name.clone(),
-                flap: station.flap.clone(),
-                plane,
-                flap_position,
-                mechanism,
-                fairing,
-            },
-        )
+    let station_reports: Vec<StationReport> = records
+        .into_iter()
+        .map(|record| StationReport {
+            plane: record
+                .placed
+                .as_ref()
+                .map(|p| flapwright_planes::StationReport::new(&p.station, &p.sections)),
+            name: record.station,
+            flap: record.flap,
+            flap_position: record.flap_position,
+            mechanism: record.kinematics,
+            fairing: record.fairing,
+        })
         .collect();
 
     let report = Report {

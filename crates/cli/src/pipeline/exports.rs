@@ -6,17 +6,15 @@ use flapwright_drawing::{
     convex_hull, render_plots_svg, render_station_svg, Dimension, Joint, Link, MechanismSnapshot, PartStyle,
     SectionOutline, SlotArc, StationDrawing,
 };
-use flapwright_interference::{FairingDepth, InterferenceReport};
+use flapwright_interference::InterferenceReport;
 use flapwright_mechanism::urdf::{build_robot, to_xml, trajectory, BaseLink, CutJoint, MeshRef, StationMechanism3d};
-use flapwright_mechanism::Deployment;
 use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
 use serde::Serialize;
 
 use crate::output::StagedDir;
-use crate::pipeline::mechanisms::StationMechanism;
+use crate::pipeline::mechanisms::StationRecord;
 use crate::pipeline::plots::station_plots;
-use crate::pipeline::stations::PlacedStation;
 use crate::report::PartReport;
 use crate::scene::Scene;
 
@@ -35,8 +33,7 @@ pub struct UrdfExport {
 pub fn write_urdf(
     scene: &Scene,
     parts: &[PartReport],
-    mechanisms: &[StationMechanism],
-    placed: &[PlacedStation],
+    records: &[StationRecord],
     out: &StagedDir,
 ) -> Result<UrdfExport> {
     let flap_names: Vec<&str> = scene.flap.iter().map(|f| f.name.as_str()).collect();
@@ -55,19 +52,20 @@ pub fn write_urdf(
             .collect(),
     };
     let mut owner_seen = Vec::new();
-    let stations: Vec<StationMechanism3d> = scene
-        .station
+    let stations: Vec<StationMechanism3d> = records
         .iter()
-        .zip(mechanisms)
-        .zip(placed)
-        .map(|((station, mechanism), place)| {
-            let flap_name = station.flap.clone().unwrap_or_default();
+        .map(|record| {
+            let place = record
+                .placed
+                .as_ref()
+                .with_context(|| format!("station {} is not placed", record.station))?;
+            let flap_name = record.flap.clone().unwrap_or_default();
             let owns_flap = !owner_seen.contains(&flap_name);
             owner_seen.push(flap_name.clone());
-            StationMechanism3d {
-                name: station.name.clone(),
+            Ok(StationMechanism3d {
+                name: record.station.clone(),
                 aircraft_from_station: *place.station.frame.aircraft_from_station(),
-                mechanism: mechanism.mechanism.as_ref(),
+                mechanism: record.mechanism.as_ref(),
                 flap_mesh: if owns_flap {
                     parts
                         .iter()
@@ -78,9 +76,9 @@ pub fn write_urdf(
                 },
                 flap_name,
                 owns_flap,
-            }
+            })
         })
-        .collect();
+        .collect::<Result<_>>()?;
     let robot_name = scene
         .name
         .replace(|c: char| !c.is_ascii_alphanumeric() && c != '_', "_");
@@ -160,20 +158,19 @@ fn snapshot(
 /// Writes `station-<name>.svg` and `plots-<name>.svg` per station; returns the file names.
 pub fn write_svgs(
     scene: &Scene,
-    mechanisms: &[StationMechanism],
-    placed: &[Option<&PlacedStation>],
-    sweeps: &[Option<&[Deployment]>],
-    fairings: &[Option<FairingDepth>],
+    records: &[StationRecord],
     interference: Option<&InterferenceReport>,
     out: &StagedDir,
 ) -> Result<Vec<String>> {
     let flap_names: Vec<String> = scene.flap.iter().map(|f| f.name.clone()).collect();
     let mut files = Vec::new();
-    for (i, (station, mechanism)) in scene.station.iter().zip(mechanisms).enumerate() {
-        let mechanism = mechanism.mechanism.as_ref();
+    for record in records {
+        let mechanism = record.mechanism.as_ref();
         let notes = mechanism.drawing_notes();
         let range = mechanism.deflection_range_rad();
-        let sections: Vec<SectionOutline> = placed[i]
+        let sections: Vec<SectionOutline> = record
+            .placed
+            .as_ref()
             .map(|p| {
                 p.sections
                     .iter()
@@ -214,7 +211,7 @@ pub fn write_svgs(
             .collect();
         // The flap's settings (validation keeps them within the rotation range); a station
         // without a flap shows the middle and the end of its range.
-        let (takeoff, landing) = station
+        let (takeoff, landing) = record
             .flap
             .as_ref()
             .and_then(|name| scene.flap.iter().find(|f| &f.name == name))
@@ -246,7 +243,7 @@ pub fn write_svgs(
             swept.extend(s.links.into_iter().flat_map(|l| l.points));
         }
         let envelope = vec![convex_hull(swept)];
-        let fairing_line = fairings[i].as_ref().filter(|f| f.depth_m > 0.0).map(|f| {
+        let fairing_line = record.fairing.as_ref().filter(|f| f.depth_m > 0.0).map(|f| {
             let y = f.point_st[1];
             let xs = envelope[0].iter().map(|p| p.x);
             let (lo, hi) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)));
@@ -268,7 +265,8 @@ pub fn write_svgs(
             .iter()
             .map(|(label, from, to)| Dimension::new(label, *from, *to))
             .collect();
-        let fairing_text = fairings[i]
+        let fairing_text = record
+            .fairing
             .as_ref()
             .map(|f| {
                 format!(
@@ -279,7 +277,7 @@ pub fn write_svgs(
             })
             .unwrap_or_default();
         let drawing = StationDrawing {
-            title: format!("{}: station {}", scene.name, station.name),
+            title: format!("{}: station {}", scene.name, record.station),
             subtitle: format!("{}{fairing_text}", notes.summary),
             sections,
             settings,
@@ -288,17 +286,17 @@ pub fn write_svgs(
             fairing_line,
             dimensions,
         };
-        let name = format!("station-{}.svg", station.name);
-        let svg = render_station_svg(&drawing).with_context(|| format!("drawing station {}", station.name))?;
+        let name = format!("station-{}.svg", record.station);
+        let svg = render_station_svg(&drawing).with_context(|| format!("drawing station {}", record.station))?;
         std::fs::write(out.file(&name), svg).with_context(|| format!("writing {name}"))?;
         files.push(name);
-        if let Some(cases) = sweeps[i] {
-            let name = format!("plots-{}.svg", station.name);
-            let plots = station_plots(cases, mechanism.input_range().quantity, interference, &station.name);
+        if let Some(cases) = record.kinematics.as_ref().map(|k| k.load_cases.as_slice()) {
+            let name = format!("plots-{}.svg", record.station);
+            let plots = station_plots(cases, mechanism.input_range().quantity, interference, &record.station);
             // A station whose every sweep stopped at once has nothing to plot.
             if !plots.is_empty() {
-                let svg = render_plots_svg(&format!("{}: station {}", scene.name, station.name), &plots)
-                    .with_context(|| format!("plotting station {}", station.name))?;
+                let svg = render_plots_svg(&format!("{}: station {}", scene.name, record.station), &plots)
+                    .with_context(|| format!("plotting station {}", record.station))?;
                 std::fs::write(out.file(&name), svg).with_context(|| format!("writing {name}"))?;
                 files.push(name);
             }

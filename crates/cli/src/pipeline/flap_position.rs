@@ -6,9 +6,9 @@ use anyhow::{Context, Result};
 use flapwright_planes::{FlapBehindWing, GapOverlap};
 use serde::Serialize;
 
-use crate::pipeline::mechanisms::StationMechanism;
+use crate::pipeline::mechanisms::StationRecord;
 use crate::pipeline::stations::PlacedStation;
-use crate::scene::{FlapScene, StationScene};
+use crate::scene::FlapScene;
 
 /// Gap and overlap at one named flap setting.
 #[derive(Debug, Clone, Serialize)]
@@ -48,59 +48,58 @@ pub fn flap_behind_wing(placed: &PlacedStation, flap_name: &str) -> Result<Optio
     })?))
 }
 
-/// Gap and overlap at each station's flap settings (`None` where the station has no flap
-/// section to measure).
-pub fn flap_positions(
-    stations: &[StationScene],
-    flaps: &[FlapScene],
-    mechanisms: &[StationMechanism],
-    placed: &[PlacedStation],
-) -> Result<Vec<Option<FlapPositionReport>>> {
-    stations
-        .iter()
-        .zip(mechanisms.iter().zip(placed))
-        .map(|(station, (mechanism, placed))| {
-            let Some(flap) = station
-                .flap
-                .as_ref()
-                .and_then(|name| flaps.iter().find(|f| &f.name == name))
-            else {
-                return Ok(None);
-            };
-            let Some(measure) = flap_behind_wing(placed, &flap.name)? else {
-                return Ok(None);
-            };
-            let settings = [
-                ("stowed", 0.0),
-                ("takeoff", flap.settings.takeoff_deg),
-                ("landing", flap.settings.landing_deg),
-            ]
-            .into_iter()
-            .map(|(setting, deflection_deg)| {
-                // Where the mechanism puts the flap at this deflection: any planar motion.
-                let seam = mechanism.mechanism.as_ref();
-                let pose = seam.pose(seam.input_at_deflection(deflection_deg.to_radians())?)?;
-                Ok(SettingPosition {
-                    setting: setting.into(),
-                    deflection_deg,
-                    position: measure.at_displacement(&pose.flap),
-                })
-            })
-            .collect::<Result<Vec<_>>>()?;
-            let te = measure.trailing_edge();
-            Ok(Some(FlapPositionReport {
-                trailing_edge_st_m: [te.x, te.y],
-                local_chord_m: measure.chord_m(),
-                settings,
-            }))
+/// Gap and overlap at each station's flap settings (each record's `flap_position`; None
+/// where the station has no flap section to measure).
+pub fn flap_positions(flaps: &[FlapScene], records: &mut [StationRecord]) -> Result<()> {
+    for record in records.iter_mut() {
+        record.flap_position = flap_position(flaps, record)?;
+    }
+    Ok(())
+}
+
+fn flap_position(flaps: &[FlapScene], record: &StationRecord) -> Result<Option<FlapPositionReport>> {
+    let Some(flap) = record
+        .flap
+        .as_ref()
+        .and_then(|name| flaps.iter().find(|f| &f.name == name))
+    else {
+        return Ok(None);
+    };
+    let Some(placed) = &record.placed else {
+        return Ok(None);
+    };
+    let Some(measure) = flap_behind_wing(placed, &flap.name)? else {
+        return Ok(None);
+    };
+    let seam = record.mechanism.as_ref();
+    let settings = [
+        ("stowed", 0.0),
+        ("takeoff", flap.settings.takeoff_deg),
+        ("landing", flap.settings.landing_deg),
+    ]
+    .into_iter()
+    .map(|(setting, deflection_deg)| {
+        // Where the mechanism puts the flap at this deflection: any planar motion.
+        let pose = seam.pose(seam.input_at_deflection(deflection_deg.to_radians())?)?;
+        Ok(SettingPosition {
+            setting: setting.into(),
+            deflection_deg,
+            position: measure.at_displacement(&pose.flap),
         })
-        .collect()
+    })
+    .collect::<Result<Vec<_>>>()?;
+    let te = measure.trailing_edge();
+    Ok(Some(FlapPositionReport {
+        trailing_edge_st_m: [te.x, te.y],
+        local_chord_m: measure.chord_m(),
+        settings,
+    }))
 }
 
 /// Fills each deployment sample's gap and overlap, where the mechanism puts the flap at
 /// that sample's input.
 pub fn annotate_samples(
-    mechanism: &StationMechanism,
+    mechanism: &StationRecord,
     measure: &FlapBehindWing,
     report: &mut crate::pipeline::mechanisms::MechanismReport,
 ) -> Result<()> {

@@ -6,21 +6,22 @@ use anyhow::{Context, Result};
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::parts::{Part as MeshPart, PartKind};
 use flapwright_interference::{
-    check_assembly, fairing_depth, flap_part, planar_parts, station_parts, Assembly, FairingDepth, InterferenceReport,
-    Part, Requirements, SweepSettings,
+    check_assembly, fairing_depth, flap_part, planar_parts, station_parts, Assembly, InterferenceReport, Part,
+    Requirements, SweepSettings,
 };
 
-use crate::pipeline::mechanisms::StationMechanism;
+use crate::pipeline::mechanisms::StationRecord;
 use crate::pipeline::stations::PlacedStation;
 use crate::scene::{ResolutionScene, Scene};
 
 /// Builds the assembly and sweeps every pair.
-pub fn check(
-    scene: &Scene,
-    meshed: &[MeshPart],
-    mechanisms: &[StationMechanism],
-    placed: &[PlacedStation],
-) -> Result<InterferenceReport> {
+pub fn check(scene: &Scene, meshed: &[MeshPart], records: &[StationRecord]) -> Result<InterferenceReport> {
+    fn placed(record: &StationRecord) -> Result<&PlacedStation> {
+        record
+            .placed
+            .as_ref()
+            .with_context(|| format!("station {} is not placed", record.station))
+    }
     let mut fixed = Vec::new();
     let mut skins = Vec::new();
     let mut flaps = Vec::new();
@@ -31,20 +32,16 @@ pub fn check(
             PartKind::Flap => {
                 // The flap follows the flap displacement of the first station carrying it
                 // (validation requires every flap to have one; all its stations agree).
-                let carrier = scene
-                    .station
+                let carrier = records
                     .iter()
-                    .zip(mechanisms.iter().zip(placed))
-                    .find(|(station, _)| station.flap.as_deref() == Some(part.name.as_str()))
-                    .map(|(_, carrier)| carrier)
+                    .find(|record| record.flap.as_deref() == Some(part.name.as_str()))
                     .with_context(|| format!("flap {} has no station", part.name))?;
-                let (mechanism, station) = carrier;
                 flaps.push(flap_part(
                     &part.name,
                     shape,
                     &part.mesh.vertices,
-                    station.station.frame.aircraft_from_station(),
-                    &mechanism.mechanism,
+                    placed(carrier)?.station.frame.aircraft_from_station(),
+                    &carrier.mechanism,
                 )?);
             }
             kind => {
@@ -55,11 +52,13 @@ pub fn check(
             }
         }
     }
-    let stations = mechanisms
+    let stations = records
         .iter()
-        .zip(placed)
-        .map(|(m, p)| station_parts(&m.station, p.station.frame.aircraft_from_station(), &m.mechanism))
-        .collect::<flapwright_interference::Result<Vec<_>>>()?;
+        .map(|r| {
+            let frame = placed(r)?.station.frame.aircraft_from_station();
+            Ok(station_parts(&r.station, frame, &r.mechanism)?)
+        })
+        .collect::<Result<Vec<_>>>()?;
     let settings = &scene.interference;
     let sweep = SweepSettings {
         initial_samples: settings.initial_samples,
@@ -81,35 +80,36 @@ pub fn check(
     Ok(check_assembly(&assembly, 1.0, &required, &sweep)?)
 }
 
-/// Fairing depth of each station: the mechanism against the lower contour of the wing and
-/// the stowed flap cut by the station plane.
+/// Fairing depth of each placed station (each record's `fairing`): the mechanism against
+/// the lower contour of the wing and the stowed flap cut by the station plane.
 pub fn fairing_depths(
-    mechanisms: &[StationMechanism],
-    placed: &[PlacedStation],
+    records: &mut [StationRecord],
     flap_names: &[String],
     resolution: &ResolutionScene,
-) -> Result<Vec<FairingDepth>> {
-    mechanisms
-        .iter()
-        .zip(placed)
-        .map(|(mechanism, station)| {
-            let is_flap = |name: &str| flap_names.iter().any(|f| f == name);
-            let contour = station.polygons_of(|name| name == "wing" || is_flap(name));
-            let flap_chord_m = station
-                .polygons_of(is_flap)
-                .iter()
-                .flatten()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-                    (lo.min(p.x), hi.max(p.x))
-                });
-            let flap_chord_m = (flap_chord_m.1 - flap_chord_m.0).max(0.0);
-            let samples = resolution.fairing_samples;
-            let parameters: Vec<f64> = (0..samples).map(|i| i as f64 / (samples - 1) as f64).collect();
-            let points = resolution.fairing_points_per_capsule;
-            fairing_depth(&contour, flap_chord_m, &parameters, points, |t| {
-                planar_parts(mechanism.mechanism.as_ref(), t)
-            })
-            .with_context(|| format!("fairing depth at station {}", mechanism.station))
+) -> Result<()> {
+    for record in records.iter_mut() {
+        let Some(station) = &record.placed else {
+            continue;
+        };
+        let is_flap = |name: &str| flap_names.iter().any(|f| f == name);
+        let contour = station.polygons_of(|name| name == "wing" || is_flap(name));
+        let flap_chord_m = station
+            .polygons_of(is_flap)
+            .iter()
+            .flatten()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p.x), hi.max(p.x))
+            });
+        let flap_chord_m = (flap_chord_m.1 - flap_chord_m.0).max(0.0);
+        let samples = resolution.fairing_samples;
+        let parameters: Vec<f64> = (0..samples).map(|i| i as f64 / (samples - 1) as f64).collect();
+        let points = resolution.fairing_points_per_capsule;
+        let mechanism = record.mechanism.as_ref();
+        let depth = fairing_depth(&contour, flap_chord_m, &parameters, points, |t| {
+            planar_parts(mechanism, t)
         })
-        .collect()
+        .with_context(|| format!("fairing depth at station {}", record.station))?;
+        record.fairing = Some(depth);
+    }
+    Ok(())
 }

@@ -7,15 +7,33 @@ use flapwright_mechanism::seam::{Actuator, InputQuantity, InputRange};
 use flapwright_mechanism::{sweep_deployment, Deployment, ExternalMoment, FlapMechanism, LoadCase};
 use serde::Serialize;
 
+use flapwright_interference::FairingDepth;
+
+use crate::pipeline::flap_position::FlapPositionReport;
+use crate::pipeline::stations::PlacedStation;
 use crate::scene::{Problem, Scene, SceneError};
 
-/// A synthesised station mechanism.
-#[derive(Debug, Clone)]
-pub struct StationMechanism {
+/// One station as the stages see it, filled in stage by stage: its name and flap, its
+/// mechanism behind the seam, and what each stage found. The pipeline keeps one record per
+/// station, never parallel vectors matched by position.
+#[derive(Debug)]
+pub struct StationRecord {
     /// Station name.
     pub station: String,
+    /// Its index in the scene's `[[station]]` list (for keys such as `station[i]`).
+    pub index: usize,
+    /// The flap it supports.
+    pub flap: Option<String>,
     /// The synthesised mechanism, behind the seam: all the other stages see of it.
     pub mechanism: Arc<dyn FlapMechanism>,
+    /// Its plane, frame and section cuts (planes stage; None without a wing).
+    pub placed: Option<PlacedStation>,
+    /// Gap and overlap at the flap settings (gap-overlap stage).
+    pub flap_position: Option<FlapPositionReport>,
+    /// Fairing depth (fairing stage).
+    pub fairing: Option<FairingDepth>,
+    /// Deployments under every load case (kinematics stage).
+    pub kinematics: Option<MechanismReport>,
 }
 
 /// The report's record of one station's mechanism: kind-neutral apart from `details`.
@@ -33,7 +51,7 @@ pub struct MechanismReport {
 
 /// Synthesises every station; a mechanism that cannot be built from its dimensions is bad
 /// input, reported with the station's path like any other scene problem.
-pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationMechanism>> {
+pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationRecord>> {
     let mut problems = Vec::new();
     let mut built = Vec::new();
     for (i, station) in scene.station.iter().enumerate() {
@@ -42,9 +60,15 @@ pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationMechanism>> {
         match kind.synthesise() {
             Ok(mechanism) => {
                 problems.extend(degeneracies(mechanism.as_ref(), &path, kind.geometry_keys()));
-                built.push(StationMechanism {
+                built.push(StationRecord {
                     station: station.name.clone(),
+                    index: i,
+                    flap: station.flap.clone(),
                     mechanism,
+                    placed: None,
+                    flap_position: None,
+                    fairing: None,
+                    kinematics: None,
                 })
             }
             Err(message) => problems.push(Problem { path, message }),
@@ -70,8 +94,8 @@ pub const MIN_DISTANCE_TO_TOGGLE_DEG: f64 = 1.0;
 /// One torque tube turns every actuator at one speed: a screw jack turns at nut speed /
 /// lead, so every station's must agree (the report's drive speed would otherwise be one
 /// station's, and the others' nuts would run at speeds the drive cannot give).
-fn one_drive_speed(mechanisms: &[StationMechanism]) -> Vec<Problem> {
-    let turns = |m: &StationMechanism| {
+fn one_drive_speed(mechanisms: &[StationRecord]) -> Vec<Problem> {
+    let turns = |m: &StationRecord| {
         let Actuator::ScrewJack {
             screw,
             nominal_speed_mps,
@@ -177,7 +201,7 @@ pub fn load_cases(scene: &Scene) -> Vec<LoadCase> {
 
 /// Sweeps one station under every load case (a weight-only case when the scene has none).
 pub fn sweep_station(
-    mechanism: &StationMechanism,
+    mechanism: &StationRecord,
     cases: &[LoadCase],
     samples: usize,
     warnings: &mut Vec<String>,

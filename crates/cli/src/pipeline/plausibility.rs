@@ -14,7 +14,7 @@
 
 use nalgebra::Point2;
 
-use crate::pipeline::stations::PlacedStation;
+use crate::pipeline::mechanisms::StationRecord;
 use crate::scene::{Problem, Scene};
 
 /// Largest distance from A0 (the hinge point) to the stowed flap section's bounding box, in
@@ -33,16 +33,19 @@ fn bounds(polygons: &[Vec<Point2<f64>>]) -> Option<(Point2<f64>, Point2<f64>)> {
     })
 }
 
-/// The problems of every station (empty when all are plausible). `placed` is in the order
-/// of `scene.station`.
-pub fn station_problems(scene: &Scene, placed: &[PlacedStation]) -> Vec<Problem> {
+/// The problems of every placed station (empty when all are plausible).
+pub fn station_problems(scene: &Scene, records: &[StationRecord]) -> Vec<Problem> {
     let mut problems = Vec::new();
-    for (i, (station, place)) in scene.station.iter().zip(placed).enumerate() {
+    for record in records {
+        let (i, station) = (record.index, record);
+        let Some(place) = &record.placed else {
+            continue;
+        };
         let Some((k, flap)) = scene
             .flap
             .iter()
             .enumerate()
-            .find(|(_, f)| Some(&f.name) == station.flap.as_ref())
+            .find(|(_, f)| Some(&f.name) == record.flap.as_ref())
         else {
             continue;
         };
@@ -69,7 +72,7 @@ pub fn station_problems(scene: &Scene, placed: &[PlacedStation]) -> Vec<Problem>
                 offset_key,
                 format!(
                     "the plane of station \"{}\" does not cut flap \"{}\"",
-                    station.name, flap.name
+                    station.station, flap.name
                 ),
             ));
             continue;
@@ -84,7 +87,7 @@ pub fn station_problems(scene: &Scene, placed: &[PlacedStation]) -> Vec<Problem>
                     "the hinge line passes {:.0} mm from flap \"{}\" at station \"{}\" (at most {MAX_HINGE_DISTANCE_FLAP_CHORDS} flap chord, {:.0} mm): the mechanism would stand {}",
                     hinge_distance_m * 1e3,
                     flap.name,
-                    station.name,
+                    station.station,
                     MAX_HINGE_DISTANCE_FLAP_CHORDS * flap_chord_m * 1e3,
                     if lo.x > 0.0 {
                         "behind the flap"
@@ -106,7 +109,7 @@ pub fn station_problems(scene: &Scene, placed: &[PlacedStation]) -> Vec<Problem>
                     "structure.torque_tube.path_m",
                     format!(
                         "the torque tube crosses the plane of station \"{}\" {:.0} mm outside the wing and flap section (at most {MAX_HINGE_DISTANCE_FLAP_CHORDS} flap chord, {:.0} mm), at {:.0} mm ahead of and {:.0} mm above A0",
-                        station.name,
+                        station.station,
                         distance_m * 1e3,
                         MAX_HINGE_DISTANCE_FLAP_CHORDS * flap_chord_m * 1e3,
                         centre.x * 1e3,

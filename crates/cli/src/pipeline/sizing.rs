@@ -10,7 +10,7 @@ use flapwright_sizing::{
 };
 use nalgebra::{Point3, Vector3};
 
-use crate::pipeline::mechanisms::{MechanismReport, StationMechanism};
+use crate::pipeline::mechanisms::{MechanismReport, StationRecord};
 use crate::scene::Scene;
 
 /// The material a scene names: a preset or one of its `[[materials]]`.
@@ -37,21 +37,18 @@ fn material(scene: &Scene, name: &str) -> Result<Material> {
     Ok(material)
 }
 
-/// Sizes everything the mechanism loads drive. `reports` holds one entry per station
-/// (None where no sweep ran); a station whose sweeps stopped before any sample is left
-/// out with a warning naming it, never shifting the others. `station_planes_ac` (each
-/// station's origin A0 and plane normal, aircraft frame; empty without a wing) and the
-/// torque tube's axis `tube_path_ac` give the torque-tube lengths: measured along the
-/// tube, between the points where the station planes cross it (where each station's
-/// gearbox takes its drive), from the outermost station inboard to the motor at the
-/// tube's first point.
+/// Sizes everything the mechanism loads drive, from each record's deployments (a station
+/// whose sweeps stopped before any sample is left out with a warning naming it). The
+/// stations' planes (origin A0 and normal; none without a wing) and the torque tube's axis
+/// `tube_path_ac` give the torque-tube lengths: measured along the tube, between the
+/// points where the station planes cross it (where each station's gearbox takes its
+/// drive), from the outermost station inboard to the motor at the tube's first point.
 pub fn size_all(
     scene: &Scene,
-    mechanisms: &[StationMechanism],
-    reports: &[Option<MechanismReport>],
-    station_planes_ac: &[(Point3<f64>, Vector3<f64>)],
+    mechanisms: &[StationRecord],
     tube_path_ac: &[Point3<f64>],
 ) -> Result<(SizingReport, Vec<String>)> {
+    let reports: Vec<Option<&MechanismReport>> = mechanisms.iter().map(|r| r.kinematics.as_ref()).collect();
     let safety_factor = scene
         .loads
         .safety_factor
@@ -61,7 +58,7 @@ pub fn size_all(
     let mut rods = Vec::new();
     let mut jacks: Vec<Option<ScrewJackSizing>> = Vec::new();
     let mut notes = Vec::new();
-    for (mechanism, report) in mechanisms.iter().zip(reports) {
+    for (mechanism, report) in mechanisms.iter().zip(&reports) {
         // Sizing is written per actuator type; a new type is a new arm here.
         let Actuator::ScrewJack {
             screw, screw_length_m, ..
@@ -115,11 +112,15 @@ pub fn size_all(
     let mut tubes = Vec::new();
     let mut drive = None;
     // Stations on the drive line: placed and sized, at their arc length along the tube.
-    let on_line: Vec<(usize, f64)> = station_planes_ac
+    let on_line: Vec<(usize, f64)> = mechanisms
         .iter()
         .enumerate()
         .filter(|(i, _)| jacks.get(*i).is_some_and(Option::is_some))
-        .map(|(i, (origin, normal))| (i, arc_length_at_plane(tube_path_ac, origin, normal)))
+        .filter_map(|(i, record)| {
+            let frame = &record.placed.as_ref()?.station.frame;
+            let (origin, normal): (Point3<f64>, Vector3<f64>) = (frame.origin_ac(), frame.z_axis_ac().into_inner());
+            Some((i, arc_length_at_plane(tube_path_ac, &origin, &normal)))
+        })
         .collect();
     if tube_path_ac.len() >= 2 && !on_line.is_empty() {
         // Far end first: outboard to inboard along the tube; the motor sits at its start.
@@ -153,7 +154,7 @@ pub fn size_all(
         } = mechanisms[order[0].0].mechanism.actuator();
         let angular_speed = 2.0 * std::f64::consts::PI * nominal_speed_mps / screw.lead_m;
         let ordered_torques: Vec<f64> = order.iter().map(|&(i, _)| motor_torque(i)).collect();
-        let work = deployment_work(scene, mechanisms, reports, &order)?;
+        let work = deployment_work(scene, mechanisms, &reports, &order)?;
         drive = Some(drive_demand(
             &ordered_torques,
             scene.sizing.gearbox_efficiency,
@@ -171,8 +172,8 @@ pub fn size_all(
 /// the end (a partial integral would understate it).
 fn deployment_work(
     scene: &Scene,
-    mechanisms: &[StationMechanism],
-    reports: &[Option<MechanismReport>],
+    mechanisms: &[StationRecord],
+    reports: &[Option<&MechanismReport>],
     order: &[(usize, f64)],
 ) -> Result<Vec<DeploymentWork>> {
     let mut works = Vec::new();

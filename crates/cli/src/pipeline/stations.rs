@@ -10,7 +10,7 @@ use flapwright_planes::{
 };
 use nalgebra::{Point2, Point3, Vector3};
 
-use crate::pipeline::mechanisms::StationMechanism;
+use crate::pipeline::mechanisms::StationRecord;
 use crate::scene::Scene;
 
 /// Deployment samples for the out-of-plane residual of the attachment points.
@@ -36,81 +36,83 @@ impl PlacedStation {
     }
 }
 
-/// Places every station of the scene on its flap and cuts every part by its plane.
-/// `mechanisms` gives the attachment points (A, F, G stowed) whose residuals are reported.
-pub fn place_all(
+/// Places every station on its flap and cuts every part by its plane (each record's
+/// `placed`). The mechanisms give the flap attachments whose residuals are reported.
+pub fn place_all(scene: &Scene, model: &WingModel, parts: &[Part], records: &mut [StationRecord]) -> Result<()> {
+    let dihedral_rad = 0.0; // Only the skew-corrected construction uses it; see below.
+    for record in records.iter_mut() {
+        record.placed = Some(place(scene, model, parts, record, dihedral_rad)?);
+    }
+    Ok(())
+}
+
+fn place(
     scene: &Scene,
     model: &WingModel,
     parts: &[Part],
-    mechanisms: &[StationMechanism],
-) -> Result<Vec<PlacedStation>> {
-    let dihedral_rad = 0.0; // Only the skew-corrected construction uses it; see below.
-    scene
-        .station
+    record: &StationRecord,
+    dihedral_rad: f64,
+) -> Result<PlacedStation> {
+    let station = &scene.station[record.index];
+    let flap_name = record.flap.as_deref().context("station has no flap")?;
+    let flap_index = scene
+        .flap
         .iter()
-        .zip(mechanisms)
-        .map(|(station, mechanism)| {
-            let flap_name = station.flap.as_deref().context("station has no flap")?;
-            let flap_index = scene
-                .flap
-                .iter()
-                .position(|f| f.name == flap_name)
-                .context("station names an unknown flap")?;
-            let flap_scene = &scene.flap[flap_index];
-            let flap = &model.flaps()[flap_index];
-            let (point_ac, direction_ac) = flap.hinge_axis_ac();
-            let axis = HingeAxis::try_new(point_ac, direction_ac.into_inner())?;
-            // Thesis step 1: P is where the inner flap side plane (streamwise, at the
-            // flap body's inboard end) meets the axis; step 2: A0 = P + d along it.
-            let (inboard_y, _) = flap.body_span_m(model.wing())?;
-            let inner_side = Plane::try_new(Point3::new(0.0, inboard_y, 0.0), Vector3::y())?;
-            let offset = station.axis_offset_m.unwrap_or(0.0);
-            let constructed = thesis_stations(&axis, &inner_side, offset, &[0.0])
-                .with_context(|| format!("placing station {}", station.name))?;
-            let a0_ac = constructed.a0_ac;
-            let frame = StationFrame::try_from_origin_and_normal(a0_ac, &axis.direction_ac)?;
-            let attachments_ac: Vec<Point3<f64>> = mechanism
-                .mechanism
-                .flap_attachments()
-                .iter()
-                .map(|p| frame.aircraft_point_from_station(&p.position))
-                .collect();
-            let settings = [0.0, flap_scene.settings.takeoff_deg, flap_scene.settings.landing_deg]
-                .map(|deg| FlapSetting {
-                    deflection_rad: deg.to_radians(),
-                    ..FlapSetting::stowed()
-                })
-                .to_vec();
-            let deployment = FlapDeployment {
-                hinge: axis,
-                base_point_ac: a0_ac,
-                overlap_axis_ac: nalgebra::Vector3::z_axis(),
-                gap_axis_ac: nalgebra::Vector3::x_axis(),
-                settings,
-            };
-            // The circular-arc track turns the flap about the fixed hinge line: a pure
-            // rotation, so the default construction is the plane perpendicular to the
-            // axis and the dihedral does not enter.
-            let placed = compute_station(
-                &station.name,
-                &deployment,
-                a0_ac,
-                &attachments_ac,
-                None,
-                dihedral_rad,
-                RESIDUAL_SAMPLES,
-            )
-            .with_context(|| format!("station {}", station.name))?;
-            let sections = parts
-                .iter()
-                .map(|part| cut_mesh(&part.mesh, &placed.frame, &part.name))
-                .filter(|cut| !matches!(cut, Ok(section) if section.polygons.is_empty()))
-                .collect::<flapwright_planes::Result<Vec<_>>>()
-                .with_context(|| format!("cutting the parts at station {}", station.name))?;
-            Ok(PlacedStation {
-                station: placed,
-                sections,
-            })
+        .position(|f| f.name == flap_name)
+        .context("station names an unknown flap")?;
+    let flap_scene = &scene.flap[flap_index];
+    let flap = &model.flaps()[flap_index];
+    let (point_ac, direction_ac) = flap.hinge_axis_ac();
+    let axis = HingeAxis::try_new(point_ac, direction_ac.into_inner())?;
+    // Thesis step 1: P is where the inner flap side plane (streamwise, at the flap body's
+    // inboard end) meets the axis; step 2: A0 = P + d along it.
+    let (inboard_y, _) = flap.body_span_m(model.wing())?;
+    let inner_side = Plane::try_new(Point3::new(0.0, inboard_y, 0.0), Vector3::y())?;
+    let offset = station.axis_offset_m.unwrap_or(0.0);
+    let constructed = thesis_stations(&axis, &inner_side, offset, &[0.0])
+        .with_context(|| format!("placing station {}", record.station))?;
+    let a0_ac = constructed.a0_ac;
+    let frame = StationFrame::try_from_origin_and_normal(a0_ac, &axis.direction_ac)?;
+    let attachments_ac: Vec<Point3<f64>> = record
+        .mechanism
+        .flap_attachments()
+        .iter()
+        .map(|p| frame.aircraft_point_from_station(&p.position))
+        .collect();
+    let settings = [0.0, flap_scene.settings.takeoff_deg, flap_scene.settings.landing_deg]
+        .map(|deg| FlapSetting {
+            deflection_rad: deg.to_radians(),
+            ..FlapSetting::stowed()
         })
-        .collect()
+        .to_vec();
+    let deployment = FlapDeployment {
+        hinge: axis,
+        base_point_ac: a0_ac,
+        overlap_axis_ac: nalgebra::Vector3::z_axis(),
+        gap_axis_ac: nalgebra::Vector3::x_axis(),
+        settings,
+    };
+    // The circular-arc track turns the flap about the fixed hinge line: a pure rotation,
+    // so the default construction is the plane perpendicular to the axis and the dihedral
+    // does not enter.
+    let placed = compute_station(
+        &record.station,
+        &deployment,
+        a0_ac,
+        &attachments_ac,
+        None,
+        dihedral_rad,
+        RESIDUAL_SAMPLES,
+    )
+    .with_context(|| format!("station {}", record.station))?;
+    let sections = parts
+        .iter()
+        .map(|part| cut_mesh(&part.mesh, &placed.frame, &part.name))
+        .filter(|cut| !matches!(cut, Ok(section) if section.polygons.is_empty()))
+        .collect::<flapwright_planes::Result<Vec<_>>>()
+        .with_context(|| format!("cutting the parts at station {}", record.station))?;
+    Ok(PlacedStation {
+        station: placed,
+        sections,
+    })
 }

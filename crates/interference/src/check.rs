@@ -59,6 +59,8 @@ pub struct ContactResult {
 const SKIN_CUT: &str = "the skin is cut for the mechanism, which lives in the fairing (see the fairing depth)";
 /// Why tracks may cross the wing skin.
 const TRACK_IN_COVE: &str = "tracks are fixed in the cove and pass through its skin";
+/// Why fixed support structure may cross the wing skin.
+const SUPPORT_IN_COVE: &str = "support structure is fixed in the cove and passes through its skin";
 /// Why tracks may cross the flap.
 const FLAP_SLOTTED: &str = "the flap is slotted for its own tracks";
 /// Why a part joined to the flap by a joint is not checked against the flap itself.
@@ -148,7 +150,11 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
             for &fixed in &structure {
                 jobs.push((name(), &part.part, fixed));
             }
-            let reason = if part.moving { SKIN_CUT } else { TRACK_IN_COVE };
+            let reason = match (part.moving, part.role) {
+                (true, _) => SKIN_CUT,
+                (false, BodyRole::Track) => TRACK_IN_COVE,
+                (false, _) => SUPPORT_IN_COVE,
+            };
             for &skin in &skins {
                 skip(&part.part, skin, reason);
             }

@@ -1,8 +1,14 @@
-//! Planar flap mechanisms: the circular-arc track with screw jack of Arslan (2022), its
-//! synthesis, kinematics, kinetostatics and deployment sweeps.
+//! Planar flap mechanisms behind one seam: the circular-arc track with screw jack of
+//! Arslan (2022), its synthesis, kinematics, kinetostatics and deployment sweeps.
 //!
 //! # Overview
 //!
+//! - [`seam`]: [`FlapMechanism`], what every other Flapwright crate sees of a mechanism
+//!   kind (input range, poses as body displacements, bodies with roles, solids and
+//!   certified speed bounds, joints by name, kinetostatics, the actuator); a kind is a
+//!   module implementing it. [`sweep_deployment`] samples any kind kind-neutrally.
+//! - The circular-arc track implements the seam in `track_seam` (bodies: flap, screw,
+//!   nut, two tracks; [`TrackHardware`] sizes their solids).
 //! - [`CircularArcTrackSpec`] holds the designer's choices (thesis Table 2, yellow cells);
 //!   [`CircularArcTrackSpec::thesis_case_study`] is the published case.
 //! - [`CircularArcTrack::synthesise`] runs design steps 7-10 (collinearity rule giving

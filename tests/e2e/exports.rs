@@ -123,3 +123,19 @@ fn the_drawing_shows_the_flap_settings_not_the_range_end() {
         assert!(!svg.contains("landing (35.0 deg)"), "{station}");
     }
 }
+
+#[test]
+fn a_wing_without_flaps_designs_without_a_urdf() {
+    // Found by the fuzz suite after the station records: a scene cut before its first
+    // [[flap]] failed in the URDF stage (a robot needs a station), exit 1.
+    let text = crate::default_scene_text();
+    let wing_only = &text[..text.find("[[flap]]").expect("a flap")];
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("scene.toml"), wing_only).unwrap();
+    let output = run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
+    assert!(report["files"]["urdf"].is_null());
+    assert!(dir.path().join("out/wing.stl").is_file());
+}

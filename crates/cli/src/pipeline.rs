@@ -192,7 +192,9 @@ pub fn design_with_progress(
         sizing_report = Some(sized);
     }
     let mut exported = Exports::default();
-    if full && outputs.urdf && records.iter().all(|r| r.placed.is_some()) && scene.wing.is_some() {
+    // A robot needs a placed station (a wing without flaps has none: its STL is the export).
+    let placed = !records.is_empty() && records.iter().all(|r| r.placed.is_some());
+    if full && outputs.urdf && placed {
         exported.urdf = Some(stages.run("urdf", || exports::write_urdf(scene, &parts, &records, out))?);
     }
     if full && outputs.svg {

@@ -412,6 +412,11 @@ fn mechanism_values_have_finite_ranges() {
             "nut_speed_mps = 1e-300: must be in [0.0001, 10]",
         ),
         (
+            "rotation_range_deg = 35.0",
+            "rotation_range_deg = 1e-300",
+            "rotation_range_deg = 1e-300: must be in [1, 90]",
+        ),
+        (
             "nut_speed_mps = 0.035",
             "nut_speed_mps = 1e308",
             "nut_speed_mps = 1e308: must be in [0.0001, 10]",

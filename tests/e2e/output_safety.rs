@@ -169,6 +169,39 @@ fn unwritable_or_foreign_junit_paths_are_bad_input() {
         let output = run_flapwright(dir.path(), &["check", "scene.toml", "--junit", "junit.xml"]);
         assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
     }
+    // A file it did not write only with --force, and it says so.
+    let output = run_flapwright(dir.path(), &["check", "scene.toml", "--junit", "mine.xml", "--force"]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert!(stderr(&output).contains("--force: replaced mine.xml, which Flapwright had not written"));
+}
+
+#[test]
+fn junit_never_replaces_an_input_or_lands_in_the_output_folder() {
+    // Found by an independent audit: `--junit scene.toml --force` overwrote the scene.
+    let dir = tempfile::tempdir().unwrap();
+    let scene = fs::read_to_string(repo_root().join("data/scenes/small-aircraft.toml")).unwrap();
+    fs::write(dir.path().join("scene.toml"), &scene).unwrap();
+    let airfoil = fs::read_to_string(repo_root().join("data/airfoils/n63215.dat")).unwrap();
+    fs::write(dir.path().join("n63215.dat"), &airfoil).unwrap();
+    for (junit, what) in [
+        ("scene.toml", "is the scene file"),
+        ("n63215.dat", "is an airfoil file the scene reads"),
+        ("out/junit.xml", "inside --out"),
+    ] {
+        let output = run_flapwright(
+            dir.path(),
+            &["check", "scene.toml", "--out", "out", "--junit", junit, "--force"],
+        );
+        assert_eq!(output.status.code(), Some(2), "--junit {junit}: {}", stderr(&output));
+        assert!(
+            stderr(&output).contains(&format!("--junit {junit}")),
+            "{}",
+            stderr(&output)
+        );
+        assert!(stderr(&output).contains(what), "{}", stderr(&output));
+    }
+    assert_eq!(fs::read_to_string(dir.path().join("scene.toml")).unwrap(), scene);
+    assert_eq!(fs::read_to_string(dir.path().join("n63215.dat")).unwrap(), airfoil);
 }
 
 #[test]

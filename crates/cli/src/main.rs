@@ -153,8 +153,24 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         outputs.sizing = false;
     }
     let staged = StagedDir::create(&out, scene_path.as_deref(), cli.force)?;
+    let mut junit_replaces_foreign = false;
     if let Some(path) = &junit {
-        output::check_writable_file(path, cli.force, |text| {
+        // Never one of the run's inputs, nor inside --out (replaced as a whole).
+        let mut reserved: Vec<(PathBuf, String, bool)> = scene_path
+            .iter()
+            .map(|p| (p.clone(), "the scene file".to_string(), false))
+            .collect();
+        reserved.extend(
+            scene_inputs(&scene, scene_dir.as_deref())
+                .into_iter()
+                .map(|p| (p, "an airfoil file the scene reads".to_string(), false)),
+        );
+        reserved.push((
+            out.clone(),
+            "inside --out, which each run replaces as a whole".to_string(),
+            true,
+        ));
+        junit_replaces_foreign = output::check_writable_file("--junit", path, &reserved, cli.force, |text| {
             text.contains("<testsuites name=\"flapwright check\"")
         })
         .with_context(|| format!("--junit {}", path.display()))?;
@@ -211,6 +227,9 @@ fn run(cli: &Cli) -> Result<(), Failure> {
     if let (Some(path), Some(report)) = (&junit, &outcome.report.interference) {
         let xml = flapwright::junit::interference_junit(&scene.name, report)?;
         output::write_file_atomically(path, xml.as_bytes()).with_context(|| format!("writing {}", path.display()))?;
+        if junit_replaces_foreign && !cli.quiet {
+            eprintln!("--force: replaced {}, which Flapwright had not written", path.display());
+        }
     }
     if mode == Mode::Design && !cli.quiet && !cli.json {
         for warning in &outcome.report.warnings {
@@ -227,7 +246,11 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         };
         println!(
             "{} \"{}\": {} part(s), {} station(s), {} warning(s){verdict} -> {}",
-            if mode == Mode::Check { "checked" } else { "designed" },
+            match (&cli.command, mode) {
+                (Some(Command::Export { .. }), _) => "exported",
+                (_, Mode::Check) => "checked",
+                _ => "designed",
+            },
             scene.name,
             outcome.summary.parts,
             outcome.summary.stations,
@@ -268,4 +291,23 @@ fn read_scene_text(path: Option<&Path>) -> Result<(String, Option<PathBuf>), Fai
             Ok((text, dir))
         }
     }
+}
+
+/// The files on disk a scene reads besides itself: its airfoil files found next to it.
+fn scene_inputs(scene: &flapwright::scene::Scene, scene_dir: Option<&Path>) -> Vec<PathBuf> {
+    use flapwright::scene::{AirfoilRef, AirfoilSource};
+    let names = scene
+        .wing
+        .iter()
+        .flat_map(|w| w.sections.iter().map(|s| s.airfoil.as_str()))
+        .chain(scene.flap.iter().filter_map(|f| f.airfoil.as_deref()));
+    names
+        .filter_map(|text| match AirfoilRef::parse(text) {
+            Ok(AirfoilRef::File(name)) => match AirfoilRef::locate(&name, scene_dir) {
+                Some(AirfoilSource::Disk(path)) => Some(path),
+                _ => None,
+            },
+            _ => None,
+        })
+        .collect()
 }

@@ -46,6 +46,23 @@ pub enum OutputError {
     },
     /// `--out` exists and is not a folder.
     NotAFolder(PathBuf),
+    /// An output file (`--junit`) exists and Flapwright did not write it.
+    ForeignFile {
+        /// The option that names it.
+        option: &'static str,
+        /// The file.
+        path: PathBuf,
+    },
+    /// An output file would replace one of the run's inputs (the scene, an airfoil file)
+    /// or land inside `--out`, which is replaced as a whole: never, even with `--force`.
+    ReservedFile {
+        /// The option that names it.
+        option: &'static str,
+        /// The file.
+        path: PathBuf,
+        /// What it is.
+        what: String,
+    },
     /// The folder cannot be created or written.
     Unwritable {
         /// The path tried.
@@ -81,6 +98,14 @@ impl std::fmt::Display for OutputError {
                 scene.display()
             ),
             Self::NotAFolder(path) => write!(f, "--out {} exists and is not a folder", path.display()),
+            Self::ForeignFile { option, .. } => write!(
+                f,
+                "exists and Flapwright did not write it; choose another {option} path, or pass --force to replace it"
+            ),
+            Self::ReservedFile { option, what, .. } => write!(
+                f,
+                "is {what}: never replaced, even with --force; choose another {option} path"
+            ),
             Self::Unwritable { path, reason } => write!(f, "cannot write {}: {reason}", path.display()),
             Self::Io(error) => write!(f, "{error}"),
         }
@@ -204,30 +229,52 @@ impl Drop for StagedDir {
     }
 }
 
-/// Checks that a file may be written at `path` outside any output folder (a JUnit file):
-/// its folder exists and takes files, and an existing file is one Flapwright wrote
-/// (`is_ours` on its text) unless `force`.
-pub fn check_writable_file(path: &Path, force: bool, is_ours: impl Fn(&str) -> bool) -> Result<(), OutputError> {
+/// Checks that a file may be written at `path` outside any output folder (a JUnit file
+/// named by `option`): it is none of the `reserved` paths (the run's input files, and
+/// folders whose contents it must not land in, flagged `true`), its folder exists and
+/// takes files, and an existing file is one Flapwright wrote (`is_ours` on its text)
+/// unless `force`. Returns true when `force` lets it replace a file Flapwright did not
+/// write (the caller says so).
+pub fn check_writable_file(
+    option: &'static str,
+    path: &Path,
+    reserved: &[(PathBuf, String, bool)],
+    force: bool,
+    is_ours: impl Fn(&str) -> bool,
+) -> Result<bool, OutputError> {
     if path.is_dir() {
         return Err(OutputError::Unwritable {
             path: path.to_path_buf(),
             reason: "it is a folder".into(),
         });
     }
-    if path.exists() && !force {
-        let ours = fs::read_to_string(path).map(|text| is_ours(&text)).unwrap_or(false);
-        if !ours {
-            return Err(OutputError::Foreign {
-                folder: parent_of(path),
-                files: vec![PathBuf::from(path.file_name().unwrap_or_default())],
+    let target = absolute(path);
+    for (reserved_path, what, is_folder) in reserved {
+        let reserved_abs = absolute(reserved_path);
+        if target == reserved_abs || (*is_folder && target.starts_with(&reserved_abs)) {
+            return Err(OutputError::ReservedFile {
+                option,
+                path: path.to_path_buf(),
+                what: what.clone(),
             });
         }
+    }
+    let mut replaces_foreign = false;
+    if path.exists() {
+        let ours = fs::read_to_string(path).map(|text| is_ours(&text)).unwrap_or(false);
+        if !ours && !force {
+            return Err(OutputError::ForeignFile {
+                option,
+                path: path.to_path_buf(),
+            });
+        }
+        replaces_foreign = !ours;
     }
     let probe = parent_of(path).join(format!(".{}.probe-{}", folder_name(path), run_tag()));
     match fs::write(&probe, b"") {
         Ok(()) => {
             let _ = fs::remove_file(&probe);
-            Ok(())
+            Ok(replaces_foreign)
         }
         Err(e) => Err(OutputError::Unwritable {
             path: path.to_path_buf(),

@@ -104,7 +104,7 @@ impl std::fmt::Display for SynthesisWarning {
             } => write!(
                 f,
                 "the screw thread is not self-locking: lead angle {:.2} deg >= friction angle {:.2} deg \
-                 (f = {friction_coefficient}); a load can back-drive it, so a brake must hold the flap",
+                 (f = {friction_coefficient:.3}); a load can back-drive it, so a brake must hold the flap",
                 lead_angle_rad.to_degrees(),
                 friction_coefficient.atan().to_degrees()
             ),

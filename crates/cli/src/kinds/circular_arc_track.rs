@@ -23,6 +23,10 @@ const GRAVITY_MPS2: f64 = 9.81;
 /// 224.6 mm, so an unspecified screw is 10 % longer than the full stroke.
 const SCREW_LENGTH_MARGIN: f64 = 1.10;
 
+/// The flap rotation a track may give, deg: below a degree it is no flap setting (a typo
+/// such as 1e-300 would otherwise pass); flap settings stay below 90 deg.
+const ROTATION_RANGE_DEG: (f64, f64) = (1.0, 90.0);
+
 /// The keys that place the screw line and the nut's travel.
 const SCREW_GEOMETRY_KEYS: &str = "base_distance_m, base_angle_deg, crank_length_m and rotation_range_deg";
 
@@ -141,9 +145,9 @@ impl KindScene for CircularArcTrackScene {
         checker.in_range(
             &format!("{path}.rotation_range_deg"),
             m.rotation_range_deg,
-            0.0,
-            180.0,
-            true,
+            ROTATION_RANGE_DEG.0,
+            ROTATION_RANGE_DEG.1,
+            false,
         );
         let offset = m.slot_offset_angle_deg;
         if offset.is_finite() && offset.to_radians().sin().abs() < MIN_SLOT_OFFSET_ANGLE_DEG.to_radians().sin() {

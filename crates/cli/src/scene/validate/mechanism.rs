@@ -61,7 +61,9 @@ impl Checker<'_> {
                     Some((j, first_range, first_key)) if (range - first_range).abs() > 1e-9 => self.fail(
                         format!("station[{i}].mechanism.{key}"),
                         format!(
-                            "= {range}: must equal station[{j}].mechanism.{first_key} = {first_range}: both stations turn the one rigid flap \"{}\"",
+                            "= {}: must equal station[{j}].mechanism.{first_key} = {}: both stations turn the one rigid flap \"{}\"",
+                            super::number(range),
+                            super::number(first_range),
                             flap.name
                         ),
                     ),
@@ -74,7 +76,9 @@ impl Checker<'_> {
                     self.fail(
                         format!("flap[{f}].settings.landing_deg"),
                         format!(
-                            "= {landing}: beyond the deflection range of its mechanisms, station[{j}].mechanism.{key} = {range}"
+                            "= {}: beyond the deflection range of its mechanisms, station[{j}].mechanism.{key} = {}",
+                            super::number(landing),
+                            super::number(range)
                         ),
                     );
                 }

@@ -113,8 +113,10 @@ pub fn design_with_progress(
 
     let mut records = stages.run("synthesis", || mechanisms::synthesise_all(scene))?;
     let mut meshed = Vec::new();
+    let mut tube_path_ac: Vec<nalgebra::Point3<f64>> = Vec::new();
     if let Some(wing) = &scene.wing {
         let model = stages.run("geometry", || geometry::build_model(scene, wing, inputs.scene_dir))?;
+        tube_path_ac = model.torque_tube().map(|t| t.path_ac.clone()).unwrap_or_default();
         meshed = stages.run("meshing", || geometry::mesh_parts(&model, &scene.resolution))?;
         // URDF meshes are the STL files: writing a URDF writes them too.
         let write_stl = full && (outputs.stl || outputs.urdf);
@@ -179,13 +181,6 @@ pub fn design_with_progress(
     }
     let mut sizing_report = None;
     if full && outputs.sizing && outputs.kinematics {
-        let tube_path_ac: Vec<nalgebra::Point3<f64>> = scene
-            .structure
-            .torque_tube
-            .iter()
-            .flat_map(|t| t.path_m.iter())
-            .map(|p| nalgebra::Point3::new(p[0], p[1], p[2]))
-            .collect();
         let (sized, notes) = stages.run("sizing", || sizing::size_all(scene, &records, &tube_path_ac))?;
         warnings.extend(notes);
         warnings.extend(sized.warnings.iter().map(|w| w.to_string()));

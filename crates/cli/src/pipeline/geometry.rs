@@ -102,11 +102,46 @@ pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) ->
             y_end_m: s.y_end_m,
         })
         .collect();
-    let torque_tube = scene.structure.torque_tube.as_ref().map(|t| TorqueTubeSpec {
-        path_ac: t.path_m.iter().copied().map(point).collect(),
-        radius_m: t.radius_m,
-    });
+    let torque_tube = match &scene.structure.torque_tube {
+        None => None,
+        Some(t) => Some(TorqueTubeSpec {
+            path_ac: match (&t.path_m, t.chord_fraction) {
+                (Some(points), _) => points.iter().copied().map(point).collect(),
+                (None, Some(fraction)) => tube_path_on_the_wing(scene, wing, &wing_spec, t, fraction)?,
+                (None, None) => anyhow::bail!("structure.torque_tube: no axis (validation should have caught this)"),
+            },
+            radius_m: t.radius_m,
+        }),
+    };
     WingModel::try_new(wing_spec, flaps, spars, torque_tube).context("building the wing model")
+}
+
+/// The torque tube's axis through chord fraction `fraction` (and its depth below the chord
+/// line) of the wing's sections, from its start to its end and at every section between:
+/// straight segments between the sections follow the wing's panels, so a change of sweep,
+/// dihedral or twist carries the tube along.
+fn tube_path_on_the_wing(
+    scene: &Scene,
+    wing: &WingScene,
+    wing_spec: &WingSpec,
+    tube: &crate::scene::TorqueTubeScene,
+    fraction: f64,
+) -> Result<Vec<Point3<f64>>> {
+    let model = flapwright_geom::wing::Wing::try_new(wing_spec.clone()).context("building the wing")?;
+    let start = tube.y_start_m.unwrap_or(wing.sections[0].y_m);
+    let end = tube
+        .y_end_m
+        .unwrap_or_else(|| crate::scene::default_tube_end(scene, wing));
+    let depth = tube.depth_below_chord_fraction.unwrap_or(0.0);
+    let ys = std::iter::once(start)
+        .chain(wing.sections.iter().map(|s| s.y_m).filter(|&y| y > start && y < end))
+        .chain(std::iter::once(end));
+    ys.map(|y| {
+        let section = model.section_at(y)?;
+        Ok(model.section_point_ac(&section, nalgebra::Point2::new(fraction, -depth)))
+    })
+    .collect::<flapwright_geom::Result<Vec<_>>>()
+    .context("structure.torque_tube: placing the axis on the wing")
 }
 
 /// Meshes every part once.

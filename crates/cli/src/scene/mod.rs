@@ -18,6 +18,7 @@ pub use airfoil_ref::{load_airfoil, AirfoilRef, AirfoilSource};
 pub use key_path::Location;
 pub use settings::{InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene};
 pub use station::{LoadCaseScene, LoadsScene, StationScene};
+pub(crate) use validate::default_tube_end;
 pub use validate::{limits, number, KeyChecker, LocatedProblem, Problem, SceneError, MAX_SCENE_BYTES};
 pub use wing::{
     FlapScene, HingeScene, PanelScene, SettingsScene, SparScene, StructureScene, SweepReferenceScene, TorqueTubeScene,

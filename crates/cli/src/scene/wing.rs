@@ -155,8 +155,19 @@ pub struct SparScene {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TorqueTubeScene {
-    /// Polyline of the tube axis, aircraft frame, m.
-    pub path_m: Vec<[f64; 3]>,
+    /// Polyline of the tube axis, aircraft frame, m (or give `chord_fraction`).
+    pub path_m: Option<Vec<[f64; 3]>>,
+    /// Or: the axis runs through this chord fraction of the wing sections (from the
+    /// leading edge), so that a change of sweep, dihedral or twist carries it along.
+    pub chord_fraction: Option<f64>,
+    /// With `chord_fraction`: this fraction of the local chord below the chord line
+    /// (negative: above). Default 0.
+    pub depth_below_chord_fraction: Option<f64>,
+    /// With `chord_fraction`: from here (aircraft y, m; default: the wing root).
+    pub y_start_m: Option<f64>,
+    /// With `chord_fraction`: to here (aircraft y, m; default: the outermost flap's
+    /// outboard end).
+    pub y_end_m: Option<f64>,
     /// Outer radius, m.
     pub radius_m: f64,
 }

@@ -329,36 +329,86 @@ impl Checker<'_> {
                 (0.25 * largest_chord).max(MIN_LENGTH_M),
                 false,
             );
-            self.count_in(&format!("{path}.path_m"), tube.path_m.len(), 0, MAX_TORQUE_TUBE_POINTS);
-            if tube.path_m.len() < 2 {
+            match (&tube.path_m, tube.chord_fraction) {
+                (Some(points), None) => self.tube_path(path, points),
+                (None, Some(fraction)) => {
+                    self.in_range(&format!("{path}.chord_fraction"), fraction, 0.0, 1.0, false);
+                    if let Some(depth) = tube.depth_below_chord_fraction {
+                        self.in_range(&format!("{path}.depth_below_chord_fraction"), depth, -0.5, 0.5, false);
+                    }
+                    let (root, tip) = span_of(wing);
+                    let start = tube.y_start_m.unwrap_or(root);
+                    let end = tube.y_end_m.unwrap_or_else(|| default_tube_end(scene, wing));
+                    let start_ok = self.in_range(&format!("{path}.y_start_m"), start, root, tip, false);
+                    let end_ok = self.in_range(&format!("{path}.y_end_m"), end, root, tip, false);
+                    if start_ok && end_ok && end - start < MIN_LENGTH_M {
+                        self.fail(
+                            format!("{path}.y_end_m"),
+                            format!(
+                                "= {}: must lie outboard of the tube's start, y = {}",
+                                super::number(end),
+                                super::number(start)
+                            ),
+                        );
+                    }
+                }
+                _ => self.fail(
+                    path.to_string(),
+                    "give the tube's axis either as path_m (points) or as chord_fraction (with depth_below_chord_fraction, y_start_m, y_end_m), not both",
+                ),
+            }
+            if tube.path_m.is_some()
+                && (tube.depth_below_chord_fraction.is_some() || tube.y_start_m.is_some() || tube.y_end_m.is_some())
+            {
                 self.fail(
-                    format!("{path}.path_m"),
-                    format!("has {} point(s): needs at least 2", tube.path_m.len()),
+                    path.to_string(),
+                    "depth_below_chord_fraction, y_start_m and y_end_m go with chord_fraction, not with path_m",
                 );
             }
-            for (i, point) in tube.path_m.iter().enumerate() {
-                self.point_within(&format!("{path}.path_m[{i}]"), point);
-            }
-            for (i, pair) in tube.path_m.windows(2).enumerate() {
-                let length = ((pair[1][0] - pair[0][0]).powi(2)
-                    + (pair[1][1] - pair[0][1]).powi(2)
-                    + (pair[1][2] - pair[0][2]).powi(2))
-                .sqrt();
-                if length < MIN_LENGTH_M {
-                    self.fail(
-                        format!("{path}.path_m[{}]", i + 1),
-                        format!(
-                            "repeats the previous point: segments must be at least {} mm long",
-                            MIN_LENGTH_M * 1e3
-                        ),
-                    );
-                }
+        }
+    }
+
+    fn tube_path(&mut self, path: &str, points: &[[f64; 3]]) {
+        self.count_in(&format!("{path}.path_m"), points.len(), 0, MAX_TORQUE_TUBE_POINTS);
+        if points.len() < 2 {
+            self.fail(
+                format!("{path}.path_m"),
+                format!("has {} point(s): needs at least 2", points.len()),
+            );
+        }
+        for (i, point) in points.iter().enumerate() {
+            self.point_within(&format!("{path}.path_m[{i}]"), point);
+        }
+        for (i, pair) in points.windows(2).enumerate() {
+            let length = ((pair[1][0] - pair[0][0]).powi(2)
+                + (pair[1][1] - pair[0][1]).powi(2)
+                + (pair[1][2] - pair[0][2]).powi(2))
+            .sqrt();
+            if length < MIN_LENGTH_M {
+                self.fail(
+                    format!("{path}.path_m[{}]", i + 1),
+                    format!(
+                        "repeats the previous point: segments must be at least {} mm long",
+                        MIN_LENGTH_M * 1e3
+                    ),
+                );
             }
         }
     }
 }
 
-fn span_of(wing: &WingScene) -> (f64, f64) {
+/// A tube placed by chord fraction ends at the outermost flap's outboard end (the last
+/// station it drives lies inside it), or at the tip without flaps.
+pub(crate) fn default_tube_end(scene: &Scene, wing: &WingScene) -> f64 {
+    scene
+        .flap
+        .iter()
+        .map(|f| f.y_outboard_m)
+        .fold(None, |end: Option<f64>, y| Some(end.map_or(y, |e| e.max(y))))
+        .unwrap_or_else(|| span_of(wing).1)
+}
+
+pub(crate) fn span_of(wing: &WingScene) -> (f64, f64) {
     let root = wing.sections.first().map_or(0.0, |s| s.y_m);
     let tip = wing.sections.last().map_or(0.0, |s| s.y_m);
     (root, tip)

@@ -5,6 +5,8 @@ use std::path::Path;
 
 mod budget;
 mod geometry;
+
+pub(crate) use geometry::default_tube_end;
 pub mod limits;
 mod mechanism;
 mod settings;

@@ -14,7 +14,7 @@ use serde::Serialize;
 
 use crate::output::StagedDir;
 use crate::pipeline::mechanisms::StationRecord;
-use crate::pipeline::plots::station_plots;
+use crate::pipeline::plots::{station_plots, SettingTarget};
 use crate::report::PartReport;
 use crate::scene::Scene;
 
@@ -292,7 +292,33 @@ pub fn write_svgs(
         files.push(name);
         if let Some(cases) = record.kinematics.as_ref().map(|k| k.load_cases.as_slice()) {
             let name = format!("plots-{}.svg", record.station);
-            let plots = station_plots(cases, mechanism.input_range().quantity, interference, &record.station);
+            let targets = record
+                .flap
+                .as_ref()
+                .and_then(|name| scene.flap.iter().find(|f| &f.name == name))
+                .map(|f| {
+                    [("takeoff", f.settings.takeoff_deg), ("landing", f.settings.landing_deg)]
+                        .into_iter()
+                        .filter_map(|(setting, deg)| {
+                            let (gap, overlap) = f.settings.targets(setting);
+                            let input = mechanism.input_at_deflection(deg.to_radians()).ok()?;
+                            (gap.is_some() || overlap.is_some()).then(|| SettingTarget {
+                                setting: setting.into(),
+                                input,
+                                gap_percent_chord: gap,
+                                overlap_percent_chord: overlap,
+                            })
+                        })
+                        .collect::<Vec<_>>()
+                })
+                .unwrap_or_default();
+            let plots = station_plots(
+                cases,
+                mechanism.input_range().quantity,
+                &targets,
+                interference,
+                &record.station,
+            );
             // A station whose every sweep stopped at once has nothing to plot.
             if !plots.is_empty() {
                 let svg = render_plots_svg(&format!("{}: station {}", scene.name, record.station), &plots)

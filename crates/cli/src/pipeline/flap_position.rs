@@ -20,6 +20,25 @@ pub struct SettingPosition {
     /// Gap and overlap (m and % of the local chord).
     #[serde(flatten)]
     pub position: GapOverlap,
+    /// The scene's target gap (% of the local chord), if it gives one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub target_gap_percent_chord: Option<f64>,
+    /// The scene's target overlap (% of the local chord), if it gives one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub target_overlap_percent_chord: Option<f64>,
+}
+
+impl SettingPosition {
+    /// How far the gap and the overlap miss their targets (% of the local chord; positive:
+    /// larger than the target), where the scene gives targets.
+    pub fn misses(&self) -> (Option<f64>, Option<f64>) {
+        (
+            self.target_gap_percent_chord
+                .map(|t| self.position.gap_percent_chord - t),
+            self.target_overlap_percent_chord
+                .map(|t| self.position.overlap_percent_chord - t),
+        )
+    }
 }
 
 /// The flap's position behind the main wing at one station.
@@ -81,10 +100,13 @@ fn flap_position(flaps: &[FlapScene], record: &StationRecord) -> Result<Option<F
     .map(|(setting, deflection_deg)| {
         // Where the mechanism puts the flap at this deflection: any planar motion.
         let pose = seam.pose(seam.input_at_deflection(deflection_deg.to_radians())?)?;
+        let (target_gap_percent_chord, target_overlap_percent_chord) = flap.settings.targets(setting);
         Ok(SettingPosition {
             setting: setting.into(),
             deflection_deg,
             position: measure.at_displacement(&pose.flap),
+            target_gap_percent_chord,
+            target_overlap_percent_chord,
         })
     })
     .collect::<Result<Vec<_>>>()?;

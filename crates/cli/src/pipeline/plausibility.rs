@@ -138,16 +138,22 @@ pub const GAP_OVERLAP_WARNING_MARGIN_PERCENT_CHORD: f64 = 5.0;
 pub fn fairing_warning(station: &str, fairing: &flapwright_interference::FairingDepth) -> Option<String> {
     (fairing.depth_percent_flap_chord > MAX_PLAUSIBLE_FAIRING_PERCENT_FLAP_CHORD).then(|| {
         format!(
-            "station {station}: fairing {:.0} mm deep ({:.0} % of the flap chord, more than {MAX_PLAUSIBLE_FAIRING_PERCENT_FLAP_CHORD} %), set by {} at {:.1} deg",
+            "station {station}: fairing {:.0} mm deep ({:.0} % of the flap chord, more than {MAX_PLAUSIBLE_FAIRING_PERCENT_FLAP_CHORD} %), set by {} at {:.1} % of the deployment",
             fairing.depth_m * 1e3,
             fairing.depth_percent_flap_chord,
             fairing.part.as_deref().unwrap_or("?"),
-            fairing.at_parameter.to_degrees()
+            100.0 * fairing.at_parameter
         )
     })
 }
 
-/// Warnings for take-off and landing gaps and overlaps far outside the usual settings.
+/// A take-off or landing gap or overlap that misses the scene's target by more than this,
+/// % of the local chord, is warned about (half a per cent of the chord: about what a
+/// rigging tolerance allows, a sixth of the 0-3 % band of `003_...`).
+pub const TARGET_TOLERANCE_PERCENT_CHORD: f64 = 0.5;
+
+/// Warnings for take-off and landing gaps and overlaps that miss the scene's targets, or
+/// without targets lie far outside the usual settings.
 pub fn gap_overlap_warnings(
     station: &str,
     position: &crate::pipeline::flap_position::FlapPositionReport,
@@ -160,6 +166,25 @@ pub fn gap_overlap_warnings(
             setting.position.gap_percent_chord,
             setting.position.overlap_percent_chord,
         );
+        let (gap_miss, overlap_miss) = setting.misses();
+        if gap_miss.is_some() || overlap_miss.is_some() {
+            let missed = |miss: Option<f64>| miss.is_some_and(|m| m.abs() > TARGET_TOLERANCE_PERCENT_CHORD);
+            if missed(gap_miss) || missed(overlap_miss) {
+                let describe = |what: &str, value: f64, target: Option<f64>| {
+                    target.map_or(format!("{what} {value:.1} %"), |t| {
+                        format!("{what} {value:.1} % (target {t:.1} %)")
+                    })
+                };
+                warnings.push(format!(
+                    "station {station}: {} at {:.1} deg misses its targets by more than {TARGET_TOLERANCE_PERCENT_CHORD} % of the local chord: {}, {}",
+                    setting.setting,
+                    setting.deflection_deg,
+                    describe("gap", gap, setting.target_gap_percent_chord),
+                    describe("overlap", overlap, setting.target_overlap_percent_chord)
+                ));
+            }
+            continue;
+        }
         let far = |value: f64| value < low - margin || value > high + margin;
         if far(gap) || far(overlap) {
             warnings.push(format!(
@@ -192,7 +217,7 @@ mod tests {
         let warning = fairing_warning("inner", &fairing(110.0)).unwrap();
         assert!(
             warning.contains("station inner: fairing 550 mm deep (110 % of the flap chord")
-                && warning.contains("inner.screw at 28.6 deg"),
+                && warning.contains("inner.screw at 50.0 % of the deployment"),
             "{warning}"
         );
     }

@@ -6,6 +6,20 @@ use flapwright_interference::{InterferenceReport, PairResult};
 use flapwright_mechanism::seam::InputQuantity;
 use flapwright_mechanism::{Deployment, DeploymentSample};
 
+/// A flap setting's gap and overlap targets at the setting's actuator input, for marks on
+/// the gap and overlap plot.
+#[derive(Debug, Clone)]
+pub struct SettingTarget {
+    /// "takeoff" or "landing".
+    pub setting: String,
+    /// Actuator input of the setting.
+    pub input: f64,
+    /// Target gap, % of the local chord.
+    pub gap_percent_chord: Option<f64>,
+    /// Target overlap, % of the local chord.
+    pub overlap_percent_chord: Option<f64>,
+}
+
 /// The plots of one station: kinematics and loads against the actuator input (first load
 /// case, or every case where they differ), gap and overlap when the station has a flap
 /// section, and the clearance of its closest pairs when the interference check ran.
@@ -14,6 +28,7 @@ use flapwright_mechanism::{Deployment, DeploymentSample};
 pub fn station_plots(
     all_cases: &[Deployment],
     input: InputQuantity,
+    targets: &[SettingTarget],
     interference: Option<&InterferenceReport>,
     station: &str,
 ) -> Vec<Plot> {
@@ -79,21 +94,49 @@ pub fn station_plots(
                 .collect(),
         },
     ];
+    // Each target as a short mark at its setting's input, 2 % of the travel wide.
+    let travel = first
+        .first()
+        .and_then(|c| Some(c.samples.last()?.input - c.samples.first()?.input))
+        .unwrap_or(0.0);
+    let mark = |label: String, at: f64, value: f64| Series {
+        name: label,
+        points: vec![
+            ((at - 0.01 * travel) * x_scale, value),
+            ((at + 0.01 * travel) * x_scale, value),
+        ],
+    };
+    let target_marks = targets.iter().flat_map(|t| {
+        [
+            t.gap_percent_chord
+                .map(|v| mark(format!("{} gap target", t.setting), t.input, v)),
+            t.overlap_percent_chord
+                .map(|v| mark(format!("{} overlap target", t.setting), t.input, v)),
+        ]
+        .into_iter()
+        .flatten()
+    });
+    let gap_overlap: Vec<Series> = first
+        .iter()
+        .flat_map(|c| {
+            [
+                series(c, "gap".into(), &|s| s.flap_position.map(|p| p.gap_percent_chord)),
+                series(c, "overlap".into(), &|s| {
+                    s.flap_position.map(|p| p.overlap_percent_chord)
+                }),
+            ]
+        })
+        .collect();
+    let measured = gap_overlap.iter().all(|s| !s.points.is_empty()) && !gap_overlap.is_empty();
     plots.push(Plot {
         title: "Gap and overlap behind the cove lip".into(),
         x_label: x_label.into(),
         y_label: "% of local chord".into(),
-        series: first
-            .iter()
-            .flat_map(|c| {
-                [
-                    series(c, "gap".into(), &|s| s.flap_position.map(|p| p.gap_percent_chord)),
-                    series(c, "overlap".into(), &|s| {
-                        s.flap_position.map(|p| p.overlap_percent_chord)
-                    }),
-                ]
-            })
-            .collect(),
+        series: if measured {
+            gap_overlap.into_iter().chain(target_marks).collect()
+        } else {
+            Vec::new()
+        },
     });
     plots.extend(interference.and_then(|report| clearance_plot(report, station)));
     plots.retain(|plot| !plot.series.is_empty() && plot.series.iter().all(|s| !s.points.is_empty()));

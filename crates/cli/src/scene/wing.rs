@@ -113,6 +113,26 @@ pub struct SettingsScene {
     pub takeoff_deg: f64,
     /// Landing deflection (fully deployed), deg.
     pub landing_deg: f64,
+    /// Target gap at take-off, % of the local chord (`003_...` Fig. 3); optional.
+    pub takeoff_gap_percent: Option<f64>,
+    /// Target overlap at take-off, % of the local chord; optional.
+    pub takeoff_overlap_percent: Option<f64>,
+    /// Target gap at landing, % of the local chord; optional.
+    pub landing_gap_percent: Option<f64>,
+    /// Target overlap at landing, % of the local chord; optional.
+    pub landing_overlap_percent: Option<f64>,
+}
+
+impl SettingsScene {
+    /// The target (gap, overlap) in % of the local chord of `setting` ("takeoff" or
+    /// "landing"), each when the scene gives it.
+    pub fn targets(&self, setting: &str) -> (Option<f64>, Option<f64>) {
+        match setting {
+            "takeoff" => (self.takeoff_gap_percent, self.takeoff_overlap_percent),
+            "landing" => (self.landing_gap_percent, self.landing_overlap_percent),
+            _ => (None, None),
+        }
+    }
 }
 
 impl Default for SettingsScene {
@@ -120,6 +140,10 @@ impl Default for SettingsScene {
         Self {
             takeoff_deg: 15.0,
             landing_deg: 35.0,
+            takeoff_gap_percent: None,
+            takeoff_overlap_percent: None,
+            landing_gap_percent: None,
+            landing_overlap_percent: None,
         }
     }
 }

@@ -231,6 +231,17 @@ impl Checker<'_> {
             90.0,
             true,
         );
+        for (key, target) in [
+            ("takeoff_gap_percent", settings.takeoff_gap_percent),
+            ("takeoff_overlap_percent", settings.takeoff_overlap_percent),
+            ("landing_gap_percent", settings.landing_gap_percent),
+            ("landing_overlap_percent", settings.landing_overlap_percent),
+        ] {
+            if let Some(value) = target {
+                // Slotted flaps: gaps and overlaps of a few % chord (`003_...` 0-3 %).
+                self.in_range(&format!("{path}.settings.{key}"), value, -20.0, 20.0, false);
+            }
+        }
         if takeoff_ok && landing_ok && settings.takeoff_deg > settings.landing_deg {
             self.fail(
                 format!("{path}.settings.takeoff_deg"),

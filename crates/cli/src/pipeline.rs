@@ -169,10 +169,8 @@ pub fn design_with_progress(
         stages.run("kinematics", || {
             for record in &mut records {
                 let mut report = mechanisms::sweep_station(record, &cases, samples, &mut warnings)?;
-                if let (Some(place), Some(flap)) = (&record.placed, record.flap.as_deref()) {
-                    if let Some(measure) = flap_position::flap_behind_wing(place, flap)? {
-                        flap_position::annotate_samples(record, &measure, &mut report)?;
-                    }
+                if let Some(measure) = &record.flap_behind_wing {
+                    flap_position::annotate_samples(record, measure, &mut report)?;
                 }
                 record.kinematics = Some(report);
             }

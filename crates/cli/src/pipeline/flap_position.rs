@@ -67,10 +67,15 @@ pub fn flap_behind_wing(placed: &PlacedStation, flap_name: &str) -> Result<Optio
     })?))
 }
 
-/// Gap and overlap at each station's flap settings (each record's `flap_position`; None
-/// where the station has no flap section to measure).
+/// The flap behind the wing at each station (each record's `flap_behind_wing`, measured
+/// once for the settings and the deployment samples) and the gap and overlap at its flap
+/// settings (`flap_position`); None where the station has no flap section to measure.
 pub fn flap_positions(flaps: &[FlapScene], records: &mut [StationRecord]) -> Result<()> {
     for record in records.iter_mut() {
+        record.flap_behind_wing = match (&record.placed, record.flap.as_deref()) {
+            (Some(placed), Some(flap)) => flap_behind_wing(placed, flap)?,
+            _ => None,
+        };
         record.flap_position = flap_position(flaps, record)?;
     }
     Ok(())
@@ -84,10 +89,7 @@ fn flap_position(flaps: &[FlapScene], record: &StationRecord) -> Result<Option<F
     else {
         return Ok(None);
     };
-    let Some(placed) = &record.placed else {
-        return Ok(None);
-    };
-    let Some(measure) = flap_behind_wing(placed, &flap.name)? else {
+    let Some(measure) = &record.flap_behind_wing else {
         return Ok(None);
     };
     let seam = record.mechanism.as_ref();

@@ -8,6 +8,7 @@ use flapwright_mechanism::{sweep_deployment, Deployment, ExternalMoment, FlapMec
 use serde::Serialize;
 
 use flapwright_interference::FairingDepth;
+use flapwright_planes::FlapBehindWing;
 
 use crate::pipeline::flap_position::FlapPositionReport;
 use crate::pipeline::stations::PlacedStation;
@@ -28,6 +29,8 @@ pub struct StationRecord {
     pub mechanism: Arc<dyn FlapMechanism>,
     /// Its plane, frame and section cuts (planes stage; None without a wing).
     pub placed: Option<PlacedStation>,
+    /// The flap behind the main wing in the station plane (gap-overlap stage).
+    pub flap_behind_wing: Option<FlapBehindWing>,
     /// Gap and overlap at the flap settings (gap-overlap stage).
     pub flap_position: Option<FlapPositionReport>,
     /// Fairing depth (fairing stage).
@@ -66,6 +69,7 @@ pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationRecord>> {
                     flap: station.flap.clone(),
                     mechanism,
                     placed: None,
+                    flap_behind_wing: None,
                     flap_position: None,
                     fairing: None,
                     kinematics: None,

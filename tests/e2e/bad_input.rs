@@ -479,3 +479,26 @@ fn spar_web_outside_the_section() {
         &["structure.spars[0].chord_fraction = 1e-300: a 6.0 mm web centred there leaves the 1.200 m section"],
     );
 }
+
+#[test]
+fn screws_on_one_torque_tube_turn_the_same_number_of_times() {
+    // A shorter crank at the outer station gives a shorter stroke for the same lead: on one
+    // torque tube the stations would not finish together (found in review: the whole-wing
+    // stages pose every station at the same fraction of its stroke).
+    let scene = outer_station_with("crank_length_m = 0.240", "crank_length_m = 0.230");
+    assert_rejected(
+        &scene,
+        &["station[1].mechanism: its screw turns", "times over the deployment"],
+    );
+}
+
+#[test]
+fn a_flap_name_cannot_clash_with_a_stations_urdf_links() {
+    // Found in review: a flap named after a station's links failed in the URDF stage.
+    let scene =
+        default_with("name = \"flap\"", "name = \"inner_flap\"").replace("flap = \"flap\"", "flap = \"inner_flap\"");
+    assert_rejected(
+        &scene,
+        &["flap[0].name = \"inner_flap\": clashes with station \"inner\""],
+    );
+}

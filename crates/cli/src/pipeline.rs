@@ -112,6 +112,7 @@ pub fn design_with_progress(
     let mut interference_report = None;
 
     let mut records = stages.run("synthesis", || mechanisms::synthesise_all(scene))?;
+    warnings.extend(mechanisms::flap_agreement(&records));
     let mut meshed = Vec::new();
     let mut tube_path_ac: Vec<nalgebra::Point3<f64>> = Vec::new();
     if let Some(wing) = &scene.wing {

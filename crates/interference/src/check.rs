@@ -20,7 +20,8 @@ pub struct Assembly {
     /// Names of fixed parts the mechanism links are allowed to cross: the wing skin is cut
     /// locally and the links sit in a fairing (measured by the fairing depth instead).
     pub skins: Vec<String>,
-    /// The flap, turning about its hinge line.
+    /// The flaps' meshes, each moving with its carrying station's flap displacement; a part
+    /// is named after its flap.
     pub flaps: Vec<Part>,
     /// Per station: every solid of the mechanism's bodies, with its role.
     pub stations: Vec<StationParts>,
@@ -118,9 +119,14 @@ type PairJob<'a> = (Option<String>, &'a Part, &'a Part);
 /// The pairs to sweep, and the pairs left out with the reason.
 fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
     let mut jobs: Vec<PairJob<'_>> = Vec::new();
-    for flap in &assembly.flaps {
+    for (i, flap) in assembly.flaps.iter().enumerate() {
         for fixed in &assembly.fixed {
             jobs.push((None, flap, fixed));
+        }
+        // Neighbouring flaps deflect by their own amounts, and swept hinge lines move
+        // their side faces spanwise.
+        for other in &assembly.flaps[i + 1..] {
+            jobs.push((None, flap, other));
         }
     }
     let structure: Vec<&Part> = assembly
@@ -159,9 +165,16 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
                 skip(&part.part, skin, reason);
             }
         }
-        // Against the flap: not the flap's own body, and not what is pinned to it.
+        // Against the flap it carries: not the flap's own body, and not what is pinned to
+        // it. Against every other flap: everything.
         let flap_body = station.parts.iter().find(|p| p.role == BodyRole::Flap).map(|p| p.body);
         for flap in &assembly.flaps {
+            if station.flap.as_deref() != Some(flap.name.as_str()) {
+                for part in &station.parts {
+                    jobs.push((name(), &part.part, flap));
+                }
+                continue;
+            }
             for part in station.parts.iter().filter(|p| Some(p.body) != flap_body) {
                 match flap_body.and_then(|f| station.joint_between(f, part.body)) {
                     None => jobs.push((name(), &part.part, flap)),

@@ -51,6 +51,9 @@ pub struct StationPart {
 pub struct StationParts {
     /// Station name.
     pub station: String,
+    /// The flap the station carries (its flap body is that flap); parts are checked
+    /// against every other flap without waivers.
+    pub flap: Option<String>,
     /// Every solid of every body.
     pub parts: Vec<StationPart>,
     /// Contacts by design, from the joints.
@@ -169,6 +172,7 @@ pub fn flap_part(
 /// A0 on the hinge axis, z along it).
 pub fn station_parts(
     station: &str,
+    flap: Option<&str>,
     aircraft_from_station: &Isometry3<f64>,
     mechanism: &Arc<dyn FlapMechanism>,
 ) -> Result<StationParts> {
@@ -246,6 +250,7 @@ pub fn station_parts(
     }
     Ok(StationParts {
         station: station.to_string(),
+        flap: flap.map(str::to_string),
         parts,
         declared,
         joined,

@@ -11,7 +11,7 @@ fn thesis_parts() -> (Arc<dyn FlapMechanism>, StationParts) {
     let track: Arc<dyn FlapMechanism> =
         Arc::new(CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study()).unwrap());
     // Station frame = aircraft frame, so the plane is z = 0.
-    let parts = station_parts("st", &Isometry3::identity(), &track).unwrap();
+    let parts = station_parts("st", Some("flap"), &Isometry3::identity(), &track).unwrap();
     (track, parts)
 }
 

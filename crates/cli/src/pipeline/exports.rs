@@ -204,9 +204,11 @@ pub fn write_svgs(
                 (!s.polygons.is_empty()).then_some(s)
             })
             .collect();
+        // The station's own flap moves with its mechanism; a neighbouring flap the plane cuts
+        // stays drawn where it is stowed.
         let flap_outline: Vec<Vec<Point2<f64>>> = sections
             .iter()
-            .filter(|s| matches!(s.kind, PartStyle::Flap))
+            .filter(|s| matches!(s.kind, PartStyle::Flap) && record.flap.as_deref() == Some(s.part.as_str()))
             .flat_map(|s| s.polygons.clone())
             .collect();
         // The flap's settings (validation keeps them within the rotation range); a station

@@ -120,6 +120,9 @@ pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) ->
 /// line) of the wing's sections, from its start to its end and at every section between:
 /// straight segments between the sections follow the wing's panels, so a change of sweep,
 /// dihedral or twist carries the tube along.
+/// The shortest tube segment, m (the scene's `MIN_LENGTH_M`).
+const MIN_LENGTH_M: f64 = crate::scene::limits::MIN_LENGTH_M;
+
 fn tube_path_on_the_wing(
     scene: &Scene,
     wing: &WingScene,
@@ -133,8 +136,11 @@ fn tube_path_on_the_wing(
         .y_end_m
         .unwrap_or_else(|| crate::scene::default_tube_end(scene, wing));
     let depth = tube.depth_below_chord_fraction.unwrap_or(0.0);
+    // Sections closer to an end than the shortest segment would give a sliver the tube's
+    // mesher rejects: the end stands for them.
+    let inside = |y: f64| y > start + MIN_LENGTH_M && y < end - MIN_LENGTH_M;
     let ys = std::iter::once(start)
-        .chain(wing.sections.iter().map(|s| s.y_m).filter(|&y| y > start && y < end))
+        .chain(wing.sections.iter().map(|s| s.y_m).filter(|&y| inside(y)))
         .chain(std::iter::once(end));
     ys.map(|y| {
         let section = model.section_at(y)?;

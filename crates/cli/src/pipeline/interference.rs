@@ -56,7 +56,7 @@ pub fn check(scene: &Scene, meshed: &[MeshPart], records: &[StationRecord]) -> R
         .iter()
         .map(|r| {
             let frame = placed(r)?.station.frame.aircraft_from_station();
-            Ok(station_parts(&r.station, frame, &r.mechanism)?)
+            Ok(station_parts(&r.station, r.flap.as_deref(), frame, &r.mechanism)?)
         })
         .collect::<Result<Vec<_>>>()?;
     let settings = &scene.interference;
@@ -91,10 +91,13 @@ pub fn fairing_depths(
         let Some(station) = &record.placed else {
             continue;
         };
+        // The wing and every flap cut by the plane bound the fairing; the station's own flap
+        // gives the chord the depth is a share of.
         let is_flap = |name: &str| flap_names.iter().any(|f| f == name);
+        let own_flap = |name: &str| record.flap.as_deref() == Some(name);
         let contour = station.polygons_of(|name| name == "wing" || is_flap(name));
         let flap_chord_m = station
-            .polygons_of(is_flap)
+            .polygons_of(own_flap)
             .iter()
             .flatten()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {

@@ -95,38 +95,89 @@ pub const MAX_CONDITION_NUMBER: f64 = 1e8;
 /// Smallest distance to a toggle position at the stroke ends, deg.
 pub const MIN_DISTANCE_TO_TOGGLE_DEG: f64 = 1.0;
 
-/// One torque tube turns every actuator at one speed: a screw jack turns at nut speed /
-/// lead, so every station's must agree (the report's drive speed would otherwise be one
-/// station's, and the others' nuts would run at speeds the drive cannot give).
+/// One torque tube turns every actuator together, so the stations' deployments must run
+/// in step: for screw jacks, every screw turns at one speed (nut speed / lead equal) and
+/// the same number of turns over the deployment (stroke / lead equal), so that every
+/// station is at the same fraction of its stroke at every shaft angle, as the whole-wing
+/// stages assume (the drive fraction of `flapwright_mechanism::seam`).
 fn one_drive_speed(mechanisms: &[StationRecord]) -> Vec<Problem> {
-    let turns = |m: &StationRecord| {
+    let screw = |m: &StationRecord| {
         let Actuator::ScrewJack {
             screw,
             nominal_speed_mps,
             ..
         } = m.mechanism.actuator();
-        nominal_speed_mps / screw.lead_m
+        let turns = m.mechanism.input_range().travel().abs() / screw.lead_m;
+        (nominal_speed_mps / screw.lead_m, turns)
     };
     let Some(first) = mechanisms.first() else {
         return Vec::new();
     };
-    mechanisms
-        .iter()
-        .enumerate()
-        .skip(1)
-        .filter(|(_, m)| (turns(m) - turns(first)).abs() > 1e-9 * turns(first))
-        .map(|(i, m)| {
-            Problem::new(
-                format!("station[{i}].mechanism"),
+    let (first_speed, first_turns) = screw(first);
+    let differ = |a: f64, b: f64| (a - b).abs() > 1e-6 * b.abs();
+    let mut problems = Vec::new();
+    for m in &mechanisms[1..] {
+        let (speed, turns) = screw(m);
+        let path = format!("station[{}].mechanism", m.index);
+        if differ(speed, first_speed) {
+            problems.push(Problem::new(
+                path.clone(),
                 format!(
-                    "its screw turns {:.4} rev/s at its nominal nut speed, station {}'s {:.4} rev/s; one torque tube drives every screw at one speed: make nut_speed_mps / screw_lead_m equal",
-                    turns(m),
-                    first.station,
-                    turns(first)
+                    "its screw turns {speed:.4} rev/s at its nominal nut speed, station {}'s {first_speed:.4} rev/s; one torque tube drives every screw at one speed: make nut_speed_mps / screw_lead_m equal",
+                    first.station
                 ),
-            )
-        })
-        .collect()
+            ));
+        }
+        if differ(turns, first_turns) {
+            problems.push(Problem::new(
+                path,
+                format!(
+                    "its screw turns {turns:.3} times over the deployment, station {}'s {first_turns:.3}; one torque tube turns every screw together, so the stations would not finish together: make the nut stroke / screw_lead_m equal",
+                    first.station
+                ),
+            ));
+        }
+    }
+    problems
+}
+
+/// Largest disagreement in flap deflection (deg) between stations of one flap part way
+/// through the deployment that passes without a warning.
+pub const FLAP_DEFLECTION_AGREEMENT_DEG: f64 = 0.05;
+
+/// Warnings where the stations of one rigid flap deflect it differently part way through
+/// the deployment (they agree at both ends by validation; the flap follows its first
+/// station, so the others' attachments would be strained).
+pub fn flap_agreement(records: &[StationRecord]) -> Vec<String> {
+    let mut warnings = Vec::new();
+    for (i, first) in records.iter().enumerate() {
+        let Some(flap) = &first.flap else {
+            continue;
+        };
+        if records[..i].iter().any(|r| r.flap.as_ref() == Some(flap)) {
+            continue;
+        }
+        let deflection = |r: &StationRecord, fraction: f64| {
+            let range = r.mechanism.input_range();
+            r.mechanism.deflection_at_input(range.at_fraction(fraction)).ok()
+        };
+        for other in records[i + 1..].iter().filter(|r| r.flap.as_ref() == Some(flap)) {
+            let worst = (1..8)
+                .filter_map(|k| {
+                    let fraction = k as f64 / 8.0;
+                    Some((deflection(other, fraction)? - deflection(first, fraction)?).abs())
+                })
+                .fold(0.0_f64, f64::max)
+                .to_degrees();
+            if worst > FLAP_DEFLECTION_AGREEMENT_DEG {
+                warnings.push(format!(
+                    "flap {flap}: stations {} and {} deflect it by up to {worst:.2} deg differently part way through the deployment (more than {FLAP_DEFLECTION_AGREEMENT_DEG} deg); the flap is rigid and follows station {}",
+                    first.station, other.station, first.station
+                ));
+            }
+        }
+    }
+    warnings
 }
 
 /// Dimensions that synthesise but give a degenerate mechanism, for any kind: a singular or

@@ -369,7 +369,23 @@ impl Checker<'_> {
     /// Flaps and spars are parts beside "wing" and "torque-tube": each part's STL file is
     /// named after it, so no two may share a name.
     fn distinct_part_names(&mut self, scene: &Scene) {
-        let reserved = ["wing", "torque-tube"];
+        let reserved = ["wing", "torque-tube", "wing_structure"];
+        // A flap's URDF link sits beside the stations' links `<station>_...`.
+        for (i, flap) in scene.flap.iter().enumerate() {
+            if let Some(station) = scene
+                .station
+                .iter()
+                .find(|s| flap.name == s.name || flap.name.starts_with(&format!("{}_", s.name)))
+            {
+                self.fail(
+                    format!("flap[{i}].name"),
+                    format!(
+                        "= \"{}\": clashes with station \"{}\" (its URDF links are named \"{}\" and \"{}_...\")",
+                        flap.name, station.name, station.name, station.name
+                    ),
+                );
+            }
+        }
         for (i, spar) in scene.structure.spars.iter().enumerate() {
             if reserved.contains(&spar.name.as_str()) || scene.flap.iter().any(|f| f.name == spar.name) {
                 self.fail(

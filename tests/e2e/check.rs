@@ -156,3 +156,40 @@ fn bad_input_exits_2() {
     assert_eq!(output.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&output.stderr).contains("structure.torque_tube.radius_m"));
 }
+
+#[test]
+fn a_second_flap_is_checked_against_the_first_and_against_the_other_stations() {
+    // The default wing with an outboard flap on its own station (found in review: flaps
+    // were never checked against each other, and a station's waivers for its own flap
+    // covered every flap).
+    let text = default_scene_text();
+    let spars = text.find("[[structure.spars]]").unwrap();
+    let flap = "[[flap]]\nname = \"outboard-flap\"\ny_inboard_m = 3.1\ny_outboard_m = 4.6\n\
+                chord_fraction_inboard = 0.27\nchord_fraction_outboard = 0.27\nside_gap_m = 0.040\n\n\
+                [flap.hinge]\nchord_fraction = 0.80\ndepth_below_chord_fraction = 0.17\n\n";
+    let text = format!("{}{flap}{}", &text[..spars], &text[spars..]);
+    let loads = text.find("[loads]").unwrap();
+    let outer = text.find("[[station]]\nname = \"outer\"").unwrap();
+    let station = text[outer..loads]
+        .replace("name = \"outer\"", "name = \"outboard\"")
+        .replace("flap = \"flap\"", "flap = \"outboard-flap\"")
+        .replace("axis_offset_m = 1.90", "axis_offset_m = 0.60");
+    let scene = format!("{}{station}{}", &text[..loads], &text[loads..]);
+    let (dir, output) = check(&scene);
+    assert!(
+        matches!(output.status.code(), Some(0 | 1)),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("flapwright-check/report.json")).unwrap())
+            .unwrap();
+    let pairs = report["interference"]["pairs"].as_array().unwrap();
+    let checked = |a: &str, b: &str| pairs.iter().any(|p| p["part_a"] == a && p["part_b"] == b);
+    assert!(checked("flap", "outboard-flap"), "the flaps against each other");
+    for part in ["outer.fitting-F", "outer.nut", "outer.outer-track"] {
+        assert!(checked(part, "outboard-flap"), "{part} against the other flap");
+        assert!(!checked(part, "flap"), "{part} is on or pinned to its own flap");
+    }
+    assert!(checked("outboard.screw", "outboard-flap") && checked("outboard.screw", "flap"));
+}

@@ -240,10 +240,46 @@ pub enum Error {
     /// A URDF robot needs at least one station.
     #[error("a URDF robot needs at least one station")]
     NoStations,
+    /// A kind cannot be synthesised for its precision positions: which defect, and the
+    /// numbers in words (mm and degrees).
+    #[error("{kind}: {defect}: {detail}")]
+    Synthesis {
+        /// The kind's scene name.
+        kind: &'static str,
+        /// What went wrong.
+        defect: SynthesisDefect,
+        /// The numbers behind it.
+        detail: String,
+    },
     /// urdf-rs could not serialise the robot (its error text; the type is opaque).
     #[error("urdf-rs could not write the robot: {message}")]
     UrdfWrite {
         /// urdf-rs's message.
         message: String,
     },
+}
+
+/// Why a kind cannot move its flap through the precision positions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, thiserror::Error)]
+#[serde(rename_all = "kebab-case")]
+pub enum SynthesisDefect {
+    /// The positions need more than the kind has (a hinge for a pure translation, a
+    /// circle through three points on one line).
+    #[error("no real solution")]
+    NoRealSolution,
+    /// The mechanism would have to change assembly branch between positions, or reaches
+    /// them out of order.
+    #[error("branch or order defect")]
+    BranchOrOrder,
+    /// The mechanism passes a toggle (a transmission angle below the minimum) inside the
+    /// deployment.
+    #[error("toggle inside the deployment")]
+    Toggle,
+    /// A fixed pivot or the hinge lies where no support can hold it (inside the wing or
+    /// flap section, or outside the fairing region).
+    #[error("pivot outside the allowed region")]
+    PivotOutsideRegion,
+    /// A precision position is missing or not finite.
+    #[error("precision positions missing")]
+    MissingPositions,
 }

@@ -72,11 +72,17 @@
 
 mod angle;
 mod deployment;
+pub mod dropped_hinge;
 mod error;
+pub mod flap_load;
+pub mod four_bar;
 mod kinetostatics;
 pub mod landing_gear;
+pub mod outline;
 pub mod planar;
 mod planar_solve;
+pub mod precision;
+pub mod rocker_drive;
 mod screw_jack;
 pub mod seam;
 mod slider_crank;
@@ -89,10 +95,15 @@ pub mod urdf;
 
 pub use angle::{four_times_triangle_area, guarded_acos, ACOS_ROUNDING_TOLERANCE, DEFAULT_TOGGLE_TOLERANCE_RAD};
 pub use deployment::{sweep_deployment, Deployment, DeploymentSample, DeploymentStop, FlapGapOverlap};
-pub use error::{Error, Result};
+pub use dropped_hinge::{DroppedHinge, DroppedHingeSpec};
+pub use error::{Error, Result, SynthesisDefect};
+pub use flap_load::{FlapMass, LinkHardware};
+pub use four_bar::{FourBar, FourBarSpec};
 pub use kinetostatics::{ExternalMoment, Forces, LoadCase};
+pub use outline::StationOutline;
 pub use planar_solve::PlanarSolution;
-pub use screw_jack::{ScrewJack, ScrewTorques};
+pub use precision::PrecisionPosition;
+pub use screw_jack::{ScrewDrive, ScrewJack, ScrewTorques};
 pub use seam::FlapMechanism;
 pub use slider_crank::{InvertedSliderCrank, SliderCrankState};
 pub use sweep::{JointReactions, Sweep, SweepSample, SweepStop};

@@ -77,6 +77,37 @@ impl ScrewJack {
     }
 }
 
+/// How a synthesised kind's screw jack is chosen: its thread's radius and friction, and the
+/// drive it shares with the wing's other stations. Every screw on one torque tube turns
+/// together, so each station's lead is its stroke over the common number of turns and its
+/// nut speed its stroke over the common deployment time (`003_...` section 3: "a screw
+/// pitch (linear actuator) is computed"); the screws then all turn at turns / time.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ScrewDrive {
+    /// Mean thread radius (m).
+    pub mean_radius_m: f64,
+    /// Thread friction coefficient.
+    pub friction_coefficient: f64,
+    /// Screw turns over the deployment.
+    pub turns: f64,
+    /// Deployment time at the nominal drive speed (s).
+    pub deployment_time_s: f64,
+}
+
+impl ScrewDrive {
+    /// The screw and nominal nut speed (m/s) for a stroke of `travel_m`.
+    pub fn screw_for(&self, travel_m: f64) -> (ScrewJack, f64) {
+        (
+            ScrewJack {
+                lead_m: travel_m.abs() / self.turns,
+                mean_radius_m: self.mean_radius_m,
+                friction_coefficient: self.friction_coefficient,
+            },
+            travel_m.abs() / self.deployment_time_s,
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -6,6 +6,7 @@ mod landing_gear;
 mod planar;
 mod properties;
 mod seam;
+mod synthesised;
 mod thesis_appendix_c;
 mod thesis_tables;
 mod toggle;

@@ -79,6 +79,18 @@ pub enum Error {
         /// Wing nose x less flap trailing edge x, station frame (m).
         chord_m: f64,
     },
+    /// No flap position gives the asked gap at this deflection and overlap.
+    #[error("no flap position behind the wing gives a gap of {gap_m} m with an overlap of {overlap_m} m at {deflection_deg} deg (the smallest gap reachable is {smallest_gap_m} m)")]
+    GapUnreachable {
+        /// Asked gap (m).
+        gap_m: f64,
+        /// Asked overlap (m).
+        overlap_m: f64,
+        /// Deflection (deg).
+        deflection_deg: f64,
+        /// Smallest gap found over the search (m).
+        smallest_gap_m: f64,
+    },
     /// A row of the boundary CSV could not be read.
     #[error("boundary CSV line {line}: column {column} is missing or not a number")]
     BoundaryCsvField {

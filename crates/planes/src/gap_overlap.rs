@@ -38,6 +38,10 @@ use crate::section::{polygons_contain, signed_area_m2};
 /// by under 20 deg even with twist and skew; cove walls face aft (about 90 deg).
 pub const UPPER_SKIN_MAX_NORMAL_TILT_DEG: f64 = 45.0;
 
+/// Height resolution (m) of [`FlapBehindWing::displacement_for_setting`]: the gap is met
+/// to this, well inside the 1e-9 m the mechanisms meet their precision positions to.
+pub const SETTING_HEIGHT_TOLERANCE_M: f64 = 1e-12;
+
 /// Gap and overlap at one flap rotation.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct GapOverlap {
@@ -140,6 +144,66 @@ impl FlapBehindWing {
     /// Gap and overlap with the flap turned by `rotation_rad` about A0.
     pub fn at_rotation(&self, rotation_rad: f64) -> GapOverlap {
         self.at_displacement(&Isometry2::rotation(rotation_rad))
+    }
+
+    /// The flap's planar displacement from stowed that gives deflection `deflection_rad`,
+    /// gap `gap_m` and overlap `overlap_m` (`003_...` Fig. 3: deflect, then translate the
+    /// section to the gap and overlap): the precision position of a flap setting in this
+    /// plane. The overlap fixes the translation along x in closed form; the gap is then a
+    /// continuous function of the height, searched upwards from a flap a chord below the
+    /// trailing edge to the first height that closes the gap to `gap_m` (the flap below the
+    /// lip, not above it), and bisected to [`SETTING_HEIGHT_TOLERANCE_M`].
+    ///
+    /// Errors: [`Error::NotFinite`] for a non-finite argument, [`Error::GapUnreachable`]
+    /// when no height gives the gap (an overlap so negative that the flap's nose stays
+    /// farther than `gap_m` from the lip).
+    pub fn displacement_for_setting(&self, deflection_rad: f64, gap_m: f64, overlap_m: f64) -> Result<Isometry2<f64>> {
+        finite("flap setting deflection (rad)", deflection_rad)?;
+        finite("flap setting gap (m)", gap_m)?;
+        finite("flap setting overlap (m)", overlap_m)?;
+        let turn = Isometry2::rotation(deflection_rad);
+        let nose_x = self
+            .flap_stowed
+            .iter()
+            .flatten()
+            .map(|p| (turn * p).x)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let shift_x = overlap_m - (nose_x - self.trailing_edge.x);
+        let placed = |height: f64| Isometry2::new(nalgebra::Vector2::new(shift_x, height), deflection_rad);
+        let excess = |height: f64| self.at_displacement(&placed(height)).gap_m - gap_m;
+        // Heights from a chord below to a chord above the stowed flap, in 1 %-chord steps:
+        // the gap varies by at most the step between neighbours, so no crossing is missed
+        // wider than a step, and the first one from below is the flap under the lip.
+        let steps = 200;
+        let (low, high) = (-self.chord_m, self.chord_m);
+        let mut smallest = f64::INFINITY;
+        let mut below = low;
+        let mut below_excess = excess(low);
+        for k in 1..=steps {
+            let height = low + (high - low) * k as f64 / steps as f64;
+            let here = excess(height);
+            smallest = smallest.min(here + gap_m);
+            if below_excess > 0.0 && here <= 0.0 {
+                let (mut lo, mut hi) = (below, height);
+                while hi - lo > SETTING_HEIGHT_TOLERANCE_M {
+                    let mid = 0.5 * (lo + hi);
+                    if excess(mid) > 0.0 {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                return Ok(placed(0.5 * (lo + hi)));
+            }
+            below = height;
+            below_excess = here;
+        }
+        Err(Error::GapUnreachable {
+            gap_m,
+            overlap_m,
+            deflection_deg: deflection_rad.to_degrees(),
+            smallest_gap_m: smallest,
+        })
     }
 
     /// Gap and overlap with the flap moved by `displacement` from stowed (station frame):

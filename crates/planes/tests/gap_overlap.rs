@@ -164,3 +164,38 @@ fn a_general_displacement_moves_the_flap_as_a_rigid_body() {
         );
     }
 }
+
+/// The precision position of a flap setting is its inverse: measured back, it gives the
+/// asked deflection, gap and overlap; the flap sits under the lip (its centre below it), and
+/// an overlap that leaves the nose too far from the lip is a typed error.
+#[test]
+fn setting_displacement_meets_the_asked_gap_and_overlap() {
+    let measure = FlapBehindWing::new(&wing(0.5, 0.0), &disc(Point2::new(0.35, -0.1), 0.15, 360)).unwrap();
+    let chord = measure.chord_m();
+    for (deflection_deg, gap_percent, overlap_percent) in
+        [(0.0, 1.0, 2.0), (15.0, 0.0, 3.0), (35.0, 2.0, 0.0), (40.0, 1.5, -0.5)]
+    {
+        let (gap, overlap) = (gap_percent * chord / 100.0, overlap_percent * chord / 100.0);
+        let moved = measure
+            .displacement_for_setting(f64::to_radians(deflection_deg), gap, overlap)
+            .unwrap();
+        let back = measure.at_displacement(&moved);
+        assert!((back.rotation_rad - deflection_deg.to_radians()).abs() < 1e-12);
+        assert!(
+            (back.gap_m - gap).abs() < 1e-9,
+            "{deflection_deg}: gap {} for {gap}",
+            back.gap_m
+        );
+        assert!((back.overlap_m - overlap).abs() < 1e-12);
+        let centre = moved * Point2::new(0.35, -0.1);
+        assert!(centre.y < measure.trailing_edge().y, "the flap hangs under the lip");
+    }
+    assert!(matches!(
+        measure.displacement_for_setting(0.5, 0.001, -0.2),
+        Err(Error::GapUnreachable { .. })
+    ));
+    assert!(matches!(
+        measure.displacement_for_setting(f64::NAN, 0.0, 0.0),
+        Err(Error::NotFinite { .. })
+    ));
+}

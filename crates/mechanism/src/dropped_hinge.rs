@@ -1,0 +1,519 @@
+//! The dropped hinge (Zaccai, Bertels & Vos `003_...` section 3, Figs. 6-7): the flap turns
+//! about one fixed hinge below the wing, carried by a hinged structure (two arms from the
+//! hinge to the flap's forward and aft attachments), the hinge held by a truss to the lower
+//! skin, and a screw jack from a mount in the wing pushes the forward arm round.
+//!
+//! Synthesis from two precision positions: the hinge is the pole of the flap's planar
+//! displacement stowed -> landing ([`pole`]), so both are met exactly; take-off is then
+//! wherever the turn about the hinge puts the flap at the take-off deflection, and its miss
+//! is reported ([`DroppedHingeSynthesis::takeoff_miss_m`]; gap and overlap misses by the
+//! caller that measures them).
+//!
+//! Kinematics: the flap turns by ψ(s) about the hinge H, the drive being a
+//! [`RockerDrive`] (pivot H, mount B0, attachment P on the forward arm). Statics of the flap:
+//! moments about H give the screw force F (along B0 -> P, positive pushing the flap):
+//! F = -M_H / ((P - H) x u), u = (P - B0)/|P - B0|, M_H the applied wrench's moment about H;
+//! the hinge carries R_H = -(F u + W). Virtual work, independently: F = -(W · dD/ds + C dψ/ds)
+//! with dψ/ds from the drive's triangle (not from the cross product above).
+
+use nalgebra::{Isometry2, Point2, Translation2, Unit, Vector2};
+use serde::Serialize;
+
+use crate::error::{Error, Result, SynthesisDefect};
+use crate::flap_load::{FlapMass, FlapWrench, LinkHardware};
+use crate::kinetostatics::LoadCase;
+use crate::outline::{inside, StationOutline};
+use crate::precision::{pole, PrecisionPosition};
+use crate::rocker_drive::{cross, mount_square_at_mid_travel, turn_about, RockerDrive};
+use crate::screw_jack::{ScrewDrive, ScrewJack};
+use crate::seam::{
+    Actuator, Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd,
+    JointGeometry, Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound,
+};
+
+const KIND: &str = "dropped-hinge";
+
+/// The designer's choices for a dropped hinge at one station (station frame, m).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DroppedHingeSpec {
+    /// The landing setting (the second precision position; stowed is the first).
+    pub landing: PrecisionPosition,
+    /// The take-off setting, to report its miss (not a precision position).
+    pub takeoff: Option<PrecisionPosition>,
+    /// The hinged structure's attachments on the flap, forward and aft (stowed).
+    pub flap_attachments: [Point2<f64>; 2],
+    /// Where the screw takes hold of the forward arm: 0 at the forward attachment, 1 at the
+    /// hinge (`003_...`: "between the forward flap attachment and the lower mechanism hinge").
+    pub actuator_attachment_fraction: f64,
+    /// The screw's mount; `None`: square to the arm at mid-travel, `actuator_standoff_m`
+    /// ahead of it ([`mount_square_at_mid_travel`]).
+    pub actuator_mount: Option<Point2<f64>>,
+    /// Distance from the attachment's mid-travel position to a default mount (m).
+    pub actuator_standoff_m: f64,
+    /// The truss's two attachments on the wing (stowed, on the lower skin).
+    pub support_points: [Point2<f64>; 2],
+    /// The flap share this station carries.
+    pub flap_mass: FlapMass,
+    /// The screw's thread and the shared drive.
+    pub screw_drive: ScrewDrive,
+    /// Smallest transmission angle of the drive over the deployment (rad).
+    pub min_transmission_angle_rad: f64,
+    /// Solid sizes.
+    pub hardware: LinkHardware,
+    /// The station's sections: the hinge must lie outside the wing.
+    pub outline: StationOutline,
+}
+
+/// What synthesis computed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DroppedHingeSynthesis {
+    /// The hinge H: the pole of stowed -> landing (m).
+    pub hinge_m: Point2<f64>,
+    /// The screw's mount B0 (m).
+    pub actuator_mount_m: Point2<f64>,
+    /// The screw's attachment P on the forward arm, stowed (m).
+    pub actuator_attachment_m: Point2<f64>,
+    /// Stroke |P - B0| stowed and at landing (m).
+    pub stroke_m: [f64; 2],
+    /// Smallest transmission angle of the drive over the deployment (rad, sampled).
+    pub min_transmission_angle_rad: f64,
+    /// Largest distance (m) between where the turn about H puts a flap attachment at the
+    /// take-off deflection and where the take-off setting wants it (None without one).
+    pub takeoff_miss_m: Option<f64>,
+    /// Largest distance (m) between the turn about H and the landing setting at the flap
+    /// attachments: rounding only, the hinge being the pole.
+    pub landing_miss_m: f64,
+    /// The screw chosen from the drive: lead, radius, friction.
+    pub screw: ScrewJack,
+    /// Screw length (m): 10 % beyond the longest stroke.
+    pub screw_length_m: f64,
+    /// Nominal nut speed (m/s).
+    pub nominal_speed_mps: f64,
+}
+
+/// A dropped hinge synthesised for one station.
+#[derive(Debug, Clone)]
+pub struct DroppedHinge {
+    spec: DroppedHingeSpec,
+    synthesis: DroppedHingeSynthesis,
+    drive: RockerDrive,
+    bodies: Vec<Body>,
+    joints: Vec<Joint>,
+}
+
+const FLAP: usize = 0;
+const SCREW: usize = 1;
+const NUT: usize = 2;
+const SUPPORT: usize = 3;
+
+/// Samples of the transmission-angle check over the deployment.
+const TRANSMISSION_SAMPLES: usize = 64;
+
+fn failure(defect: SynthesisDefect, detail: String) -> Error {
+    Error::Synthesis {
+        kind: KIND,
+        defect,
+        detail,
+    }
+}
+
+fn mm(p: Point2<f64>) -> String {
+    format!("({:.1}, {:.1}) mm", p.x * 1e3, p.y * 1e3)
+}
+
+impl DroppedHinge {
+    /// Synthesises the hinge, drive and solids. Errors ([`Error::Synthesis`]): a landing
+    /// rotation too small for a pole (no real solution), a hinge inside the wing section
+    /// (pivot outside the region), a drive that passes a toggle or drops below the
+    /// minimum transmission angle (toggle).
+    pub fn synthesise(spec: DroppedHingeSpec) -> Result<Self> {
+        let landing = spec.landing;
+        if landing.deflection_rad.abs() < 1f64.to_radians() || landing.deflection_rad.is_nan() {
+            return Err(failure(
+                SynthesisDefect::NoRealSolution,
+                format!(
+                    "a landing deflection of {:.3} deg has no hinge to turn about",
+                    landing.deflection_rad.to_degrees()
+                ),
+            ));
+        }
+        let hinge = pole(&landing.flap).ok_or_else(|| {
+            failure(
+                SynthesisDefect::NoRealSolution,
+                "the landing displacement has no pole".into(),
+            )
+        })?;
+        if inside(&spec.outline.wing, hinge) {
+            return Err(failure(
+                SynthesisDefect::PivotOutsideRegion,
+                format!(
+                    "the landing setting's pole {} lies inside the wing section: these deflection, gap and overlap need a hinge inside the wing box",
+                    mm(hinge)
+                ),
+            ));
+        }
+        let turn = landing.deflection_rad;
+        let at_landing = turn_about(hinge, turn);
+        let landing_miss_m = spec
+            .flap_attachments
+            .iter()
+            .map(|p| (at_landing * p - landing.flap * p).norm())
+            .fold(0.0, f64::max);
+        let takeoff_miss_m = spec.takeoff.map(|takeoff| {
+            let at = turn_about(hinge, takeoff.deflection_rad);
+            spec.flap_attachments
+                .iter()
+                .map(|p| (at * p - takeoff.flap * p).norm())
+                .fold(0.0, f64::max)
+        });
+        let forward = spec.flap_attachments[0];
+        let attachment = forward + (hinge - forward) * spec.actuator_attachment_fraction;
+        let mount = spec
+            .actuator_mount
+            .unwrap_or_else(|| mount_square_at_mid_travel(hinge, attachment, turn, spec.actuator_standoff_m));
+        let drive = RockerDrive::try_new(hinge, mount, attachment).map_err(|_| {
+            failure(
+                SynthesisDefect::Toggle,
+                format!(
+                    "the screw mount {}, the hinge {} and the screw's attachment {} lie on one line",
+                    mm(mount),
+                    mm(hinge),
+                    mm(attachment)
+                ),
+            )
+        })?;
+        let min_transmission = (0..=TRANSMISSION_SAMPLES)
+            .map(|k| {
+                let psi = turn * k as f64 / TRANSMISSION_SAMPLES as f64;
+                drive
+                    .state(drive.stroke_at(psi))
+                    .map_or(0.0, |state| state.transmission_angle_rad)
+            })
+            .fold(f64::INFINITY, f64::min);
+        if !drive.clear_of_toggles(turn, 1e-3) || min_transmission < spec.min_transmission_angle_rad {
+            return Err(failure(
+                SynthesisDefect::Toggle,
+                format!(
+                    "the screw's transmission angle falls to {:.1} deg (minimum {:.1} deg); move the actuator mount or its attachment",
+                    min_transmission.to_degrees(),
+                    spec.min_transmission_angle_rad.to_degrees()
+                ),
+            ));
+        }
+        let stroke_m = [drive.stroke_at(0.0), drive.stroke_at(turn)];
+        let (screw, nominal_speed_mps) = spec.screw_drive.screw_for(stroke_m[1] - stroke_m[0]);
+        let screw_length_m = 1.1 * stroke_m[0].max(stroke_m[1]);
+        let synthesis = DroppedHingeSynthesis {
+            hinge_m: hinge,
+            actuator_mount_m: mount,
+            actuator_attachment_m: attachment,
+            stroke_m,
+            min_transmission_angle_rad: min_transmission,
+            takeoff_miss_m,
+            landing_miss_m,
+            screw,
+            screw_length_m,
+            nominal_speed_mps,
+        };
+        let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &drive);
+        Ok(Self {
+            spec,
+            synthesis,
+            drive,
+            bodies,
+            joints,
+        })
+    }
+
+    /// The designer's choices.
+    pub fn spec(&self) -> &DroppedHingeSpec {
+        &self.spec
+    }
+
+    /// What synthesis computed.
+    pub fn synthesis(&self) -> &DroppedHingeSynthesis {
+        &self.synthesis
+    }
+}
+
+fn bodies_and_joints(
+    spec: &DroppedHingeSpec,
+    synthesis: &DroppedHingeSynthesis,
+    drive: &RockerDrive,
+) -> (Vec<Body>, Vec<Joint>) {
+    let hw = &spec.hardware;
+    let (h, b0, p) = (
+        synthesis.hinge_m,
+        synthesis.actuator_mount_m,
+        synthesis.actuator_attachment_m,
+    );
+    let [forward, aft] = spec.flap_attachments;
+    let turn = spec.landing.deflection_rad;
+    let capsule = |name: &str, from, to, radius_m| BodySolid {
+        name: name.into(),
+        shape: PlanarShape::Capsule { from, to, radius_m },
+        width_m: 0.0,
+        offset_m: 0.0,
+    };
+    // Per metre of stroke (module doc and RockerDrive::rotation_rate_bound).
+    let flap_rate = drive.rotation_rate_bound(turn);
+    let arm = (p - h).norm();
+    let shortest = synthesis.stroke_m[0].min(synthesis.stroke_m[1]);
+    let screw_rate = arm * flap_rate / shortest;
+    let direction = (p - b0).normalize();
+    let half_body = direction * (0.5 * hw.jack_body_length_m);
+    let screw_radius = synthesis.screw.mean_radius_m + 0.25 * synthesis.screw.lead_m;
+    let bodies = vec![
+        Body {
+            name: "flap".into(),
+            role: BodyRole::Flap,
+            solids: vec![
+                capsule("arm-forward", h, forward, hw.link_radius_m),
+                capsule("arm-aft", h, aft, hw.link_radius_m),
+            ],
+            speed_bound: SpeedBound {
+                reference: h,
+                linear_per_input: 0.0,
+                angular_per_input: flap_rate,
+            },
+        },
+        Body {
+            name: "screw".into(),
+            role: BodyRole::Actuator,
+            solids: vec![
+                capsule("screw", b0, b0 + direction * synthesis.screw_length_m, screw_radius),
+                capsule("jack-body", b0 - half_body, b0 + half_body, hw.jack_body_radius_m),
+            ],
+            speed_bound: SpeedBound {
+                reference: b0,
+                linear_per_input: 0.0,
+                angular_per_input: screw_rate,
+            },
+        },
+        Body {
+            name: "nut".into(),
+            role: BodyRole::Actuator,
+            solids: vec![capsule("nut", p, p, hw.nut_radius_m)],
+            speed_bound: SpeedBound {
+                reference: p,
+                linear_per_input: arm * flap_rate,
+                angular_per_input: screw_rate,
+            },
+        },
+        Body {
+            name: "support".into(),
+            role: BodyRole::Support,
+            solids: vec![
+                capsule("truss-forward", h, spec.support_points[0], hw.link_radius_m),
+                capsule("truss-aft", h, spec.support_points[1], hw.link_radius_m),
+            ],
+            speed_bound: SpeedBound::FIXED,
+        },
+    ];
+    let joint = |name: &str, description: &str, geometry, ends, touching: &[(&str, &str)]| Joint {
+        name: name.into(),
+        description: description.into(),
+        geometry,
+        ends,
+        touching_solids: touching.iter().map(|(x, y)| (x.to_string(), y.to_string())).collect(),
+    };
+    let joints = vec![
+        joint(
+            "H",
+            "the flap's hinge on the support truss",
+            JointGeometry::Revolute { at: h },
+            [JointEnd::Body(SUPPORT), JointEnd::Body(FLAP)],
+            &[("truss-forward", "arm-forward"), ("truss-aft", "arm-aft")],
+        ),
+        joint(
+            "P",
+            "nut pivoting on the forward arm",
+            JointGeometry::Revolute { at: p },
+            [JointEnd::Body(NUT), JointEnd::Body(FLAP)],
+            &[("nut", "arm-forward")],
+        ),
+        joint(
+            "nut-slide",
+            "nut riding along the screw",
+            JointGeometry::Prismatic {
+                origin: p,
+                direction: Unit::new_normalize(p - b0),
+            },
+            [JointEnd::Body(SCREW), JointEnd::Body(NUT)],
+            &[("screw", "nut")],
+        ),
+        joint(
+            "B0",
+            "screw turning in the jack body",
+            JointGeometry::Revolute { at: b0 },
+            [JointEnd::Ground, JointEnd::Body(SCREW)],
+            &[],
+        ),
+    ];
+    (bodies, joints)
+}
+
+impl FlapMechanism for DroppedHinge {
+    fn kind(&self) -> &'static str {
+        KIND
+    }
+
+    fn input_range(&self) -> InputRange {
+        InputRange {
+            quantity: InputQuantity::Stroke,
+            stowed: self.synthesis.stroke_m[0],
+            deployed: self.synthesis.stroke_m[1],
+        }
+    }
+
+    fn deflection_range_rad(&self) -> f64 {
+        self.spec.landing.deflection_rad
+    }
+
+    fn input_at_deflection(&self, deflection_rad: f64) -> Result<f64> {
+        Ok(self.drive.stroke_at(deflection_rad))
+    }
+
+    fn deflection_at_input(&self, input: f64) -> Result<f64> {
+        Ok(self.drive.state(input)?.rotation_rad)
+    }
+
+    /// The forward and aft attachments of the hinged structure.
+    fn flap_attachments(&self) -> Vec<NamedPoint> {
+        let [forward, aft] = self.spec.flap_attachments;
+        vec![
+            NamedPoint {
+                name: "F1",
+                position: forward,
+                fixed: false,
+            },
+            NamedPoint {
+                name: "F2",
+                position: aft,
+                fixed: false,
+            },
+        ]
+    }
+
+    fn bodies(&self) -> &[Body] {
+        &self.bodies
+    }
+
+    fn joints(&self) -> &[Joint] {
+        &self.joints
+    }
+
+    fn pose(&self, input: f64) -> Result<MechanismPose> {
+        let state = self.drive.state(input)?;
+        let (h, b0) = (self.synthesis.hinge_m, self.synthesis.actuator_mount_m);
+        let flap = turn_about(h, state.rotation_rad);
+        let screw_turn = self.drive.screw_rotation(state.attachment);
+        let p_stowed = self.synthesis.actuator_attachment_m;
+        let nut = Translation2::from(state.attachment.coords)
+            * Isometry2::rotation(screw_turn)
+            * Translation2::from(-p_stowed.coords);
+        let [forward, aft] = self.spec.flap_attachments;
+        let points = [
+            ("H", h, true),
+            ("B0", b0, true),
+            ("S1", self.spec.support_points[0], true),
+            ("S2", self.spec.support_points[1], true),
+            ("P", state.attachment, false),
+            ("F1", flap * forward, false),
+            ("F2", flap * aft, false),
+            ("D", flap * self.spec.flap_mass.centre_of_mass_stowed_m, false),
+        ]
+        .into_iter()
+        .map(|(name, position, fixed)| NamedPoint { name, position, fixed })
+        .collect();
+        Ok(MechanismPose {
+            deflection_rad: state.rotation_rad,
+            input,
+            bodies: vec![flap, turn_about(b0, screw_turn), nut, Isometry2::identity()],
+            flap,
+            points,
+        })
+    }
+
+    fn kinetostatics(&self, input: f64, load: &LoadCase) -> Result<Kinetostatics> {
+        let state = self.drive.state(input)?;
+        let h = self.synthesis.hinge_m;
+        let flap = turn_about(h, state.rotation_rad);
+        let fraction = self.input_range().fraction(input).clamp(0.0, 1.0);
+        let wrench = FlapWrench::new(&self.spec.flap_mass, &flap, load, fraction);
+        let p = state.attachment;
+        let u = (p - self.synthesis.actuator_mount_m).normalize();
+        let force = -wrench.moment_about(h) / cross(p - h, u);
+        let hinge_reaction: Vector2<f64> = -(u * force + wrench.force_n);
+        // Virtual work: F ds + W · dD + C dψ = 0 with dψ/ds from the drive's triangle.
+        let rate = state.rotation_per_stroke;
+        let d = wrench.at - h;
+        let centre_velocity = Vector2::new(-d.y, d.x) * rate;
+        let force_virtual_work = -wrench.power(centre_velocity, rate);
+        Ok(Kinetostatics {
+            input,
+            deflection_rad: state.rotation_rad,
+            actuator_load: force,
+            actuator_load_virtual_work: force_virtual_work,
+            reactions: vec![
+                ("B0".into(), force),
+                ("H".into(), hinge_reaction.norm()),
+                ("P".into(), force),
+            ],
+            transmission_angle_rad: state.transmission_angle_rad,
+            health: PoseHealth {
+                closure_residual_m: state.closure_residual_m,
+                jacobian_condition_number: state.jacobian_condition_number,
+                distance_to_toggle_rad: state.transmission_angle_rad,
+            },
+            screw_torques: Some(self.synthesis.screw.torques(force)),
+        })
+    }
+
+    fn drawing_notes(&self) -> DrawingNotes {
+        let s = &self.synthesis;
+        let h = s.hinge_m;
+        let forward = self.spec.flap_attachments[0];
+        let radius = (forward - h).norm();
+        let start = (forward - h).y.atan2((forward - h).x);
+        DrawingNotes {
+            summary: format!(
+                "dropped hinge with screw jack; stroke {:.1} -> {:.1} mm",
+                s.stroke_m[0] * 1e3,
+                s.stroke_m[1] * 1e3
+            ),
+            dimensions: vec![
+                ("H-P".into(), h, s.actuator_attachment_m),
+                ("B0-P".into(), s.actuator_mount_m, s.actuator_attachment_m),
+            ],
+            arcs: vec![(
+                "F1 about H".into(),
+                h,
+                radius,
+                start,
+                start + self.spec.landing.deflection_rad,
+            )],
+        }
+    }
+
+    fn details(&self) -> serde_json::Value {
+        serde_json::json!({
+            "flap_attachments_m": self.spec.flap_attachments,
+            "support_points_m": self.spec.support_points,
+            "hardware": self.spec.hardware,
+            "synthesis": self.synthesis,
+        })
+    }
+
+    fn actuator(&self) -> Actuator {
+        Actuator::ScrewJack {
+            screw: self.synthesis.screw,
+            screw_length_m: self.synthesis.screw_length_m,
+            nominal_speed_mps: self.synthesis.nominal_speed_mps,
+        }
+    }
+
+    fn warnings(&self) -> Vec<String> {
+        Vec::new()
+    }
+}

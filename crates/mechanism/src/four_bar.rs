@@ -1,0 +1,1027 @@
+//! The four-bar (Zaccai, Bertels & Vos `003_...` section 3, Figs. 6 and 8): the flap is the
+//! coupler of a four-bar linkage, held at a forward pivot A1 by the crank O1-A1 and at an aft
+//! pivot A2 by the rocker O2-A2; a screw jack from a mount B0 turns the crank about O1 (a
+//! [`RockerDrive`]); struts hold O1 and O2 to the wing's lower skin.
+//!
+//! Synthesis is motion generation for three precision positions (stowed, take-off,
+//! landing): for a moving pivot p, the fixed pivot is the centre of the circle through its
+//! three positions ([`circle_centre`]). The moving pivots are free choices: fixed by the
+//! designer, or searched on a grid under the flap for the smallest depth of the stowed
+//! mechanism below the section (a proxy for the fairing depth), subject to a minimum
+//! transmission angle, no branch change and the positions reached in order, fixed pivots
+//! below the wing and flap and outside them at every setting, and links that stay out of
+//! the wing section at the settings ([`FourBarSearch`] counts every rejection; a failed
+//! search reports the dominant one).
+//!
+//! Pose in closed form: the crank angle φ from the stroke (triangle B0 O1 C), A1 turned by φ
+//! about O1, A2 the intersection of the circles (A1, |A1A2|) and (O2, |O2A2|) on the stowed
+//! branch (the sign of (O2 - A1) x (A2 - A1)), the flap's displacement from A1 and A2.
+//!
+//! Statics: the rocker is a two-force member (force f along O2 -> A2 on the flap); moments
+//! of the flap about A1 give f, the flap's balance the pin force R1 at A1, the crank's
+//! moments about O1 the screw force F. Virtual work, independently, from the velocity
+//! analysis of the loop: ω_r k x (A2 - O2) - ω_f k x (A2 - A1) = v_A1.
+
+use nalgebra::{Isometry2, Point2, Translation2, Unit, Vector2};
+use serde::Serialize;
+
+use crate::error::{Error, Result, SynthesisDefect};
+use crate::flap_load::{FlapMass, FlapWrench, LinkHardware};
+use crate::kinetostatics::LoadCase;
+use crate::outline::{inside, segment_meets, vertical_span, StationOutline};
+use crate::precision::{circle_centre, PrecisionPosition};
+use crate::rocker_drive::{cross, mount_square_at_mid_travel, turn_about, RockerDrive};
+use crate::screw_jack::{ScrewDrive, ScrewJack};
+use crate::seam::{
+    Actuator, Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd,
+    JointGeometry, Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound,
+};
+
+const KIND: &str = "four-bar";
+
+/// The designer's choices for a four-bar at one station (station frame, m).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FourBarSpec {
+    /// Take-off and landing (stowed is the identity).
+    pub takeoff: PrecisionPosition,
+    /// The last precision position, where the deployment ends.
+    pub landing: PrecisionPosition,
+    /// Forward moving pivot A1 on the flap (stowed); `None`: searched.
+    pub forward_pivot: Option<Point2<f64>>,
+    /// Aft moving pivot A2 on the flap (stowed); `None`: searched.
+    pub aft_pivot: Option<Point2<f64>>,
+    /// Smallest transmission angle over the deployment, of the loop and of the drive (rad).
+    pub min_transmission_angle_rad: f64,
+    /// Where the screw takes hold of the crank: 0 at O1, 1 at A1.
+    pub actuator_attachment_fraction: f64,
+    /// The screw's mount; `None`: square to the crank at mid-travel.
+    pub actuator_mount: Option<Point2<f64>>,
+    /// Distance from the attachment's mid-travel position to a default mount (m).
+    pub actuator_standoff_m: f64,
+    /// The flap share this station carries.
+    pub flap_mass: FlapMass,
+    /// The screw's thread and the shared drive.
+    pub screw_drive: ScrewDrive,
+    /// Solid sizes.
+    pub hardware: LinkHardware,
+    /// The station's sections: the search region and the fixed pivots' region.
+    pub outline: StationOutline,
+}
+
+/// Counts of what the free-choice search rejected, for the report and for a failure's
+/// message.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+pub struct FourBarSearch {
+    /// Moving-pivot candidates tried.
+    pub candidates: usize,
+    /// ... whose three positions lie on one line, or on a circle larger than 3 chords.
+    pub no_circle: usize,
+    /// ... whose fixed pivot lies outside the region (inside a section, above the lower
+    /// surface, or ahead of or behind the section).
+    pub pivot_outside_region: usize,
+    /// ... whose link turns back between positions or turns more than 150 deg.
+    pub order_defect: usize,
+    /// Pairs of valid candidates tried.
+    pub pairs: usize,
+    /// ... that change branch between positions.
+    pub branch_change: usize,
+    /// ... whose transmission angle falls below the minimum (or whose drive does).
+    pub toggle: usize,
+    /// ... whose links cut the wing section at a setting.
+    pub link_in_wing: usize,
+    /// ... feasible.
+    pub feasible: usize,
+}
+
+/// What synthesis computed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FourBarSynthesis {
+    /// Fixed pivot of the crank O1 (m).
+    pub crank_pivot_m: Point2<f64>,
+    /// Fixed pivot of the rocker O2 (m).
+    pub rocker_pivot_m: Point2<f64>,
+    /// Moving pivots A1 (crank) and A2 (rocker), stowed (m).
+    pub moving_pivots_m: [Point2<f64>; 2],
+    /// Crank rotation at take-off and landing (rad).
+    pub crank_rotation_rad: [f64; 2],
+    /// Smallest transmission angle of the loop over the deployment (rad, sampled).
+    pub min_transmission_angle_rad: f64,
+    /// A certified lower bound on it between samples (rad).
+    pub certified_min_transmission_angle_rad: f64,
+    /// Depth of the stowed mechanism below the lowest point of the section (m).
+    pub depth_below_section_m: f64,
+    /// Largest distance between the mechanism's flap and each precision position at the
+    /// moving pivots (m).
+    pub precision_miss_m: f64,
+    /// The screw's mount B0 and its attachment C on the crank, stowed (m).
+    pub actuator_mount_m: Point2<f64>,
+    /// The screw's attachment C on the crank, stowed (m).
+    pub actuator_attachment_m: Point2<f64>,
+    /// Stroke stowed and at landing (m).
+    pub stroke_m: [f64; 2],
+    /// The screw chosen from the drive.
+    pub screw: ScrewJack,
+    /// Screw length (m).
+    pub screw_length_m: f64,
+    /// Nominal nut speed (m/s).
+    pub nominal_speed_mps: f64,
+    /// What the search rejected (all zero when both moving pivots were given).
+    pub search: FourBarSearch,
+}
+
+/// A four-bar synthesised for one station.
+#[derive(Debug, Clone)]
+pub struct FourBar {
+    spec: FourBarSpec,
+    synthesis: FourBarSynthesis,
+    loop_: Loop,
+    drive: RockerDrive,
+    bodies: Vec<Body>,
+    joints: Vec<Joint>,
+}
+
+const FLAP: usize = 0;
+const CRANK: usize = 1;
+const ROCKER: usize = 2;
+const SCREW: usize = 3;
+const NUT: usize = 4;
+const SUPPORT: usize = 5;
+
+/// Crank samples of the feasibility check over the deployment.
+const LOOP_SAMPLES: usize = 48;
+/// Grid of moving-pivot candidates: columns along the flap chord, rows below it.
+const GRID_COLUMNS: usize = 14;
+const GRID_ROWS: usize = 9;
+/// Largest link rotation between stowed and landing (rad).
+const MAX_LINK_ROTATION_RAD: f64 = 150.0 * std::f64::consts::PI / 180.0;
+
+fn failure(defect: SynthesisDefect, detail: String) -> Error {
+    Error::Synthesis {
+        kind: KIND,
+        defect,
+        detail,
+    }
+}
+
+/// The four-bar loop: fixed pivots, stowed moving pivots, the branch.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Loop {
+    o1: Point2<f64>,
+    o2: Point2<f64>,
+    a1: Point2<f64>,
+    a2: Point2<f64>,
+    coupler: f64,
+    rocker: f64,
+    branch: f64,
+}
+
+/// The loop at one crank angle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct LoopPose {
+    a1: Point2<f64>,
+    a2: Point2<f64>,
+    flap: Isometry2<f64>,
+    /// Acute angle between coupler and rocker (rad).
+    transmission: f64,
+}
+
+impl Loop {
+    fn new(o1: Point2<f64>, o2: Point2<f64>, a1: Point2<f64>, a2: Point2<f64>) -> Self {
+        Self {
+            o1,
+            o2,
+            a1,
+            a2,
+            coupler: (a2 - a1).norm(),
+            rocker: (a2 - o2).norm(),
+            branch: cross(o2 - a1, a2 - a1).signum(),
+        }
+    }
+
+    /// The loop with the crank turned by `phi` (closed form: one RRR dyad).
+    fn at(&self, phi: f64) -> Option<LoopPose> {
+        let a1 = turn_about(self.o1, phi) * self.a1;
+        let to_o2 = self.o2 - a1;
+        let d = to_o2.norm();
+        if d.is_nan() || d <= 0.0 {
+            return None;
+        }
+        let e = to_o2 / d;
+        let along = (self.coupler * self.coupler - self.rocker * self.rocker + d * d) / (2.0 * d);
+        let h2 = self.coupler * self.coupler - along * along;
+        if h2.is_nan() || h2 < 0.0 {
+            return None;
+        }
+        // The point on the stowed branch: cross(e, perp) = 1 with perp = (-e.y, e.x), so
+        // cross(o2 - a1, a2 - a1) = d branch h has the branch's sign.
+        let perp = Vector2::new(-e.y, e.x);
+        let a2 = a1 + e * along + perp * (self.branch * h2.sqrt());
+        let stowed = self.a2 - self.a1;
+        let now = a2 - a1;
+        let angle = cross(stowed, now).atan2(stowed.dot(&now));
+        let rotation = Isometry2::rotation(angle);
+        let flap = Translation2::from(a1.coords - (rotation * self.a1).coords) * rotation;
+        let sine = cross(now, a2 - self.o2).abs() / (self.coupler * self.rocker);
+        Some(LoopPose {
+            a1,
+            a2,
+            flap,
+            transmission: sine.clamp(0.0, 1.0).asin(),
+        })
+    }
+
+    /// Rocker and flap rotation rates per unit crank rate at `pose` (velocity analysis).
+    fn rates(&self, pose: &LoopPose) -> (f64, f64) {
+        let r1 = pose.a1 - self.o1;
+        let v1 = Vector2::new(-r1.y, r1.x);
+        let (r2, c) = (pose.a2 - self.o2, pose.a2 - pose.a1);
+        // ω_r k x r2 - ω_f k x c = v1; dotted with c and with r2 (k x a · a = 0):
+        // ω_r (k x r2) · c = v1 · c and -ω_f (k x c) · r2 = v1 · r2, (k x c) · r2 = c x r2.
+        let det = cross(c, r2);
+        let rocker = -c.dot(&v1) / det;
+        let flap = -r2.dot(&v1) / det;
+        (rocker, flap)
+    }
+}
+
+/// Signed angle (rad) that turns `from - centre` onto `to - centre`.
+fn turn_angle(centre: Point2<f64>, from: Point2<f64>, to: Point2<f64>) -> f64 {
+    let (a, b) = (from - centre, to - centre);
+    cross(a, b).atan2(a.dot(&b))
+}
+
+/// One moving-pivot candidate with its fixed pivot and its link's turns.
+#[derive(Debug, Clone, Copy)]
+struct Candidate {
+    moving: Point2<f64>,
+    fixed: Point2<f64>,
+    turns: [f64; 2],
+}
+
+impl FourBar {
+    /// Synthesises the four-bar (searching the moving pivots the spec leaves free), its
+    /// drive and solids. Errors: [`Error::Synthesis`] with the defect.
+    pub fn synthesise(spec: FourBarSpec) -> Result<Self> {
+        for position in [spec.takeoff, spec.landing] {
+            let t = position.flap.translation.vector;
+            if !(t.x.is_finite() && t.y.is_finite() && position.deflection_rad.is_finite()) {
+                return Err(failure(
+                    SynthesisDefect::MissingPositions,
+                    "a precision position is not finite".into(),
+                ));
+            }
+        }
+        let Some((_, _, flap_chord)) = spec.outline.flap_chord() else {
+            return Err(failure(
+                SynthesisDefect::MissingPositions,
+                "the station has no flap section".into(),
+            ));
+        };
+        let chord = spec.outline.chord_m().unwrap_or(flap_chord);
+        let mut search = FourBarSearch::default();
+        let given = |p: Point2<f64>, which: &str| {
+            candidate(&spec, p, chord)
+                .map_err(|(defect, why)| failure(defect, format!("{which} pivot {}: {why}", mm(p))))
+        };
+        let grid = if spec.forward_pivot.is_none() || spec.aft_pivot.is_none() {
+            candidates(&spec, &mut search, chord)
+        } else {
+            Vec::new()
+        };
+        let forward = match spec.forward_pivot {
+            Some(p) => vec![given(p, "forward")?],
+            None => grid.clone(),
+        };
+        let aft = match spec.aft_pivot {
+            Some(p) => vec![given(p, "aft")?],
+            None => grid,
+        };
+        let fixed_pair = spec.forward_pivot.is_some() && spec.aft_pivot.is_some();
+        let section_bottom = spec
+            .outline
+            .wing
+            .iter()
+            .chain(&spec.outline.flap)
+            .flatten()
+            .map(|p| p.y)
+            .fold(f64::INFINITY, f64::min);
+        let mut best: Option<(f64, f64, Loop)> = None;
+        let mut last_defect = None;
+        for first in &forward {
+            for second in &aft {
+                // The crank is the forward link.
+                if spec.forward_pivot.is_none() && spec.aft_pivot.is_none() && first.moving.x <= second.moving.x {
+                    continue;
+                }
+                if (first.moving - second.moving).norm() < 0.1 * flap_chord
+                    || (first.fixed - second.fixed).norm() < 0.02 * flap_chord
+                {
+                    if fixed_pair {
+                        last_defect = Some((SynthesisDefect::NoRealSolution, "the two links coincide".to_string()));
+                    }
+                    continue;
+                }
+                search.pairs += 1;
+                match check_pair(&spec, first, second) {
+                    Ok((loop_, transmission)) => {
+                        search.feasible += 1;
+                        let lowest = [loop_.o1, loop_.o2, loop_.a1, loop_.a2]
+                            .iter()
+                            .map(|p| p.y)
+                            .fold(f64::INFINITY, f64::min);
+                        let depth = (section_bottom - lowest).max(0.0);
+                        let better = best
+                            .as_ref()
+                            .is_none_or(|(d, t, _)| depth < d - 1e-9 || (depth <= d + 1e-9 && transmission > *t));
+                        if better {
+                            best = Some((depth, transmission, loop_));
+                        }
+                    }
+                    Err((defect, why)) => {
+                        match defect {
+                            SynthesisDefect::BranchOrOrder => search.branch_change += 1,
+                            SynthesisDefect::Toggle => search.toggle += 1,
+                            _ => search.link_in_wing += 1,
+                        }
+                        last_defect = Some((defect, why));
+                    }
+                }
+            }
+        }
+        let Some((depth, _, loop_)) = best else {
+            if fixed_pair {
+                let (defect, why) = last_defect.unwrap_or((SynthesisDefect::NoRealSolution, "no pair".into()));
+                return Err(failure(defect, why));
+            }
+            return Err(search_failure(&search));
+        };
+        Self::build(spec, loop_, depth, search)
+    }
+
+    fn build(spec: FourBarSpec, loop_: Loop, depth: f64, search: FourBarSearch) -> Result<Self> {
+        let turns = [
+            turn_angle(loop_.o1, loop_.a1, spec.takeoff.flap * loop_.a1),
+            turn_angle(loop_.o1, loop_.a1, spec.landing.flap * loop_.a1),
+        ];
+        let travel = turns[1];
+        let mut min_transmission = f64::INFINITY;
+        let mut max_crank_ratio = 0.0_f64;
+        for k in 0..=LOOP_SAMPLES {
+            let phi = travel * k as f64 / LOOP_SAMPLES as f64;
+            let pose = loop_.at(phi).ok_or_else(|| {
+                failure(
+                    SynthesisDefect::NoRealSolution,
+                    "the loop breaks inside the deployment".into(),
+                )
+            })?;
+            min_transmission = min_transmission.min(pose.transmission);
+            let (rocker, flap) = loop_.rates(&pose);
+            max_crank_ratio = max_crank_ratio.max(rocker.abs()).max(flap.abs());
+        }
+        // Between samples the transmission angle changes at most as fast as the coupler and
+        // rocker turn: |dμ/dφ| <= |ω_r| + |ω_f| per unit crank rate, bounded by the rates at
+        // half the sampled minimum (they grow as 1/sin μ).
+        let step = travel.abs() / LOOP_SAMPLES as f64;
+        let crank_arm = (loop_.a1 - loop_.o1).norm();
+        let rate_bound = |mu: f64| crank_arm / (loop_.rocker * mu.sin()) + crank_arm / (loop_.coupler * mu.sin());
+        let certified = (min_transmission - 0.5 * step * rate_bound(0.5 * min_transmission)).max(0.0);
+        let attachment = loop_.o1 + (loop_.a1 - loop_.o1) * spec.actuator_attachment_fraction;
+        let mount = spec
+            .actuator_mount
+            .unwrap_or_else(|| mount_square_at_mid_travel(loop_.o1, attachment, travel, spec.actuator_standoff_m));
+        let drive = RockerDrive::try_new(loop_.o1, mount, attachment).map_err(|_| {
+            failure(
+                SynthesisDefect::Toggle,
+                format!(
+                    "the screw mount {}, O1 and the crank attachment lie on one line",
+                    mm(mount)
+                ),
+            )
+        })?;
+        let drive_min = (0..=LOOP_SAMPLES)
+            .map(|k| {
+                let phi = travel * k as f64 / LOOP_SAMPLES as f64;
+                drive
+                    .state(drive.stroke_at(phi))
+                    .map_or(0.0, |s| s.transmission_angle_rad)
+            })
+            .fold(f64::INFINITY, f64::min);
+        if !drive.clear_of_toggles(travel, 1e-3) || drive_min < spec.min_transmission_angle_rad {
+            return Err(failure(
+                SynthesisDefect::Toggle,
+                format!(
+                    "the screw's transmission angle on the crank falls to {:.1} deg (minimum {:.1} deg); move the actuator mount or its attachment",
+                    drive_min.to_degrees(),
+                    spec.min_transmission_angle_rad.to_degrees()
+                ),
+            ));
+        }
+        let stroke_m = [drive.stroke_at(0.0), drive.stroke_at(travel)];
+        let (screw, nominal_speed_mps) = spec.screw_drive.screw_for(stroke_m[1] - stroke_m[0]);
+        let miss = [(turns[0], spec.takeoff), (turns[1], spec.landing)]
+            .iter()
+            .filter_map(|(phi, position)| {
+                let pose = loop_.at(*phi)?;
+                Some(
+                    (pose.a1 - position.flap * loop_.a1)
+                        .norm()
+                        .max((pose.a2 - position.flap * loop_.a2).norm()),
+                )
+            })
+            .fold(0.0, f64::max);
+        let synthesis = FourBarSynthesis {
+            crank_pivot_m: loop_.o1,
+            rocker_pivot_m: loop_.o2,
+            moving_pivots_m: [loop_.a1, loop_.a2],
+            crank_rotation_rad: turns,
+            min_transmission_angle_rad: min_transmission,
+            certified_min_transmission_angle_rad: certified,
+            depth_below_section_m: depth,
+            precision_miss_m: miss,
+            actuator_mount_m: mount,
+            actuator_attachment_m: attachment,
+            stroke_m,
+            screw,
+            screw_length_m: 1.1 * stroke_m[0].max(stroke_m[1]),
+            nominal_speed_mps,
+            search,
+        };
+        let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &loop_, &drive, certified);
+        Ok(Self {
+            spec,
+            synthesis,
+            loop_,
+            drive,
+            bodies,
+            joints,
+        })
+    }
+
+    /// The designer's choices.
+    pub fn spec(&self) -> &FourBarSpec {
+        &self.spec
+    }
+
+    /// What synthesis computed.
+    pub fn synthesis(&self) -> &FourBarSynthesis {
+        &self.synthesis
+    }
+
+    /// The flap's displacement and the loop's transmission angle at crank angle `phi`: the
+    /// closed-form pose (benchmarked).
+    pub fn flap_at_crank_angle(&self, phi: f64) -> Option<(Isometry2<f64>, f64)> {
+        self.loop_.at(phi).map(|p| (p.flap, p.transmission))
+    }
+
+    fn loop_pose(&self, input: f64) -> Result<(crate::rocker_drive::RockerState, LoopPose)> {
+        let state = self.drive.state(input)?;
+        let pose = self.loop_.at(state.rotation_rad).ok_or(Error::CannotAssemble {
+            input_m: input,
+            min_input_m: self.synthesis.stroke_m[0].min(self.synthesis.stroke_m[1]),
+            max_input_m: self.synthesis.stroke_m[0].max(self.synthesis.stroke_m[1]),
+        })?;
+        Ok((state, pose))
+    }
+}
+
+fn mm(p: Point2<f64>) -> String {
+    format!("({:.1}, {:.1}) mm", p.x * 1e3, p.y * 1e3)
+}
+
+fn search_failure(search: &FourBarSearch) -> Error {
+    let detail = format!(
+        "no four-bar found: of {} moving-pivot candidates under the flap, {} have no circle, {} a fixed pivot outside the region (inside a section or above its lower surface), {} turn back or too far; of {} pairs, {} change branch, {} fall below the minimum transmission angle, {} cut the wing",
+        search.candidates,
+        search.no_circle,
+        search.pivot_outside_region,
+        search.order_defect,
+        search.pairs,
+        search.branch_change,
+        search.toggle,
+        search.link_in_wing
+    );
+    let defect = if search.pairs == 0 {
+        if search.pivot_outside_region >= search.no_circle.max(search.order_defect) {
+            SynthesisDefect::PivotOutsideRegion
+        } else if search.order_defect >= search.no_circle {
+            SynthesisDefect::BranchOrOrder
+        } else {
+            SynthesisDefect::NoRealSolution
+        }
+    } else if search.toggle >= search.branch_change {
+        SynthesisDefect::Toggle
+    } else {
+        SynthesisDefect::BranchOrOrder
+    };
+    failure(defect, detail)
+}
+
+/// The moving-pivot grid: columns from the flap's leading edge to 90 % of its chord, rows
+/// from half a flap chord below its lower surface up to its mid-thickness.
+fn candidates(spec: &FourBarSpec, search: &mut FourBarSearch, chord: f64) -> Vec<Candidate> {
+    let Some((le, _, flap_chord)) = spec.outline.flap_chord() else {
+        return Vec::new();
+    };
+    let mut found = Vec::new();
+    for i in 0..GRID_COLUMNS {
+        let x = le - flap_chord * (0.02 + 0.88 * i as f64 / (GRID_COLUMNS - 1) as f64);
+        let Some((lo, hi)) = vertical_span(&spec.outline.flap, x) else {
+            continue;
+        };
+        for j in 0..GRID_ROWS {
+            let y = lo - 0.5 * flap_chord + (0.5 * flap_chord + 0.5 * (hi - lo)) * j as f64 / (GRID_ROWS - 1) as f64;
+            search.candidates += 1;
+            match candidate(spec, Point2::new(x, y), chord) {
+                Ok(c) => found.push(c),
+                Err((SynthesisDefect::NoRealSolution, _)) => search.no_circle += 1,
+                Err((SynthesisDefect::BranchOrOrder, _)) => search.order_defect += 1,
+                Err(_) => search.pivot_outside_region += 1,
+            }
+        }
+    }
+    found
+}
+
+/// A moving pivot's fixed pivot and turns, or why it cannot be one.
+fn candidate(
+    spec: &FourBarSpec,
+    moving: Point2<f64>,
+    chord: f64,
+) -> std::result::Result<Candidate, (SynthesisDefect, String)> {
+    let outline = &spec.outline;
+    let positions = [moving, spec.takeoff.flap * moving, spec.landing.flap * moving];
+    if positions.iter().any(|p| inside(&outline.wing, *p)) {
+        return Err((
+            SynthesisDefect::PivotOutsideRegion,
+            "the moving pivot enters the wing section".into(),
+        ));
+    }
+    let fixed = circle_centre(positions[0], positions[1], positions[2])
+        .filter(|o| (o - moving).norm() <= 3.0 * chord)
+        .ok_or((
+            SynthesisDefect::NoRealSolution,
+            "its three positions lie on a line or a circle larger than three chords".to_string(),
+        ))?;
+    let below = outline.lower_envelope(fixed.x).is_some_and(|y| fixed.y < y);
+    let clear = !inside(&outline.wing, fixed)
+        && [PrecisionPosition::stowed(), spec.takeoff, spec.landing]
+            .iter()
+            .all(|position| !inside(&outline.flap, position.flap.inverse() * fixed));
+    if !(below && clear) {
+        return Err((
+            SynthesisDefect::PivotOutsideRegion,
+            format!(
+                "its fixed pivot {} is not below the wing and clear of the flap",
+                mm(fixed)
+            ),
+        ));
+    }
+    let turns = [
+        turn_angle(fixed, positions[0], positions[1]),
+        turn_angle(fixed, positions[0], positions[2]),
+    ];
+    let ordered =
+        turns[0] * turns[1] > 0.0 && turns[0].abs() < turns[1].abs() && turns[1].abs() <= MAX_LINK_ROTATION_RAD;
+    if !ordered {
+        return Err((
+            SynthesisDefect::BranchOrOrder,
+            format!(
+                "its link turns {:.1} deg to take-off and {:.1} deg to landing: the settings are not reached in order",
+                turns[0].to_degrees(),
+                turns[1].to_degrees()
+            ),
+        ));
+    }
+    Ok(Candidate { moving, fixed, turns })
+}
+
+/// The loop of two candidates if it moves through the three positions on one branch, above
+/// the minimum transmission angle, with links clear of the wing at the settings; with its
+/// sampled minimum transmission angle.
+fn check_pair(
+    spec: &FourBarSpec,
+    crank: &Candidate,
+    rocker: &Candidate,
+) -> std::result::Result<(Loop, f64), (SynthesisDefect, String)> {
+    let loop_ = Loop::new(crank.fixed, rocker.fixed, crank.moving, rocker.moving);
+    let positions = [spec.takeoff, spec.landing];
+    for position in positions {
+        let (a1, a2) = (position.flap * loop_.a1, position.flap * loop_.a2);
+        if cross(loop_.o2 - a1, a2 - a1).signum() != loop_.branch {
+            return Err((
+                SynthesisDefect::BranchOrOrder,
+                "the loop changes branch between settings".into(),
+            ));
+        }
+        for (fixed, moving) in [(loop_.o1, a1), (loop_.o2, a2)] {
+            if segment_meets(&spec.outline.wing, fixed, moving) {
+                return Err((
+                    SynthesisDefect::PivotOutsideRegion,
+                    "a link cuts the wing section".into(),
+                ));
+            }
+        }
+    }
+    let mut min_transmission = f64::INFINITY;
+    let mut previous = 0.0;
+    let sense = spec.landing.deflection_rad.signum();
+    for k in 0..=LOOP_SAMPLES {
+        let phi = crank.turns[1] * k as f64 / LOOP_SAMPLES as f64;
+        let Some(pose) = loop_.at(phi) else {
+            return Err((SynthesisDefect::NoRealSolution, "the loop cannot close part way".into()));
+        };
+        min_transmission = min_transmission.min(pose.transmission);
+        if min_transmission < spec.min_transmission_angle_rad {
+            return Err((
+                SynthesisDefect::Toggle,
+                format!(
+                    "the transmission angle falls to {:.1} deg at {:.1} deg of crank (minimum {:.1} deg)",
+                    pose.transmission.to_degrees(),
+                    phi.to_degrees(),
+                    spec.min_transmission_angle_rad.to_degrees()
+                ),
+            ));
+        }
+        let deflection = pose.flap.rotation.angle();
+        // The flap must turn forwards at every sample, the start included: a flap that
+        // first turns back reaches its stowed deflection twice.
+        let (_, flap_per_crank) = loop_.rates(&pose);
+        let forwards = flap_per_crank * crank.turns[1].signum() * sense > 0.0;
+        if !forwards || (k > 0 && (deflection - previous) * sense < 0.0) {
+            return Err((SynthesisDefect::BranchOrOrder, "the flap turns back part way".into()));
+        }
+        previous = deflection;
+    }
+    Ok((loop_, min_transmission))
+}
+
+fn bodies_and_joints(
+    spec: &FourBarSpec,
+    synthesis: &FourBarSynthesis,
+    loop_: &Loop,
+    drive: &RockerDrive,
+    certified_transmission: f64,
+) -> (Vec<Body>, Vec<Joint>) {
+    let hw = &spec.hardware;
+    let (o1, o2, a1, a2) = (loop_.o1, loop_.o2, loop_.a1, loop_.a2);
+    let (b0, c) = (synthesis.actuator_mount_m, synthesis.actuator_attachment_m);
+    let capsule = |name: &str, from, to, radius_m| BodySolid {
+        name: name.into(),
+        shape: PlanarShape::Capsule { from, to, radius_m },
+        width_m: 0.0,
+        offset_m: 0.0,
+    };
+    let travel = synthesis.crank_rotation_rad[1];
+    let crank_rate = drive.rotation_rate_bound(travel);
+    let crank_arm = (a1 - o1).norm();
+    let sine = certified_transmission.sin().max(1e-9);
+    let rocker_rate = crank_arm * crank_rate / (loop_.rocker * sine);
+    let flap_rate = crank_arm * crank_rate / (loop_.coupler * sine);
+    let shortest = synthesis.stroke_m[0].min(synthesis.stroke_m[1]);
+    let c_arm = (c - o1).norm();
+    let screw_rate = c_arm * crank_rate / shortest;
+    let direction = (c - b0).normalize();
+    let half_body = direction * (0.5 * hw.jack_body_length_m);
+    let screw_radius = synthesis.screw.mean_radius_m + 0.25 * synthesis.screw.lead_m;
+    // Struts from each fixed pivot up to the lower skin ahead of the cove.
+    let lip = spec.outline.cove_lower_lip_x().unwrap_or(o1.x.max(o2.x));
+    let flap_chord = spec.outline.flap_chord().map_or(1.0, |(_, _, c)| c);
+    let strut_top = |o: Point2<f64>| {
+        let x = o.x.max(lip + 0.1 * flap_chord);
+        spec.outline.wing_lower_point(x).unwrap_or(Point2::new(x, o.y))
+    };
+    let bodies = vec![
+        Body {
+            name: "flap".into(),
+            role: BodyRole::Flap,
+            solids: vec![capsule("bracket", a1, a2, hw.link_radius_m)],
+            speed_bound: SpeedBound {
+                reference: a1,
+                linear_per_input: crank_arm * crank_rate,
+                angular_per_input: flap_rate,
+            },
+        },
+        Body {
+            name: "crank".into(),
+            role: BodyRole::Link,
+            solids: vec![capsule("crank", o1, a1, hw.link_radius_m)],
+            speed_bound: SpeedBound {
+                reference: o1,
+                linear_per_input: 0.0,
+                angular_per_input: crank_rate,
+            },
+        },
+        Body {
+            name: "rocker".into(),
+            role: BodyRole::Link,
+            solids: vec![capsule("rocker", o2, a2, hw.link_radius_m)],
+            speed_bound: SpeedBound {
+                reference: o2,
+                linear_per_input: 0.0,
+                angular_per_input: rocker_rate,
+            },
+        },
+        Body {
+            name: "screw".into(),
+            role: BodyRole::Actuator,
+            solids: vec![
+                capsule("screw", b0, b0 + direction * synthesis.screw_length_m, screw_radius),
+                capsule("jack-body", b0 - half_body, b0 + half_body, hw.jack_body_radius_m),
+            ],
+            speed_bound: SpeedBound {
+                reference: b0,
+                linear_per_input: 0.0,
+                angular_per_input: screw_rate,
+            },
+        },
+        Body {
+            name: "nut".into(),
+            role: BodyRole::Actuator,
+            solids: vec![capsule("nut", c, c, hw.nut_radius_m)],
+            speed_bound: SpeedBound {
+                reference: c,
+                linear_per_input: c_arm * crank_rate,
+                angular_per_input: screw_rate,
+            },
+        },
+        Body {
+            name: "support".into(),
+            role: BodyRole::Support,
+            solids: vec![
+                capsule("strut-O1", o1, strut_top(o1), hw.link_radius_m),
+                capsule("strut-O2", o2, strut_top(o2), hw.link_radius_m),
+            ],
+            speed_bound: SpeedBound::FIXED,
+        },
+    ];
+    let joint = |name: &str, description: &str, geometry, ends, touching: &[(&str, &str)]| Joint {
+        name: name.into(),
+        description: description.into(),
+        geometry,
+        ends,
+        touching_solids: touching.iter().map(|(x, y)| (x.to_string(), y.to_string())).collect(),
+    };
+    let joints = vec![
+        joint(
+            "O1",
+            "crank on its support",
+            JointGeometry::Revolute { at: o1 },
+            [JointEnd::Body(SUPPORT), JointEnd::Body(CRANK)],
+            &[("strut-O1", "crank")],
+        ),
+        joint(
+            "O2",
+            "rocker on its support",
+            JointGeometry::Revolute { at: o2 },
+            [JointEnd::Body(SUPPORT), JointEnd::Body(ROCKER)],
+            &[("strut-O2", "rocker")],
+        ),
+        joint(
+            "A1",
+            "crank pinned to the flap",
+            JointGeometry::Revolute { at: a1 },
+            [JointEnd::Body(CRANK), JointEnd::Body(FLAP)],
+            &[("crank", "bracket")],
+        ),
+        joint(
+            "A2",
+            "rocker pinned to the flap",
+            JointGeometry::Revolute { at: a2 },
+            [JointEnd::Body(ROCKER), JointEnd::Body(FLAP)],
+            &[("rocker", "bracket")],
+        ),
+        joint(
+            "C",
+            "nut pivoting on the crank",
+            JointGeometry::Revolute { at: c },
+            [JointEnd::Body(NUT), JointEnd::Body(CRANK)],
+            &[("nut", "crank")],
+        ),
+        joint(
+            "nut-slide",
+            "nut riding along the screw",
+            JointGeometry::Prismatic {
+                origin: c,
+                direction: Unit::new_normalize(c - b0),
+            },
+            [JointEnd::Body(SCREW), JointEnd::Body(NUT)],
+            &[("screw", "nut")],
+        ),
+        joint(
+            "B0",
+            "screw turning in the jack body",
+            JointGeometry::Revolute { at: b0 },
+            [JointEnd::Ground, JointEnd::Body(SCREW)],
+            &[],
+        ),
+    ];
+    (bodies, joints)
+}
+
+impl FlapMechanism for FourBar {
+    fn kind(&self) -> &'static str {
+        KIND
+    }
+
+    fn input_range(&self) -> InputRange {
+        InputRange {
+            quantity: InputQuantity::Stroke,
+            stowed: self.synthesis.stroke_m[0],
+            deployed: self.synthesis.stroke_m[1],
+        }
+    }
+
+    fn deflection_range_rad(&self) -> f64 {
+        self.spec.landing.deflection_rad
+    }
+
+    /// Bisection on the crank angle (the flap turns monotonically with it, checked at
+    /// synthesis), then the stroke for that angle.
+    fn input_at_deflection(&self, deflection_rad: f64) -> Result<f64> {
+        let travel = self.synthesis.crank_rotation_rad[1];
+        let deflection = |phi: f64| self.loop_.at(phi).map_or(f64::NAN, |p| p.flap.rotation.angle());
+        let target = deflection_rad;
+        let sense = self.spec.landing.deflection_rad.signum();
+        let (mut lo, mut hi) = (0.0, travel);
+        if (target - deflection(hi)) * sense >= 0.0 {
+            return Ok(self.drive.stroke_at(hi));
+        }
+        if (target - deflection(lo)) * sense <= 0.0 {
+            return Ok(self.drive.stroke_at(lo));
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if (deflection(mid) - target) * sense < 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+            if (hi - lo).abs() < 1e-15 {
+                break;
+            }
+        }
+        Ok(self.drive.stroke_at(0.5 * (lo + hi)))
+    }
+
+    fn deflection_at_input(&self, input: f64) -> Result<f64> {
+        Ok(self.loop_pose(input)?.1.flap.rotation.angle())
+    }
+
+    /// The moving pivots A1 and A2.
+    fn flap_attachments(&self) -> Vec<NamedPoint> {
+        vec![
+            NamedPoint {
+                name: "A1",
+                position: self.loop_.a1,
+                fixed: false,
+            },
+            NamedPoint {
+                name: "A2",
+                position: self.loop_.a2,
+                fixed: false,
+            },
+        ]
+    }
+
+    fn bodies(&self) -> &[Body] {
+        &self.bodies
+    }
+
+    fn joints(&self) -> &[Joint] {
+        &self.joints
+    }
+
+    fn pose(&self, input: f64) -> Result<MechanismPose> {
+        let (state, pose) = self.loop_pose(input)?;
+        let l = &self.loop_;
+        let crank = turn_about(l.o1, state.rotation_rad);
+        let rocker = turn_about(l.o2, turn_angle(l.o2, l.a2, pose.a2));
+        let b0 = self.synthesis.actuator_mount_m;
+        let screw_turn = self.drive.screw_rotation(state.attachment);
+        let c_stowed = self.synthesis.actuator_attachment_m;
+        let nut = Translation2::from(state.attachment.coords)
+            * Isometry2::rotation(screw_turn)
+            * Translation2::from(-c_stowed.coords);
+        let points = [
+            ("O1", l.o1, true),
+            ("O2", l.o2, true),
+            ("B0", b0, true),
+            ("A1", pose.a1, false),
+            ("A2", pose.a2, false),
+            ("C", state.attachment, false),
+            ("D", pose.flap * self.spec.flap_mass.centre_of_mass_stowed_m, false),
+        ]
+        .into_iter()
+        .map(|(name, position, fixed)| NamedPoint { name, position, fixed })
+        .collect();
+        Ok(MechanismPose {
+            deflection_rad: pose.flap.rotation.angle(),
+            input,
+            bodies: vec![
+                pose.flap,
+                crank,
+                rocker,
+                turn_about(b0, screw_turn),
+                nut,
+                Isometry2::identity(),
+            ],
+            flap: pose.flap,
+            points,
+        })
+    }
+
+    fn kinetostatics(&self, input: f64, load: &LoadCase) -> Result<Kinetostatics> {
+        let (state, pose) = self.loop_pose(input)?;
+        let l = &self.loop_;
+        let fraction = self.input_range().fraction(input).clamp(0.0, 1.0);
+        let wrench = FlapWrench::new(&self.spec.flap_mass, &pose.flap, load, fraction);
+        // Rocker force on the flap f e2 (two-force member), moments about A1.
+        let e2 = (pose.a2 - l.o2) / l.rocker;
+        let rocker_force = -wrench.moment_about(pose.a1) / cross(pose.a2 - pose.a1, e2);
+        let pin_a1: Vector2<f64> = -(e2 * rocker_force + wrench.force_n);
+        // Crank: the flap pushes it with -R1 at A1, the screw with F u at C; moments about O1.
+        let c = state.attachment;
+        let u = (c - self.synthesis.actuator_mount_m).normalize();
+        let force = cross(pose.a1 - l.o1, pin_a1) / cross(c - l.o1, u);
+        let crank_ground: Vector2<f64> = pin_a1 - u * force;
+        // Virtual work with the loop's velocities per metre of stroke.
+        let crank_rate = state.rotation_per_stroke;
+        let (_, flap_per_crank) = l.rates(&pose);
+        let flap_rate = flap_per_crank * crank_rate;
+        let r1 = pose.a1 - l.o1;
+        let v_a1 = Vector2::new(-r1.y, r1.x) * crank_rate;
+        let d = wrench.at - pose.a1;
+        let v_d = v_a1 + Vector2::new(-d.y, d.x) * flap_rate;
+        let force_virtual_work = -wrench.power(v_d, flap_rate);
+        let conditioning = state
+            .jacobian_condition_number
+            .max(l.coupler.max(l.rocker) / (l.coupler.min(l.rocker) * pose.transmission.sin()));
+        Ok(Kinetostatics {
+            input,
+            deflection_rad: pose.flap.rotation.angle(),
+            actuator_load: force,
+            actuator_load_virtual_work: force_virtual_work,
+            reactions: vec![
+                ("A1".into(), pin_a1.norm()),
+                ("A2".into(), rocker_force),
+                ("B0".into(), force),
+                ("C".into(), force),
+                ("O1".into(), crank_ground.norm()),
+                ("O2".into(), rocker_force),
+            ],
+            transmission_angle_rad: pose.transmission.min(state.transmission_angle_rad),
+            health: PoseHealth {
+                closure_residual_m: state.closure_residual_m.max(((pose.a2 - l.o2).norm() - l.rocker).abs()),
+                jacobian_condition_number: conditioning,
+                distance_to_toggle_rad: pose.transmission.min(state.transmission_angle_rad),
+            },
+            screw_torques: Some(self.synthesis.screw.torques(force)),
+        })
+    }
+
+    fn drawing_notes(&self) -> DrawingNotes {
+        let s = &self.synthesis;
+        DrawingNotes {
+            summary: format!(
+                "four-bar with screw jack on the crank; stroke {:.1} -> {:.1} mm",
+                s.stroke_m[0] * 1e3,
+                s.stroke_m[1] * 1e3
+            ),
+            dimensions: vec![
+                ("O1-A1".into(), s.crank_pivot_m, s.moving_pivots_m[0]),
+                ("O2-A2".into(), s.rocker_pivot_m, s.moving_pivots_m[1]),
+            ],
+            arcs: [
+                (s.crank_pivot_m, s.moving_pivots_m[0], "A1 about O1"),
+                (s.rocker_pivot_m, s.moving_pivots_m[1], "A2 about O2"),
+            ]
+            .iter()
+            .map(|(centre, moving, name)| {
+                let r = moving - centre;
+                let start = r.y.atan2(r.x);
+                let turn = turn_angle(*centre, *moving, self.spec.landing.flap * moving);
+                (name.to_string(), *centre, r.norm(), start, start + turn)
+            })
+            .collect(),
+        }
+    }
+
+    fn details(&self) -> serde_json::Value {
+        serde_json::json!({
+            "hardware": self.spec.hardware,
+            "synthesis": self.synthesis,
+        })
+    }
+
+    fn actuator(&self) -> Actuator {
+        Actuator::ScrewJack {
+            screw: self.synthesis.screw,
+            screw_length_m: self.synthesis.screw_length_m,
+            nominal_speed_mps: self.synthesis.nominal_speed_mps,
+        }
+    }
+
+    fn warnings(&self) -> Vec<String> {
+        Vec::new()
+    }
+}

@@ -1,0 +1,137 @@
+//! The station's section outlines as a synthesising kind sees them: the main wing and the
+//! stowed flap cut by the station plane (station frame, m; closed polygons, last point not
+//! repeated). Kinds place pivots, supports and actuators against them; the planar queries
+//! here are small enough that a geometry crate would add more than it saves (parry works in
+//! convex pieces and would need the polygons decomposed first).
+
+use nalgebra::Point2;
+use serde::Serialize;
+
+/// The main wing and the stowed flap in one station plane.
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct StationOutline {
+    /// Main-wing section polygons.
+    pub wing: Vec<Vec<Point2<f64>>>,
+    /// Stowed flap section polygons.
+    pub flap: Vec<Vec<Point2<f64>>>,
+}
+
+fn edges(polygons: &[Vec<Point2<f64>>]) -> impl Iterator<Item = (Point2<f64>, Point2<f64>)> + '_ {
+    polygons
+        .iter()
+        .flat_map(|p| p.iter().zip(p.iter().cycle().skip(1)).map(|(a, b)| (*a, *b)))
+}
+
+/// True when `p` lies inside `polygons` (even-odd rule).
+pub fn inside(polygons: &[Vec<Point2<f64>>], p: Point2<f64>) -> bool {
+    let mut crossings = 0;
+    for (a, b) in edges(polygons) {
+        if (a.y > p.y) != (b.y > p.y) {
+            let x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
+            if x > p.x {
+                crossings += 1;
+            }
+        }
+    }
+    crossings % 2 == 1
+}
+
+/// Lowest and highest y where the vertical line at `x` crosses `polygons`.
+pub fn vertical_span(polygons: &[Vec<Point2<f64>>], x: f64) -> Option<(f64, f64)> {
+    let mut span: Option<(f64, f64)> = None;
+    for (a, b) in edges(polygons) {
+        if (a.x > x) != (b.x > x) {
+            let y = a.y + (x - a.x) / (b.x - a.x) * (b.y - a.y);
+            span = Some(span.map_or((y, y), |(lo, hi)| (lo.min(y), hi.max(y))));
+        }
+    }
+    span
+}
+
+/// True when the segment `a`-`b` crosses an edge of `polygons` or lies inside them.
+pub fn segment_meets(polygons: &[Vec<Point2<f64>>], a: Point2<f64>, b: Point2<f64>) -> bool {
+    let orient = |p: Point2<f64>, q: Point2<f64>, r: Point2<f64>| (q - p).perp(&(r - p));
+    let crosses = edges(polygons).any(|(c, d)| {
+        let (d1, d2) = (orient(a, b, c), orient(a, b, d));
+        let (d3, d4) = (orient(c, d, a), orient(c, d, b));
+        (d1 > 0.0) != (d2 > 0.0) && (d3 > 0.0) != (d4 > 0.0)
+    });
+    crosses || inside(polygons, a) || inside(polygons, b)
+}
+
+/// Smallest and largest x of `polygons`.
+pub fn extent_x(polygons: &[Vec<Point2<f64>>]) -> Option<(f64, f64)> {
+    polygons.iter().flatten().fold(None, |acc, p| match acc {
+        None => Some((p.x, p.x)),
+        Some((lo, hi)) => Some((lo.min(p.x), hi.max(p.x))),
+    })
+}
+
+impl StationOutline {
+    /// The flap's leading (largest x) and trailing (smallest x) edge x and its chord.
+    pub fn flap_chord(&self) -> Option<(f64, f64, f64)> {
+        let (te, le) = extent_x(&self.flap)?;
+        Some((le, te, le - te))
+    }
+
+    /// The local clean chord: wing nose to stowed flap trailing edge (m).
+    pub fn chord_m(&self) -> Option<f64> {
+        let (_, nose) = extent_x(&self.wing)?;
+        let (_, te, _) = self.flap_chord()?;
+        Some(nose - te)
+    }
+
+    /// The point of the flap's lower surface at `fraction` of its chord from the leading
+    /// edge (stowed).
+    pub fn flap_lower_point(&self, fraction: f64) -> Option<Point2<f64>> {
+        let (le, _, chord) = self.flap_chord()?;
+        let x = le - fraction * chord;
+        let (lo, _) = vertical_span(&self.flap, x)?;
+        Some(Point2::new(x, lo))
+    }
+
+    /// The point of the wing's lower surface at `x`.
+    pub fn wing_lower_point(&self, x: f64) -> Option<Point2<f64>> {
+        vertical_span(&self.wing, x).map(|(lo, _)| Point2::new(x, lo))
+    }
+
+    /// Lowest y of the stowed wing and flap where the vertical at `x` crosses them.
+    pub fn lower_envelope(&self, x: f64) -> Option<f64> {
+        let wing = vertical_span(&self.wing, x).map(|s| s.0);
+        let flap = vertical_span(&self.flap, x).map(|s| s.0);
+        match (wing, flap) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        }
+    }
+
+    /// Where the wing's lower skin ends at the cove (m): the flap's leading edge x or the
+    /// wing's aft end, whichever lies further forward. Supports fixed to the lower skin are
+    /// placed ahead of it.
+    pub fn cove_lower_lip_x(&self) -> Option<f64> {
+        let (wing_aft, _) = extent_x(&self.wing)?;
+        let (le, _, _) = self.flap_chord()?;
+        Some(le.max(wing_aft))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn square_queries() {
+        let square = vec![vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 0.0),
+            Point2::new(1.0, 1.0),
+            Point2::new(0.0, 1.0),
+        ]];
+        assert!(inside(&square, Point2::new(0.5, 0.5)));
+        assert!(!inside(&square, Point2::new(1.5, 0.5)));
+        assert_eq!(vertical_span(&square, 0.25), Some((0.0, 1.0)));
+        assert!(vertical_span(&square, 2.0).is_none());
+        assert!(segment_meets(&square, Point2::new(-1.0, 0.5), Point2::new(2.0, 0.5)));
+        assert!(!segment_meets(&square, Point2::new(-1.0, 1.5), Point2::new(2.0, 1.5)));
+    }
+}

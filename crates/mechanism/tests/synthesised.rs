@@ -1,0 +1,288 @@
+//! The kinds synthesised from flap settings (dropped hinge, four-bar) on a model section:
+//! a box wing with a cove and an elliptic flap nested in it, settings of `003_...` 5.2
+//! (take-off 15 deg, 0 %c gap, 3 %c overlap; landing 35 deg, 2 %c gap, 0 %c overlap).
+
+use flapwright_mechanism::dropped_hinge::{DroppedHinge, DroppedHingeSpec};
+use flapwright_mechanism::four_bar::{FourBar, FourBarSpec};
+use flapwright_mechanism::seam::FlapMechanism;
+use flapwright_mechanism::{
+    Error, ExternalMoment, FlapMass, LinkHardware, LoadCase, PrecisionPosition, ScrewDrive, StationOutline,
+    SynthesisDefect,
+};
+use flapwright_planes::FlapBehindWing;
+use nalgebra::{Isometry2, Point2};
+
+/// Wing: nose at x = 3, its upper skin sloping down to the lip at (-0.05, 0.175), a cove
+/// below; flap: an ellipse of chord 0.8
+/// nested in the cove (station frame, m).
+pub fn outline() -> StationOutline {
+    let wing = vec![vec![
+        Point2::new(0.1, 0.0),
+        Point2::new(3.0, 0.0),
+        Point2::new(3.0, 0.25),
+        Point2::new(0.6, 0.25),
+        Point2::new(-0.05, 0.175),
+        Point2::new(-0.05, 0.165),
+        Point2::new(0.1, 0.12),
+    ]];
+    let flap = vec![(0..120)
+        .map(|i| {
+            let a = std::f64::consts::TAU * i as f64 / 120.0;
+            Point2::new(-0.32 + 0.4 * a.cos(), 0.1 + 0.07 * a.sin())
+        })
+        .collect()];
+    StationOutline { wing, flap }
+}
+
+/// The precision positions of the `003_...` B777 settings in this section.
+pub fn settings(outline: &StationOutline) -> (PrecisionPosition, PrecisionPosition) {
+    let measure = FlapBehindWing::new(&outline.wing, &outline.flap).unwrap();
+    let c = measure.chord_m();
+    let at = |name, deg: f64, gap: f64, overlap: f64| PrecisionPosition {
+        name,
+        deflection_rad: deg.to_radians(),
+        flap: measure
+            .displacement_for_setting(deg.to_radians(), gap * c / 100.0, overlap * c / 100.0)
+            .unwrap(),
+    };
+    (at("takeoff", 15.0, 0.0, 3.0), at("landing", 35.0, 2.0, 0.0))
+}
+
+fn flap_mass() -> FlapMass {
+    FlapMass {
+        mass_kg: 40.0,
+        centre_of_mass_stowed_m: Point2::new(-0.3, 0.1),
+        gravity_mps2: 9.81,
+    }
+}
+
+fn drive() -> ScrewDrive {
+    ScrewDrive {
+        mean_radius_m: 0.012,
+        friction_coefficient: 0.1,
+        turns: 30.0,
+        deployment_time_s: 20.0,
+    }
+}
+
+pub fn dropped_hinge_spec() -> DroppedHingeSpec {
+    let outline = outline();
+    let (takeoff, landing) = settings(&outline);
+    DroppedHingeSpec {
+        landing,
+        takeoff: Some(takeoff),
+        flap_attachments: [
+            outline.flap_lower_point(0.15).unwrap(),
+            outline.flap_lower_point(0.5).unwrap(),
+        ],
+        actuator_attachment_fraction: 0.5,
+        actuator_mount: None,
+        actuator_standoff_m: 0.4,
+        support_points: [Point2::new(0.4, 0.0), Point2::new(0.15, 0.0)],
+        flap_mass: flap_mass(),
+        screw_drive: drive(),
+        min_transmission_angle_rad: 30f64.to_radians(),
+        hardware: LinkHardware::for_flap_chord(0.8),
+        outline,
+    }
+}
+
+pub fn four_bar_spec() -> FourBarSpec {
+    let outline = outline();
+    let (takeoff, landing) = settings(&outline);
+    FourBarSpec {
+        takeoff,
+        landing,
+        forward_pivot: None,
+        aft_pivot: None,
+        min_transmission_angle_rad: 30f64.to_radians(),
+        actuator_attachment_fraction: 0.5,
+        actuator_mount: None,
+        actuator_standoff_m: 0.4,
+        flap_mass: flap_mass(),
+        screw_drive: drive(),
+        hardware: LinkHardware::for_flap_chord(0.8),
+        outline,
+    }
+}
+
+fn landing_load() -> LoadCase {
+    LoadCase {
+        name: "landing".into(),
+        external_moment: ExternalMoment::Linear {
+            stowed_nm: 500.0,
+            deployed_nm: 2000.0,
+        },
+        include_inertia: false,
+    }
+}
+
+/// Where the mechanism puts the flap attachments at a setting's deflection, against the
+/// setting's displacement: the largest distance (m).
+fn miss(mechanism: &dyn FlapMechanism, position: &PrecisionPosition) -> f64 {
+    let pose = mechanism
+        .pose(mechanism.input_at_deflection(position.deflection_rad).unwrap())
+        .unwrap();
+    mechanism
+        .flap_attachments()
+        .iter()
+        .map(|p| (pose.flap * p.position - position.flap * p.position).norm())
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn dropped_hinge_meets_stowed_and_landing_and_reports_the_takeoff_miss() {
+    let spec = dropped_hinge_spec();
+    let (takeoff, landing) = (spec.takeoff.unwrap(), spec.landing);
+    let hinge = DroppedHinge::synthesise(spec).unwrap();
+    assert!(miss(&hinge, &PrecisionPosition::stowed()) < 1e-9);
+    assert!(miss(&hinge, &landing) < 1e-9, "{}", miss(&hinge, &landing));
+    let reported = hinge.synthesis().takeoff_miss_m.unwrap();
+    assert!((miss(&hinge, &takeoff) - reported).abs() < 1e-9);
+    // Two precision positions cannot meet a third in general.
+    assert!(reported > 1e-4, "take-off miss {reported}");
+    let range = hinge.input_range();
+    assert!(range.deployed > range.stowed, "the screw pushes");
+    assert!((hinge.deflection_at_input(range.deployed).unwrap() - landing.deflection_rad).abs() < 1e-9);
+}
+
+#[test]
+fn four_bar_meets_its_three_precision_positions() {
+    let spec = four_bar_spec();
+    let (takeoff, landing) = (spec.takeoff, spec.landing);
+    let four_bar = FourBar::synthesise(spec).unwrap();
+    for position in [PrecisionPosition::stowed(), takeoff, landing] {
+        let m = miss(&four_bar, &position);
+        assert!(m < 1e-9, "{}: {m}", position.name);
+    }
+    let s = four_bar.synthesis();
+    assert!(s.precision_miss_m < 1e-9);
+    assert!(s.min_transmission_angle_rad >= 30f64.to_radians());
+    assert!(s.certified_min_transmission_angle_rad <= s.min_transmission_angle_rad);
+    assert!(s.search.feasible > 0 && s.search.candidates > s.search.feasible);
+    let range = four_bar.input_range();
+    assert!((four_bar.deflection_at_input(range.deployed).unwrap() - landing.deflection_rad).abs() < 1e-9);
+}
+
+/// Actuator force by statics equals the virtual-work value at every sample, for both kinds
+/// (two independent routes: moments of the bodies, and the velocity analysis).
+#[test]
+fn statics_and_virtual_work_agree() {
+    let kinds: Vec<Box<dyn FlapMechanism>> = vec![
+        Box::new(DroppedHinge::synthesise(dropped_hinge_spec()).unwrap()),
+        Box::new(FourBar::synthesise(four_bar_spec()).unwrap()),
+    ];
+    for mechanism in &kinds {
+        for input in mechanism.input_range().samples(25) {
+            let loads = mechanism.kinetostatics(input, &landing_load()).unwrap();
+            let relative = (loads.actuator_load - loads.actuator_load_virtual_work).abs() / loads.actuator_load.abs();
+            assert!(relative < 1e-9, "{}: {relative}", mechanism.kind());
+            assert!(loads.health.closure_residual_m < 1e-12);
+        }
+    }
+}
+
+/// The rates the virtual work uses against finite differences of the pose: the flap's
+/// rotation per metre of stroke, and the transmission angle along the deployment.
+#[test]
+fn rates_and_transmission_angle_match_finite_differences() {
+    let four_bar = FourBar::synthesise(four_bar_spec()).unwrap();
+    let range = four_bar.input_range();
+    let h = 1e-6;
+    for input in range.samples(9).into_iter().skip(1).take(7) {
+        let deflection = |q: f64| four_bar.deflection_at_input(q).unwrap();
+        let numeric = (deflection(input + h) - deflection(input - h)) / (2.0 * h);
+        // The virtual work with a pure couple isolates dθ/ds: F = -C dθ/ds.
+        let couple = LoadCase {
+            name: "couple".into(),
+            external_moment: ExternalMoment::Constant(-1.0),
+            include_inertia: false,
+        };
+        let mut massless = four_bar_spec();
+        massless.flap_mass.mass_kg = 0.0;
+        let four_bar_massless = FourBar::synthesise(massless).unwrap();
+        let loads = four_bar_massless.kinetostatics(input, &couple).unwrap();
+        assert!(
+            (-loads.actuator_load_virtual_work - numeric).abs() < 1e-6 * numeric.abs(),
+            "dθ/ds {numeric} vs {}",
+            -loads.actuator_load_virtual_work
+        );
+        // The transmission angle from the pose's points.
+        let pose = four_bar.pose(input).unwrap();
+        let (a1, a2, o2) = (
+            pose.point("A1").unwrap(),
+            pose.point("A2").unwrap(),
+            pose.point("O2").unwrap(),
+        );
+        let (c, r) = (a2 - a1, a2 - o2);
+        let mu = (c.perp(&r).abs() / (c.norm() * r.norm())).asin();
+        let reported = four_bar
+            .kinetostatics(input, &landing_load())
+            .unwrap()
+            .transmission_angle_rad;
+        assert!(reported <= mu + 1e-12);
+    }
+}
+
+#[test]
+fn given_pivots_that_cannot_work_are_typed_failures() {
+    let mut spec = four_bar_spec();
+    // A moving pivot high inside the wing at take-off.
+    spec.forward_pivot = Some(Point2::new(0.05, 0.16));
+    let error = FourBar::synthesise(spec).unwrap_err();
+    assert!(matches!(error, Error::Synthesis { .. }), "{error}");
+    let mut spec = dropped_hinge_spec();
+    spec.landing.flap = Isometry2::translation(-0.2, -0.05);
+    spec.landing.deflection_rad = 0.0;
+    assert!(matches!(
+        DroppedHinge::synthesise(spec),
+        Err(Error::Synthesis {
+            defect: SynthesisDefect::NoRealSolution,
+            ..
+        })
+    ));
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig { cases: 48, ..Default::default() })]
+
+    /// Random three-position sets: an exact four-bar (through every position to 1e-9 m,
+    /// finite poses and loads over the deployment) or a typed failure, never NaN.
+    #[test]
+    fn random_positions_give_an_exact_four_bar_or_a_typed_failure(
+        takeoff_deg in 3.0..25.0f64,
+        extra_deg in 3.0..30.0f64,
+        takeoff_shift in (-0.15..0.05f64, -0.12..0.05f64),
+        landing_shift in (-0.3..0.05f64, -0.3..0.05f64),
+    ) {
+        let mut spec = four_bar_spec();
+        spec.takeoff = PrecisionPosition {
+            name: "takeoff",
+            deflection_rad: takeoff_deg.to_radians(),
+            flap: Isometry2::new(nalgebra::Vector2::new(takeoff_shift.0, takeoff_shift.1), takeoff_deg.to_radians()),
+        };
+        let landing_rad = (takeoff_deg + extra_deg).to_radians();
+        spec.landing = PrecisionPosition {
+            name: "landing",
+            deflection_rad: landing_rad,
+            flap: Isometry2::new(nalgebra::Vector2::new(landing_shift.0, landing_shift.1), landing_rad),
+        };
+        let positions = [PrecisionPosition::stowed(), spec.takeoff, spec.landing];
+        match FourBar::synthesise(spec) {
+            Ok(four_bar) => {
+                for position in &positions {
+                    let m = miss(&four_bar, position);
+                    proptest::prop_assert!(m < 1e-9, "{}: {}", position.name, m);
+                }
+                for input in four_bar.input_range().samples(16) {
+                    let loads = four_bar.kinetostatics(input, &landing_load()).unwrap();
+                    proptest::prop_assert!(loads.actuator_load.is_finite() && loads.transmission_angle_rad.is_finite());
+                    let relative = (loads.actuator_load - loads.actuator_load_virtual_work).abs()
+                        / loads.actuator_load.abs().max(1.0);
+                    proptest::prop_assert!(relative < 1e-8, "{}", relative);
+                }
+            }
+            Err(error) => proptest::prop_assert!(matches!(error, Error::Synthesis { .. }), "{}", error),
+        }
+    }
+}

@@ -111,10 +111,9 @@ pub fn design_with_progress(
     let mut warnings: Vec<String> = Vec::new();
     let mut interference_report = None;
 
-    let mut records = stages.run("synthesis", || mechanisms::synthesise_all(scene))?;
-    warnings.extend(mechanisms::flap_agreement(&records));
     let mut meshed = Vec::new();
     let mut tube_path_ac: Vec<nalgebra::Point3<f64>> = Vec::new();
+    let mut placed = Vec::new();
     if let Some(wing) = &scene.wing {
         let model = stages.run("geometry", || geometry::build_model(scene, wing, inputs.scene_dir))?;
         tube_path_ac = model.torque_tube().map(|t| t.path_ac.clone()).unwrap_or_default();
@@ -123,7 +122,13 @@ pub fn design_with_progress(
         let write_stl = full && (outputs.stl || outputs.urdf);
         let stage = if write_stl { "stl" } else { "part-statistics" };
         parts = stages.run(stage, || geometry::write_parts(&meshed, write_stl, out))?;
-        stages.run("planes", || stations::place_all(scene, &model, &meshed, &mut records))?;
+        placed = stages.run("planes", || stations::place_all(scene, &model, &meshed))?;
+    }
+    // After the planes: kinds synthesised from the flap settings need the sections.
+    let mut records = stages.run("synthesis", || mechanisms::synthesise_all(scene, placed))?;
+    warnings.extend(mechanisms::flap_agreement(&records));
+    if scene.wing.is_some() {
+        stations::attachment_residuals(&mut records)?;
         let implausible = plausibility::station_problems(scene, &records);
         if !implausible.is_empty() {
             return Err(crate::scene::SceneError::Invalid(implausible).into());

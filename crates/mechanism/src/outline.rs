@@ -74,6 +74,18 @@ impl StationOutline {
         Some((le, te, le - te))
     }
 
+    /// The area centroid of the stowed flap section (m): a flap's centre of mass when its
+    /// skin and ribs are spread like its area.
+    pub fn flap_centroid(&self) -> Option<Point2<f64>> {
+        let (mut area, mut moment) = (0.0, nalgebra::Vector2::zeros());
+        for (a, b) in edges(&self.flap) {
+            let twice = a.coords.perp(&b.coords);
+            area += 0.5 * twice;
+            moment += (a.coords + b.coords) * twice / 6.0;
+        }
+        (area.abs() > 0.0).then(|| Point2::from(moment / area))
+    }
+
     /// The local clean chord: wing nose to stowed flap trailing edge (m).
     pub fn chord_m(&self) -> Option<f64> {
         let (_, nose) = extent_x(&self.wing)?;

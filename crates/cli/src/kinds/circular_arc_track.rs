@@ -9,7 +9,7 @@ use flapwright_mechanism::{
 use nalgebra::Point2;
 use serde::Deserialize;
 
-use super::KindScene;
+use super::{KindScene, SynthesisContext};
 use crate::scene::limits::{
     FLAP_MASS_KG, MECHANISM_LENGTH_M, MIN_SLOT_OFFSET_ANGLE_DEG, NUT_SPEED_MPS, SCREW_FRICTION, SCREW_LEAD_M,
     SCREW_MEAN_RADIUS_M,
@@ -173,8 +173,8 @@ impl KindScene for CircularArcTrackScene {
         }
     }
 
-    fn deflection_range(&self) -> (f64, &'static str) {
-        (self.rotation_range_deg, "rotation_range_deg")
+    fn deflection_range(&self) -> Option<(f64, &'static str)> {
+        Some((self.rotation_range_deg, "rotation_range_deg"))
     }
 
     /// Screw, jack body, nut and the three fittings move; the two tracks are fixed but
@@ -183,7 +183,8 @@ impl KindScene for CircularArcTrackScene {
         7
     }
 
-    fn synthesise(&self) -> Result<Arc<dyn FlapMechanism>, String> {
+    /// From the table alone: the thesis kind is dimensioned by hand.
+    fn synthesise(&self, _context: &SynthesisContext) -> Result<Arc<dyn FlapMechanism>, String> {
         match self.track() {
             Ok(track) => Ok(Arc::new(track)),
             Err(

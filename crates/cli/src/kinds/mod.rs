@@ -1,19 +1,116 @@
 //! Mechanism kinds as the scene file gives them: `[station.mechanism]` picks a kind by its
 //! `kind` key, and each kind's module holds its table, the checks of its keys and its
 //! synthesis into a [`FlapMechanism`] (the seam every other stage uses). Adding a kind adds
-//! a module here, a variant and two match arms in this file, and its mechanism module in
+//! a module here, a variant, a `KINDS` name and two match arms in this file, and its mechanism module in
 //! `flapwright-mechanism`: nothing that names another kind.
 
 mod circular_arc_track;
+mod dropped_hinge;
+mod four_bar;
 
 use std::sync::Arc;
 
-use flapwright_mechanism::FlapMechanism;
+use flapwright_mechanism::{FlapMechanism, PrecisionPosition, ScrewDrive, StationOutline};
 use serde::Deserialize;
 
 pub use circular_arc_track::CircularArcTrackScene;
+pub use dropped_hinge::DroppedHingeScene;
+pub use four_bar::FourBarScene;
 
+use crate::scene::limits::{FLAP_MASS_KG, SCREW_FRICTION, SCREW_MEAN_RADIUS_M};
 use crate::scene::KeyChecker;
+
+/// What a kind may synthesise from besides its own table: the station's sections and the
+/// flap settings' precision positions in its plane (absent in a scene without a wing).
+#[derive(Debug, Clone, Default)]
+pub struct SynthesisContext {
+    /// The main wing and the stowed flap cut by the station plane.
+    pub outline: Option<StationOutline>,
+    /// Take-off and landing as displacements of the flap in the station plane (from the
+    /// flap's `[flap.settings]` deflection, gap and overlap); None where the settings give
+    /// no gap and overlap.
+    pub settings: Option<(PrecisionPosition, PrecisionPosition)>,
+}
+
+impl SynthesisContext {
+    /// The outline and the settings, or the message a kind that needs them gives.
+    pub fn require(&self) -> Result<(&StationOutline, PrecisionPosition, PrecisionPosition), String> {
+        let outline = self
+            .outline
+            .as_ref()
+            .ok_or("is synthesised from the flap settings, and needs a [wing] with the station's flap in its plane")?;
+        let (takeoff, landing) = self.settings.ok_or(
+            "is synthesised from the flap settings: give takeoff_gap_percent, takeoff_overlap_percent, landing_gap_percent and landing_overlap_percent in the flap's [flap.settings]",
+        )?;
+        Ok((outline, takeoff, landing))
+    }
+}
+
+/// `screw = { ... }` of a synthesised kind: the screw jack's thread and the drive shared by
+/// every station on one torque tube (each station's lead is its stroke over `turns`).
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct ScrewDriveScene {
+    /// Mean thread radius, m.
+    pub mean_radius_m: f64,
+    /// Thread friction coefficient.
+    pub friction: f64,
+    /// Screw turns over the deployment: the same at every station of one drive.
+    pub turns: f64,
+    /// Deployment time at the nominal drive speed, s.
+    pub deployment_time_s: f64,
+}
+
+impl Default for ScrewDriveScene {
+    /// A 12 mm mean-radius thread (transport ball-screw actuators are 20-40 mm in
+    /// diameter), friction 0.1 as the thesis, 40 turns in 20 s (transport flaps deploy in
+    /// 15-30 s).
+    fn default() -> Self {
+        Self {
+            mean_radius_m: 0.012,
+            friction: 0.1,
+            turns: 40.0,
+            deployment_time_s: 20.0,
+        }
+    }
+}
+
+/// Screw turns over a deployment: a few to a thousand.
+const SCREW_TURNS: (f64, f64) = (1.0, 1000.0);
+/// Deployment time, s.
+const DEPLOYMENT_TIME_S: (f64, f64) = (0.1, 600.0);
+/// Minimum transmission angle a synthesised kind may be asked for, deg.
+pub(crate) const MIN_TRANSMISSION_ANGLE_DEG: (f64, f64) = (5.0, 80.0);
+
+impl ScrewDriveScene {
+    fn check(&self, checker: &mut dyn KeyChecker, path: &str) {
+        for (key, value, (min, max)) in [
+            ("mean_radius_m", self.mean_radius_m, SCREW_MEAN_RADIUS_M),
+            ("friction", self.friction, SCREW_FRICTION),
+            ("turns", self.turns, SCREW_TURNS),
+            ("deployment_time_s", self.deployment_time_s, DEPLOYMENT_TIME_S),
+        ] {
+            checker.in_range(&format!("{path}.screw.{key}"), value, min, max, false);
+        }
+    }
+
+    fn drive(&self) -> ScrewDrive {
+        ScrewDrive {
+            mean_radius_m: self.mean_radius_m,
+            friction_coefficient: self.friction,
+            turns: self.turns,
+            deployment_time_s: self.deployment_time_s,
+        }
+    }
+}
+
+/// Checks a flap mass and an optional centre of mass.
+fn check_flap_mass(checker: &mut dyn KeyChecker, path: &str, mass_kg: f64, centre: Option<&[f64; 2]>) {
+    checker.in_range(&format!("{path}.flap_mass_kg"), mass_kg, FLAP_MASS_KG.0, FLAP_MASS_KG.1, false);
+    if let Some(centre) = centre {
+        checker.point_within(&format!("{path}.flap_centre_of_mass_m"), centre);
+    }
+}
 
 /// What the rest of Flapwright asks of a kind's scene table.
 pub trait KindScene {
@@ -22,15 +119,17 @@ pub trait KindScene {
     fn check(&self, checker: &mut dyn KeyChecker, path: &str);
 
     /// The flap deflection range the table asks for (deg) and the key that sets it: every
-    /// station of one rigid flap must agree.
-    fn deflection_range(&self) -> (f64, &'static str);
+    /// station of one rigid flap must agree. None: the flap's landing setting (a kind
+    /// synthesised from the settings).
+    fn deflection_range(&self) -> Option<(f64, &'static str)>;
 
     /// Moving solids the interference check builds (an upper bound, for the pre-flight
     /// work estimate).
     fn moving_parts(&self) -> usize;
 
-    /// The synthesised mechanism; on failure, the message and the keys to change.
-    fn synthesise(&self) -> Result<Arc<dyn FlapMechanism>, String>;
+    /// The synthesised mechanism, from the table and `context`; on failure, the message and
+    /// the keys to change.
+    fn synthesise(&self, context: &SynthesisContext) -> Result<Arc<dyn FlapMechanism>, String>;
 
     /// The keys that decide the kind's geometry, for messages about degenerate layouts.
     fn geometry_keys(&self) -> &'static str;
@@ -41,16 +140,22 @@ pub trait KindScene {
 pub enum MechanismScene {
     /// Circular-arc track with screw jack (thesis `000_...`, Chapters 3-5).
     CircularArcTrack(CircularArcTrackScene),
+    /// Dropped hinge with screw jack, from the stowed and landing settings (`003_...`).
+    DroppedHinge(DroppedHingeScene),
+    /// Four-bar with screw jack on the crank, from the three settings (`003_...`).
+    FourBar(FourBarScene),
 }
 
 impl MechanismScene {
     /// The `kind` values, as written in the scene.
-    pub const KINDS: &'static [&'static str] = &["circular-arc-track"];
+    pub const KINDS: &'static [&'static str] = &["circular-arc-track", "dropped-hinge", "four-bar"];
 
     /// The kind behind the variant: everything else reaches the kind through it.
     pub fn kind(&self) -> &dyn KindScene {
         match self {
             Self::CircularArcTrack(m) => m,
+            Self::DroppedHinge(m) => m,
+            Self::FourBar(m) => m,
         }
     }
 }
@@ -73,12 +178,14 @@ impl<'de> Deserialize<'de> for MechanismScene {
             }
             None => return Err(D::Error::missing_field("kind")),
         };
-        let variant = |table: toml::Table| {
+        fn variant<T: serde::de::DeserializeOwned, E: Error>(table: toml::Table) -> Result<T, E> {
             serde_path_to_error::deserialize(toml::Value::Table(table))
-                .map_err(|e| D::Error::custom(crate::scene::parse::nested_error(e.path(), e.inner().message())))
-        };
+                .map_err(|e| E::custom(crate::scene::parse::nested_error(e.path(), e.inner().message())))
+        }
         match kind.as_str() {
-            "circular-arc-track" => variant(table).map(Self::CircularArcTrack),
+            "circular-arc-track" => variant::<_, D::Error>(table).map(Self::CircularArcTrack),
+            "dropped-hinge" => variant::<_, D::Error>(table).map(Self::DroppedHinge),
+            "four-bar" => variant::<_, D::Error>(table).map(Self::FourBar),
             other => Err(D::Error::custom(crate::scene::parse::nested_error_at(
                 "kind",
                 &format!(

@@ -3,9 +3,11 @@
 //! scene's flap settings.
 
 use anyhow::{Context, Result};
+use flapwright_mechanism::{PrecisionPosition, StationOutline};
 use flapwright_planes::{FlapBehindWing, GapOverlap};
 use serde::Serialize;
 
+use crate::kinds::SynthesisContext;
 use crate::pipeline::mechanisms::StationRecord;
 use crate::pipeline::stations::PlacedStation;
 use crate::scene::FlapScene;
@@ -67,15 +69,57 @@ pub fn flap_behind_wing(placed: &PlacedStation, flap_name: &str) -> Result<Optio
     })?))
 }
 
-/// The flap behind the wing at each station (each record's `flap_behind_wing`, measured
-/// once for the settings and the deployment samples) and the gap and overlap at its flap
-/// settings (`flap_position`); None where the station has no flap section to measure.
+/// What a kind synthesised from the flap settings needs at one placed station: the wing
+/// and stowed flap sections, and take-off and landing as flap displacements in the plane
+/// (where `flap`'s settings give gap and overlap), with the flap behind the wing they were
+/// measured by (kept on the record for the gap-overlap stage).
+pub fn synthesis_context(
+    flap: &FlapScene,
+    placed: &PlacedStation,
+) -> Result<(SynthesisContext, Option<FlapBehindWing>)> {
+    let outline = StationOutline {
+        wing: placed.polygons_of(|name| name == "wing"),
+        flap: placed.polygons_of(|name| name == flap.name),
+    };
+    let Some(measure) = flap_behind_wing(placed, &flap.name)? else {
+        return Ok((SynthesisContext::default(), None));
+    };
+    let chord = measure.chord_m();
+    let position = |name: &'static str, deflection_deg: f64| -> Result<Option<PrecisionPosition>> {
+        let (Some(gap), Some(overlap)) = flap.settings.targets(name) else {
+            return Ok(None);
+        };
+        let deflection_rad = deflection_deg.to_radians();
+        let displacement = measure
+            .displacement_for_setting(deflection_rad, gap * chord / 100.0, overlap * chord / 100.0)
+            .with_context(|| format!("flap {} {name} setting at station {}", flap.name, placed.station.name))?;
+        Ok(Some(PrecisionPosition {
+            name,
+            deflection_rad,
+            flap: displacement,
+        }))
+    };
+    let settings = match (
+        position("takeoff", flap.settings.takeoff_deg)?,
+        position("landing", flap.settings.landing_deg)?,
+    ) {
+        (Some(takeoff), Some(landing)) => Some((takeoff, landing)),
+        _ => None,
+    };
+    Ok((
+        SynthesisContext {
+            outline: Some(outline),
+            settings,
+        },
+        Some(measure),
+    ))
+}
+
+/// The gap and overlap at each station's flap settings (`flap_position`), measured by the
+/// record's `flap_behind_wing` (set at synthesis); None where the station has no flap
+/// section to measure.
 pub fn flap_positions(flaps: &[FlapScene], records: &mut [StationRecord]) -> Result<()> {
     for record in records.iter_mut() {
-        record.flap_behind_wing = match (&record.placed, record.flap.as_deref()) {
-            (Some(placed), Some(flap)) => flap_behind_wing(placed, flap)?,
-            _ => None,
-        };
         record.flap_position = flap_position(flaps, record)?;
     }
     Ok(())

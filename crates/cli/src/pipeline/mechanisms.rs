@@ -10,7 +10,8 @@ use serde::Serialize;
 use flapwright_interference::FairingDepth;
 use flapwright_planes::FlapBehindWing;
 
-use crate::pipeline::flap_position::FlapPositionReport;
+use crate::kinds::SynthesisContext;
+use crate::pipeline::flap_position::{self, FlapPositionReport};
 use crate::pipeline::stations::PlacedStation;
 use crate::scene::{Problem, Scene, SceneError};
 
@@ -52,15 +53,30 @@ pub struct MechanismReport {
     pub load_cases: Vec<Deployment>,
 }
 
-/// Synthesises every station; a mechanism that cannot be built from its dimensions is bad
-/// input, reported with the station's path like any other scene problem.
-pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationRecord>> {
+/// Synthesises every station, each with its placed plane where the scene has a wing
+/// (`placed`, in station order; empty without one); a mechanism that cannot be built from
+/// its dimensions or the flap settings is bad input, reported with the station's path like
+/// any other scene problem.
+pub fn synthesise_all(scene: &Scene, placed: Vec<PlacedStation>) -> Result<Vec<StationRecord>> {
     let mut problems = Vec::new();
     let mut built = Vec::new();
+    let mut placed = placed.into_iter();
     for (i, station) in scene.station.iter().enumerate() {
         let path = format!("station[{i}].mechanism");
         let kind = station.mechanism.kind();
-        match kind.synthesise() {
+        let placed = placed.next();
+        let flap = station.flap.as_ref().and_then(|name| scene.flap.iter().find(|f| &f.name == name));
+        let (context, flap_behind_wing) = match (&placed, flap) {
+            (Some(placed), Some(flap)) => match flap_position::synthesis_context(flap, placed) {
+                Ok(found) => found,
+                Err(error) => {
+                    problems.push(Problem::new(path, format!("{error:#}")));
+                    continue;
+                }
+            },
+            _ => (SynthesisContext::default(), None),
+        };
+        match kind.synthesise(&context) {
             Ok(mechanism) => {
                 problems.extend(degeneracies(mechanism.as_ref(), &path, kind.geometry_keys()));
                 built.push(StationRecord {
@@ -68,8 +84,8 @@ pub fn synthesise_all(scene: &Scene) -> Result<Vec<StationRecord>> {
                     index: i,
                     flap: station.flap.clone(),
                     mechanism,
-                    placed: None,
-                    flap_behind_wing: None,
+                    placed,
+                    flap_behind_wing,
                     flap_position: None,
                     fairing: None,
                     kinematics: None,

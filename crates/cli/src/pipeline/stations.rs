@@ -5,8 +5,8 @@
 use anyhow::{Context, Result};
 use flapwright_geom::parts::{Part, WingModel};
 use flapwright_planes::{
-    compute_station, cut_mesh, thesis_stations, FlapDeployment, FlapSetting, HingeAxis, Plane, Section, Station,
-    StationFrame,
+    compute_station, cut_mesh, out_of_plane_residual_m, thesis_stations, FlapDeployment, FlapSetting, HingeAxis, Plane,
+    Section, Station,
 };
 use nalgebra::{Point2, Point3, Vector3};
 
@@ -19,10 +19,13 @@ const RESIDUAL_SAMPLES: usize = 64;
 /// A station placed in 3D.
 #[derive(Debug, Clone)]
 pub struct PlacedStation {
-    /// The plane, frame, skew and residuals.
+    /// The plane, frame, skew and residuals (the residuals once the mechanism is known:
+    /// [`attachment_residuals`]).
     pub station: Station,
     /// Section cuts of every part in the station plane.
     pub sections: Vec<Section>,
+    /// The flap's 3D motion the residuals are measured over.
+    pub deployment: FlapDeployment,
 }
 
 impl PlacedStation {
@@ -36,25 +39,37 @@ impl PlacedStation {
     }
 }
 
-/// Places every station on its flap and cuts every part by its plane (each record's
-/// `placed`). The mechanisms give the flap attachments whose residuals are reported.
-pub fn place_all(scene: &Scene, model: &WingModel, parts: &[Part], records: &mut [StationRecord]) -> Result<()> {
+/// Places every station of the scene on its flap and cuts every part by its plane, in the
+/// scene's station order (before synthesis: kinds synthesised from the flap settings need
+/// the sections).
+pub fn place_all(scene: &Scene, model: &WingModel, parts: &[Part]) -> Result<Vec<PlacedStation>> {
     let dihedral_rad = 0.0; // Only the skew-corrected construction uses it; see below.
+    (0..scene.station.len())
+        .map(|index| place(scene, model, parts, index, dihedral_rad))
+        .collect()
+}
+
+/// The out-of-plane residual of each record's flap attachments (its mechanism's) over the
+/// flap's 3D motion.
+pub fn attachment_residuals(records: &mut [StationRecord]) -> Result<()> {
     for record in records.iter_mut() {
-        record.placed = Some(place(scene, model, parts, record, dihedral_rad)?);
+        let attachments = record.mechanism.flap_attachments();
+        let Some(placed) = record.placed.as_mut() else {
+            continue;
+        };
+        let frame = placed.station.frame;
+        let poses = placed.deployment.sample_poses_ac(RESIDUAL_SAMPLES)?;
+        placed.station.attachment_residuals_m = attachments
+            .iter()
+            .map(|p| out_of_plane_residual_m(&frame, &frame.aircraft_point_from_station(&p.position), &poses))
+            .collect();
     }
     Ok(())
 }
 
-fn place(
-    scene: &Scene,
-    model: &WingModel,
-    parts: &[Part],
-    record: &StationRecord,
-    dihedral_rad: f64,
-) -> Result<PlacedStation> {
-    let station = &scene.station[record.index];
-    let flap_name = record.flap.as_deref().context("station has no flap")?;
+fn place(scene: &Scene, model: &WingModel, parts: &[Part], index: usize, dihedral_rad: f64) -> Result<PlacedStation> {
+    let station = &scene.station[index];
+    let flap_name = station.flap.as_deref().context("station has no flap")?;
     let flap_index = scene
         .flap
         .iter()
@@ -70,15 +85,8 @@ fn place(
     let inner_side = Plane::try_new(Point3::new(0.0, inboard_y, 0.0), Vector3::y())?;
     let offset = station.axis_offset_m.unwrap_or(0.0);
     let constructed = thesis_stations(&axis, &inner_side, offset, &[0.0])
-        .with_context(|| format!("placing station {}", record.station))?;
+        .with_context(|| format!("placing station {}", station.name))?;
     let a0_ac = constructed.a0_ac;
-    let frame = StationFrame::try_from_origin_and_normal(a0_ac, &axis.direction_ac)?;
-    let attachments_ac: Vec<Point3<f64>> = record
-        .mechanism
-        .flap_attachments()
-        .iter()
-        .map(|p| frame.aircraft_point_from_station(&p.position))
-        .collect();
     let settings = [0.0, flap_scene.settings.takeoff_deg, flap_scene.settings.landing_deg]
         .map(|deg| FlapSetting {
             deflection_rad: deg.to_radians(),
@@ -92,27 +100,28 @@ fn place(
         gap_axis_ac: nalgebra::Vector3::x_axis(),
         settings,
     };
-    // The circular-arc track turns the flap about the fixed hinge line: a pure rotation,
-    // so the default construction is the plane perpendicular to the axis and the dihedral
-    // does not enter.
+    // The plane perpendicular to the hinge axis (the thesis construction); the flap's
+    // motion-derived plane of `003_...` Fig. 4 is not offered yet, so the dihedral does not
+    // enter.
     let placed = compute_station(
-        &record.station,
+        &station.name,
         &deployment,
         a0_ac,
-        &attachments_ac,
+        &[],
         None,
         dihedral_rad,
         RESIDUAL_SAMPLES,
     )
-    .with_context(|| format!("station {}", record.station))?;
+    .with_context(|| format!("station {}", station.name))?;
     let sections = parts
         .iter()
         .map(|part| cut_mesh(&part.mesh, &placed.frame, &part.name))
         .filter(|cut| !matches!(cut, Ok(section) if section.polygons.is_empty()))
         .collect::<flapwright_planes::Result<Vec<_>>>()
-        .with_context(|| format!("cutting the parts at station {}", record.station))?;
+        .with_context(|| format!("cutting the parts at station {}", station.name))?;
     Ok(PlacedStation {
         station: placed,
         sections,
+        deployment,
     })
 }

@@ -55,7 +55,12 @@ impl Checker<'_> {
                 if station.flap.as_deref() != Some(flap.name.as_str()) {
                     continue;
                 }
-                let (range, key) = station.mechanism.kind().deflection_range();
+                // A kind synthesised from the settings turns the flap to its landing setting.
+                let (range, key) = station
+                    .mechanism
+                    .kind()
+                    .deflection_range()
+                    .unwrap_or((flap.settings.landing_deg, "kind"));
                 match first {
                     None => first = Some((i, range, key)),
                     Some((j, first_range, first_key)) if (range - first_range).abs() > 1e-9 => self.fail(

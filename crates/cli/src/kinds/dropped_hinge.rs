@@ -1,0 +1,148 @@
+//! The dropped hinge (`003_...` section 3, Figs. 6-7) as a scene table: synthesised from the
+//! flap's stowed and landing settings, its free choices as keys with defaults.
+
+use std::sync::Arc;
+
+use flapwright_mechanism::{DroppedHinge, DroppedHingeSpec, FlapMass, FlapMechanism, LinkHardware};
+use nalgebra::Point2;
+use serde::Deserialize;
+
+use super::{check_flap_mass, KindScene, ScrewDriveScene, SynthesisContext, MIN_TRANSMISSION_ANGLE_DEG};
+use crate::scene::KeyChecker;
+
+/// Standard gravity (m/s²).
+const GRAVITY_MPS2: f64 = 9.81;
+
+/// `[station.mechanism]` with `kind = "dropped-hinge"` (station frame, m).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DroppedHingeScene {
+    /// Flap mass carried by this station, kg.
+    pub flap_mass_kg: f64,
+    /// Flap centre of mass (stowed); absent: the flap section's centroid.
+    pub flap_centre_of_mass_m: Option<[f64; 2]>,
+    /// The hinged structure's forward and aft attachments on the flap's lower surface, as
+    /// fractions of the flap chord from its leading edge.
+    #[serde(default = "default_attachments")]
+    pub attachment_chord_fractions: [f64; 2],
+    /// Where the screw takes hold of the forward arm: 0 at the flap, 1 at the hinge.
+    #[serde(default = "half")]
+    pub actuator_attachment_fraction: f64,
+    /// The screw's mount; absent: square to the arm at mid-travel, half a flap chord ahead.
+    pub actuator_mount_m: Option<[f64; 2]>,
+    /// The support truss's attachments; absent: on the wing's lower skin, 10 % and 30 % of
+    /// the flap chord ahead of the cove.
+    pub support_points_m: Option<[[f64; 2]; 2]>,
+    /// Smallest transmission angle of the screw over the deployment, deg.
+    #[serde(default = "default_transmission")]
+    pub min_transmission_angle_deg: f64,
+    /// The screw jack's thread and the shared drive.
+    #[serde(default)]
+    pub screw: ScrewDriveScene,
+}
+
+pub(super) fn default_attachments() -> [f64; 2] {
+    [0.15, 0.5]
+}
+
+pub(super) fn half() -> f64 {
+    0.5
+}
+
+pub(super) fn default_transmission() -> f64 {
+    30.0
+}
+
+fn point(p: [f64; 2]) -> Point2<f64> {
+    Point2::new(p[0], p[1])
+}
+
+impl KindScene for DroppedHingeScene {
+    fn check(&self, checker: &mut dyn KeyChecker, path: &str) {
+        check_flap_mass(checker, path, self.flap_mass_kg, self.flap_centre_of_mass_m.as_ref());
+        for (k, fraction) in self.attachment_chord_fractions.iter().enumerate() {
+            checker.in_range(&format!("{path}.attachment_chord_fractions[{k}]"), *fraction, 0.02, 0.98, false);
+        }
+        let [forward, aft] = self.attachment_chord_fractions;
+        if forward.is_finite() && aft.is_finite() && aft - forward < 0.05 {
+            checker.fail(
+                &format!("{path}.attachment_chord_fractions"),
+                format!("= [{forward}, {aft}]: the aft attachment must lie at least 5 % of the flap chord behind the forward one"),
+            );
+        }
+        checker.in_range(&format!("{path}.actuator_attachment_fraction"), self.actuator_attachment_fraction, 0.05, 0.95, false);
+        if let Some(mount) = &self.actuator_mount_m {
+            checker.point_within(&format!("{path}.actuator_mount_m"), mount);
+        }
+        for (k, support) in self.support_points_m.iter().flatten().enumerate() {
+            checker.point_within(&format!("{path}.support_points_m[{k}]"), support);
+        }
+        let (lo, hi) = MIN_TRANSMISSION_ANGLE_DEG;
+        checker.in_range(&format!("{path}.min_transmission_angle_deg"), self.min_transmission_angle_deg, lo, hi, false);
+        self.screw.check(checker, path);
+    }
+
+    fn deflection_range(&self) -> Option<(f64, &'static str)> {
+        None
+    }
+
+    /// Two arms, screw, jack body and nut move; two truss members are fixed.
+    fn moving_parts(&self) -> usize {
+        7
+    }
+
+    fn synthesise(&self, context: &SynthesisContext) -> Result<Arc<dyn FlapMechanism>, String> {
+        let (outline, takeoff, landing) = context.require()?;
+        let (_, _, flap_chord) = outline.flap_chord().ok_or("the station plane misses the flap")?;
+        let attachment = |fraction: f64| {
+            outline
+                .flap_lower_point(fraction)
+                .ok_or(format!("no flap surface at {fraction} of the flap chord"))
+        };
+        let flap_attachments = [
+            attachment(self.attachment_chord_fractions[0])?,
+            attachment(self.attachment_chord_fractions[1])?,
+        ];
+        let support_points = match self.support_points_m {
+            Some([a, b]) => [point(a), point(b)],
+            None => {
+                let lip = outline.cove_lower_lip_x().ok_or("the station plane misses the wing")?;
+                let on_skin = |ahead: f64| {
+                    outline
+                        .wing_lower_point(lip + ahead * flap_chord)
+                        .ok_or("the wing's lower skin does not reach ahead of the cove; give support_points_m")
+                };
+                [on_skin(0.3)?, on_skin(0.1)?]
+            }
+        };
+        let centre = match self.flap_centre_of_mass_m {
+            Some(c) => point(c),
+            None => outline.flap_centroid().ok_or("the flap section has no area")?,
+        };
+        let spec = DroppedHingeSpec {
+            landing,
+            takeoff: Some(takeoff),
+            flap_attachments,
+            actuator_attachment_fraction: self.actuator_attachment_fraction,
+            actuator_mount: self.actuator_mount_m.map(point),
+            actuator_standoff_m: 0.5 * flap_chord,
+            support_points,
+            flap_mass: FlapMass {
+                mass_kg: self.flap_mass_kg,
+                centre_of_mass_stowed_m: centre,
+                gravity_mps2: GRAVITY_MPS2,
+            },
+            screw_drive: self.screw.drive(),
+            min_transmission_angle_rad: self.min_transmission_angle_deg.to_radians(),
+            hardware: LinkHardware::for_flap_chord(flap_chord),
+            outline: outline.clone(),
+        };
+        DroppedHinge::synthesise(spec)
+            .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)
+            .map_err(|e| format!("cannot be synthesised: {e}"))
+    }
+
+    fn geometry_keys(&self) -> &'static str {
+        "the flap's landing setting, attachment_chord_fractions, actuator_attachment_fraction and actuator_mount_m"
+    }
+}

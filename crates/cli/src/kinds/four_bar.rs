@@ -1,0 +1,103 @@
+//! The four-bar (`003_...` section 3, Figs. 6 and 8) as a scene table: synthesised from the
+//! flap's stowed, take-off and landing settings; the moving pivots are searched unless
+//! given.
+
+use std::sync::Arc;
+
+use flapwright_mechanism::{FlapMass, FlapMechanism, FourBar, FourBarSpec, LinkHardware};
+use nalgebra::Point2;
+use serde::Deserialize;
+
+use super::dropped_hinge::{default_transmission, half};
+use super::{check_flap_mass, KindScene, ScrewDriveScene, SynthesisContext, MIN_TRANSMISSION_ANGLE_DEG};
+use crate::scene::KeyChecker;
+
+/// Standard gravity (m/s²).
+const GRAVITY_MPS2: f64 = 9.81;
+
+/// `[station.mechanism]` with `kind = "four-bar"` (station frame, m).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FourBarScene {
+    /// Flap mass carried by this station, kg.
+    pub flap_mass_kg: f64,
+    /// Flap centre of mass (stowed); absent: the flap section's centroid.
+    pub flap_centre_of_mass_m: Option<[f64; 2]>,
+    /// The crank's moving pivot A1 on the flap (stowed); absent: searched.
+    pub forward_pivot_m: Option<[f64; 2]>,
+    /// The rocker's moving pivot A2 on the flap (stowed); absent: searched.
+    pub aft_pivot_m: Option<[f64; 2]>,
+    /// Smallest transmission angle over the deployment, of the loop and the screw, deg.
+    #[serde(default = "default_transmission")]
+    pub min_transmission_angle_deg: f64,
+    /// Where the screw takes hold of the crank: 0 at its fixed pivot, 1 at the flap.
+    #[serde(default = "half")]
+    pub actuator_attachment_fraction: f64,
+    /// The screw's mount; absent: square to the crank at mid-travel, half a flap chord off.
+    pub actuator_mount_m: Option<[f64; 2]>,
+    /// The screw jack's thread and the shared drive.
+    #[serde(default)]
+    pub screw: ScrewDriveScene,
+}
+
+fn point(p: [f64; 2]) -> Point2<f64> {
+    Point2::new(p[0], p[1])
+}
+
+impl KindScene for FourBarScene {
+    fn check(&self, checker: &mut dyn KeyChecker, path: &str) {
+        check_flap_mass(checker, path, self.flap_mass_kg, self.flap_centre_of_mass_m.as_ref());
+        for (key, pivot) in [("forward_pivot_m", &self.forward_pivot_m), ("aft_pivot_m", &self.aft_pivot_m), ("actuator_mount_m", &self.actuator_mount_m)] {
+            if let Some(p) = pivot {
+                checker.point_within(&format!("{path}.{key}"), p);
+            }
+        }
+        let (lo, hi) = MIN_TRANSMISSION_ANGLE_DEG;
+        checker.in_range(&format!("{path}.min_transmission_angle_deg"), self.min_transmission_angle_deg, lo, hi, false);
+        checker.in_range(&format!("{path}.actuator_attachment_fraction"), self.actuator_attachment_fraction, 0.05, 1.0, false);
+        self.screw.check(checker, path);
+    }
+
+    fn deflection_range(&self) -> Option<(f64, &'static str)> {
+        None
+    }
+
+    /// Crank, rocker, bracket, screw, jack body and nut move; two struts are fixed.
+    fn moving_parts(&self) -> usize {
+        8
+    }
+
+    fn synthesise(&self, context: &SynthesisContext) -> Result<Arc<dyn FlapMechanism>, String> {
+        let (outline, takeoff, landing) = context.require()?;
+        let (_, _, flap_chord) = outline.flap_chord().ok_or("the station plane misses the flap")?;
+        let centre = match self.flap_centre_of_mass_m {
+            Some(c) => point(c),
+            None => outline.flap_centroid().ok_or("the flap section has no area")?,
+        };
+        let spec = FourBarSpec {
+            takeoff,
+            landing,
+            forward_pivot: self.forward_pivot_m.map(point),
+            aft_pivot: self.aft_pivot_m.map(point),
+            min_transmission_angle_rad: self.min_transmission_angle_deg.to_radians(),
+            actuator_attachment_fraction: self.actuator_attachment_fraction,
+            actuator_mount: self.actuator_mount_m.map(point),
+            actuator_standoff_m: 0.5 * flap_chord,
+            flap_mass: FlapMass {
+                mass_kg: self.flap_mass_kg,
+                centre_of_mass_stowed_m: centre,
+                gravity_mps2: GRAVITY_MPS2,
+            },
+            screw_drive: self.screw.drive(),
+            hardware: LinkHardware::for_flap_chord(flap_chord),
+            outline: outline.clone(),
+        };
+        FourBar::synthesise(spec)
+            .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)
+            .map_err(|e| format!("cannot be synthesised: {e}"))
+    }
+
+    fn geometry_keys(&self) -> &'static str {
+        "the flap settings, forward_pivot_m, aft_pivot_m, actuator_attachment_fraction and actuator_mount_m"
+    }
+}

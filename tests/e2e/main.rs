@@ -11,6 +11,7 @@ mod scene_errors;
 mod sizing_figures;
 mod stations;
 mod stl_reader;
+mod synthesised_kinds;
 
 use std::path::{Path, PathBuf};
 use std::process::Output;

@@ -23,8 +23,9 @@ use crate::error::{Error, Result, SynthesisDefect};
 use crate::flap_load::{FlapMass, FlapWrench, LinkHardware};
 use crate::kinetostatics::LoadCase;
 use crate::outline::{inside, StationOutline};
+use crate::placement::{place_screw_jack, strut_top, turning_flap, JackSize, ScrewJackChoice};
 use crate::precision::{pole, PrecisionPosition};
-use crate::rocker_drive::{cross, mount_square_at_mid_travel, turn_about, RockerDrive};
+use crate::rocker_drive::{cross, turn_about, RockerDrive};
 use crate::screw_jack::{ScrewDrive, ScrewJack};
 use crate::seam::{
     Actuator, Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd,
@@ -45,13 +46,17 @@ pub struct DroppedHingeSpec {
     /// Where the screw takes hold of the forward arm: 0 at the forward attachment, 1 at the
     /// hinge (`003_...`: "between the forward flap attachment and the lower mechanism hinge").
     pub actuator_attachment_fraction: f64,
-    /// The screw's mount; `None`: square to the arm at mid-travel, `actuator_standoff_m`
-    /// ahead of it ([`mount_square_at_mid_travel`]).
+    /// The screw's mount; `None`: square to the arm at mid-travel, at the first of a few
+    /// standoffs from `actuator_standoff_m` and attachments from
+    /// `actuator_attachment_fraction` whose screw and jack body keep clear of the wing, the
+    /// structure and the turning flap ([`screw_jack_placement`]).
     pub actuator_mount: Option<Point2<f64>>,
     /// Distance from the attachment's mid-travel position to a default mount (m).
     pub actuator_standoff_m: f64,
-    /// The truss's two attachments on the wing (stowed, on the lower skin).
-    pub support_points: [Point2<f64>; 2],
+    /// The truss's two attachments on the wing (stowed, on the lower skin); `None`: the
+    /// first lower-skin points ahead of the cove whose members keep clear of the structure
+    /// and the turning flap ([`strut_top`]).
+    pub support_points: Option<[Point2<f64>; 2]>,
     /// The flap share this station carries.
     pub flap_mass: FlapMass,
     /// The screw's thread and the shared drive.
@@ -71,6 +76,11 @@ pub struct DroppedHingeSynthesis {
     pub hinge_m: Point2<f64>,
     /// The screw's mount B0 (m).
     pub actuator_mount_m: Point2<f64>,
+    /// The truss's attachments on the wing (m).
+    pub support_points_m: [Point2<f64>; 2],
+    /// False when no default placement of the screw or the truss kept clear of the wing,
+    /// the structure and the flap at the sampled poses (the interference check says where).
+    pub placement_clear: bool,
     /// The screw's attachment P on the forward arm, stowed (m).
     pub actuator_attachment_m: Point2<f64>,
     /// Stroke |P - B0| stowed and at landing (m).
@@ -85,7 +95,7 @@ pub struct DroppedHingeSynthesis {
     pub landing_miss_m: f64,
     /// The screw chosen from the drive: lead, radius, friction.
     pub screw: ScrewJack,
-    /// Screw length (m): 10 % beyond the longest stroke.
+    /// Screw length (m): the longest stroke and the nut.
     pub screw_length_m: f64,
     /// Nominal nut speed (m/s).
     pub nominal_speed_mps: f64,
@@ -166,11 +176,42 @@ impl DroppedHinge {
                 .map(|p| (at * p - takeoff.flap * p).norm())
                 .fold(0.0, f64::max)
         });
-        let forward = spec.flap_attachments[0];
-        let attachment = forward + (hinge - forward) * spec.actuator_attachment_fraction;
-        let mount = spec
-            .actuator_mount
-            .unwrap_or_else(|| mount_square_at_mid_travel(hinge, attachment, turn, spec.actuator_standoff_m));
+        let hw = spec.hardware;
+        let margin = 0.5 * hw.link_radius_m;
+        let choice = ScrewJackChoice {
+            arm: (spec.flap_attachments[0], hinge),
+            attachment_fraction: spec.actuator_attachment_fraction,
+            mount: spec.actuator_mount,
+            standoff_m: spec.actuator_standoff_m,
+            min_transmission_rad: spec.min_transmission_angle_rad,
+        };
+        let size = JackSize::new(&hw, spec.screw_drive.mean_radius_m);
+        let flap_at = |psi: f64| Some(turn_about(hinge, psi));
+        let (attachment, mount, mut placement_clear) =
+            place_screw_jack(hinge, turn, &choice, &size, margin, &spec.outline, &flap_at);
+        let support_points = match spec.support_points {
+            Some(points) => points,
+            None => {
+                let poses = turning_flap(hinge, turn);
+                let flap_chord = spec.outline.flap_chord().map_or(0.0, |(_, _, c)| c);
+                let ahead = [0.3, 0.25, 0.2, 0.15, 0.1, 0.05, 0.4, 0.5];
+                let first = strut_top(&spec.outline, hinge, &ahead, hw.link_radius_m, margin, &poses, None);
+                let behind: Vec<f64> = ahead.iter().rev().copied().collect();
+                let second = strut_top(&spec.outline, hinge, &behind, hw.link_radius_m, margin, &poses, first);
+                match (first, second) {
+                    (Some(a), Some(b)) => [a, b],
+                    _ => {
+                        placement_clear = false;
+                        let lip = spec.outline.cove_lower_lip_x().unwrap_or(hinge.x);
+                        let skin = |k: f64| {
+                            let x = lip + k * flap_chord;
+                            spec.outline.wing_lower_point(x).unwrap_or(Point2::new(x, hinge.y))
+                        };
+                        [skin(0.3), skin(0.1)]
+                    }
+                }
+            }
+        };
         let drive = RockerDrive::try_new(hinge, mount, attachment).map_err(|_| {
             failure(
                 SynthesisDefect::Toggle,
@@ -202,10 +243,14 @@ impl DroppedHinge {
         }
         let stroke_m = [drive.stroke_at(0.0), drive.stroke_at(turn)];
         let (screw, nominal_speed_mps) = spec.screw_drive.screw_for(stroke_m[1] - stroke_m[0]);
-        let screw_length_m = 1.1 * stroke_m[0].max(stroke_m[1]);
+        // Long enough to carry the nut at the longest stroke, no longer: a screw's free end
+        // beyond the nut would sweep into the flap.
+        let screw_length_m = stroke_m[0].max(stroke_m[1]) + hw.nut_radius_m;
         let synthesis = DroppedHingeSynthesis {
             hinge_m: hinge,
             actuator_mount_m: mount,
+            support_points_m: support_points,
+            placement_clear,
             actuator_attachment_m: attachment,
             stroke_m,
             min_transmission_angle_rad: min_transmission,
@@ -304,8 +349,8 @@ fn bodies_and_joints(
             name: "support".into(),
             role: BodyRole::Support,
             solids: vec![
-                capsule("truss-forward", h, spec.support_points[0], hw.link_radius_m),
-                capsule("truss-aft", h, spec.support_points[1], hw.link_radius_m),
+                capsule("truss-forward", h, synthesis.support_points_m[0], hw.link_radius_m),
+                capsule("truss-aft", h, synthesis.support_points_m[1], hw.link_radius_m),
             ],
             speed_bound: SpeedBound::FIXED,
         },
@@ -416,8 +461,8 @@ impl FlapMechanism for DroppedHinge {
         let points = [
             ("H", h, true),
             ("B0", b0, true),
-            ("S1", self.spec.support_points[0], true),
-            ("S2", self.spec.support_points[1], true),
+            ("S1", self.synthesis.support_points_m[0], true),
+            ("S2", self.synthesis.support_points_m[1], true),
             ("P", state.attachment, false),
             ("F1", flap * forward, false),
             ("F2", flap * aft, false),
@@ -499,7 +544,6 @@ impl FlapMechanism for DroppedHinge {
     fn details(&self) -> serde_json::Value {
         serde_json::json!({
             "flap_attachments_m": self.spec.flap_attachments,
-            "support_points_m": self.spec.support_points,
             "hardware": self.spec.hardware,
             "synthesis": self.synthesis,
         })
@@ -514,6 +558,10 @@ impl FlapMechanism for DroppedHinge {
     }
 
     fn warnings(&self) -> Vec<String> {
-        Vec::new()
+        let mut warnings = Vec::new();
+        if !self.synthesis.placement_clear {
+            warnings.push("no default place of the screw jack or the support truss kept clear of the wing, the structure and the flap at the sampled poses; give actuator_mount_m or support_points_m".into());
+        }
+        warnings
     }
 }

@@ -29,8 +29,9 @@ use crate::error::{Error, Result, SynthesisDefect};
 use crate::flap_load::{FlapMass, FlapWrench, LinkHardware};
 use crate::kinetostatics::LoadCase;
 use crate::outline::{inside, segment_meets, vertical_span, StationOutline};
+use crate::placement::{place_screw_jack, strut_top, JackSize, ScrewJackChoice, PLACEMENT_SAMPLES};
 use crate::precision::{circle_centre, PrecisionPosition};
-use crate::rocker_drive::{cross, mount_square_at_mid_travel, turn_about, RockerDrive};
+use crate::rocker_drive::{cross, turn_about, RockerDrive};
 use crate::screw_jack::{ScrewDrive, ScrewJack};
 use crate::seam::{
     Actuator, Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd,
@@ -125,6 +126,11 @@ pub struct FourBarSynthesis {
     pub screw_length_m: f64,
     /// Nominal nut speed (m/s).
     pub nominal_speed_mps: f64,
+    /// Where the struts from O1 and O2 meet the wing's lower skin (m).
+    pub strut_tops_m: [Point2<f64>; 2],
+    /// False when no default placement of the screw or a strut kept clear of the wing,
+    /// the structure and the flap at the sampled poses (the interference check says where).
+    pub placement_clear: bool,
     /// What the search rejected (all zero when both moving pivots were given).
     pub search: FourBarSearch,
 }
@@ -385,10 +391,40 @@ impl FourBar {
         let crank_arm = (loop_.a1 - loop_.o1).norm();
         let rate_bound = |mu: f64| crank_arm / (loop_.rocker * mu.sin()) + crank_arm / (loop_.coupler * mu.sin());
         let certified = (min_transmission - 0.5 * step * rate_bound(0.5 * min_transmission)).max(0.0);
-        let attachment = loop_.o1 + (loop_.a1 - loop_.o1) * spec.actuator_attachment_fraction;
-        let mount = spec
-            .actuator_mount
-            .unwrap_or_else(|| mount_square_at_mid_travel(loop_.o1, attachment, travel, spec.actuator_standoff_m));
+        let hw = spec.hardware;
+        let margin = 0.5 * hw.link_radius_m;
+        let choice = ScrewJackChoice {
+            arm: (loop_.o1, loop_.a1),
+            attachment_fraction: spec.actuator_attachment_fraction,
+            mount: spec.actuator_mount,
+            standoff_m: spec.actuator_standoff_m,
+            min_transmission_rad: spec.min_transmission_angle_rad,
+        };
+        let size = JackSize::new(&hw, spec.screw_drive.mean_radius_m);
+        let flap_at = |phi: f64| loop_.at(phi).map(|p| p.flap);
+        let (attachment, mount, mut placement_clear) =
+            place_screw_jack(loop_.o1, travel, &choice, &size, margin, &spec.outline, &flap_at);
+        let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)
+            .filter_map(|k| loop_.at(travel * k as f64 / PLACEMENT_SAMPLES as f64).map(|p| p.flap))
+            .collect();
+        let ahead = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6];
+        let strut =
+            |from: Point2<f64>| strut_top(&spec.outline, from, &ahead, hw.link_radius_m, margin, &flap_poses, None);
+        let strut_tops = match (strut(loop_.o1), strut(loop_.o2)) {
+            (Some(a), Some(b)) => [a, b],
+            (a, b) => {
+                placement_clear = false;
+                let straight_up = |o: Point2<f64>| {
+                    spec.outline
+                        .wing_lower_point(o.x)
+                        .unwrap_or(Point2::new(o.x, o.y + hw.link_radius_m))
+                };
+                [
+                    a.unwrap_or_else(|| straight_up(loop_.o1)),
+                    b.unwrap_or_else(|| straight_up(loop_.o2)),
+                ]
+            }
+        };
         let drive = RockerDrive::try_new(loop_.o1, mount, attachment).map_err(|_| {
             failure(
                 SynthesisDefect::Toggle,
@@ -442,7 +478,10 @@ impl FourBar {
             actuator_attachment_m: attachment,
             stroke_m,
             screw,
-            screw_length_m: 1.1 * stroke_m[0].max(stroke_m[1]),
+            // Long enough to carry the nut at the longest stroke: a free end would sweep.
+            screw_length_m: stroke_m[0].max(stroke_m[1]) + hw.nut_radius_m,
+            strut_tops_m: strut_tops,
+            placement_clear,
             nominal_speed_mps,
             search,
         };
@@ -683,13 +722,6 @@ fn bodies_and_joints(
     let direction = (c - b0).normalize();
     let half_body = direction * (0.5 * hw.jack_body_length_m);
     let screw_radius = synthesis.screw.mean_radius_m + 0.25 * synthesis.screw.lead_m;
-    // Struts from each fixed pivot up to the lower skin ahead of the cove.
-    let lip = spec.outline.cove_lower_lip_x().unwrap_or(o1.x.max(o2.x));
-    let flap_chord = spec.outline.flap_chord().map_or(1.0, |(_, _, c)| c);
-    let strut_top = |o: Point2<f64>| {
-        let x = o.x.max(lip + 0.1 * flap_chord);
-        spec.outline.wing_lower_point(x).unwrap_or(Point2::new(x, o.y))
-    };
     let bodies = vec![
         Body {
             name: "flap".into(),
@@ -748,8 +780,8 @@ fn bodies_and_joints(
             name: "support".into(),
             role: BodyRole::Support,
             solids: vec![
-                capsule("strut-O1", o1, strut_top(o1), hw.link_radius_m),
-                capsule("strut-O2", o2, strut_top(o2), hw.link_radius_m),
+                capsule("strut-O1", o1, synthesis.strut_tops_m[0], hw.link_radius_m),
+                capsule("strut-O2", o2, synthesis.strut_tops_m[1], hw.link_radius_m),
             ],
             speed_bound: SpeedBound::FIXED,
         },
@@ -1022,6 +1054,10 @@ impl FlapMechanism for FourBar {
     }
 
     fn warnings(&self) -> Vec<String> {
-        Vec::new()
+        let mut warnings = Vec::new();
+        if !self.synthesis.placement_clear {
+            warnings.push("no default place of the screw jack or a strut kept clear of the wing, the structure and the flap at the sampled poses; give actuator_mount_m".into());
+        }
+        warnings
     }
 }

@@ -79,6 +79,7 @@ pub mod four_bar;
 mod kinetostatics;
 pub mod landing_gear;
 pub mod outline;
+pub mod placement;
 pub mod planar;
 mod planar_solve;
 pub mod precision;

@@ -14,6 +14,8 @@ pub struct StationOutline {
     pub wing: Vec<Vec<Point2<f64>>>,
     /// Stowed flap section polygons.
     pub flap: Vec<Vec<Point2<f64>>>,
+    /// Fixed structure the mechanism must keep clear of: spars, torque tube.
+    pub structure: Vec<Vec<Point2<f64>>>,
 }
 
 fn edges(polygons: &[Vec<Point2<f64>>]) -> impl Iterator<Item = (Point2<f64>, Point2<f64>)> + '_ {
@@ -59,6 +61,35 @@ pub fn segment_meets(polygons: &[Vec<Point2<f64>>], a: Point2<f64>, b: Point2<f6
     crosses || inside(polygons, a) || inside(polygons, b)
 }
 
+/// Distance from `p` to the segment `a`-`b`.
+fn point_segment_distance(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
+    let ab = b - a;
+    let t = if ab.norm_squared() > 0.0 {
+        ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (a + ab * t - p).norm()
+}
+
+/// Distance from the segment `a`-`b` to `polygons` (0 where it meets or lies inside them).
+pub fn segment_distance(polygons: &[Vec<Point2<f64>>], a: Point2<f64>, b: Point2<f64>) -> f64 {
+    if polygons.is_empty() {
+        return f64::INFINITY;
+    }
+    if segment_meets(polygons, a, b) {
+        return 0.0;
+    }
+    edges(polygons)
+        .map(|(c, d)| {
+            point_segment_distance(c, a, b)
+                .min(point_segment_distance(d, a, b))
+                .min(point_segment_distance(a, c, d))
+                .min(point_segment_distance(b, c, d))
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
 /// Smallest and largest x of `polygons`.
 pub fn extent_x(polygons: &[Vec<Point2<f64>>]) -> Option<(f64, f64)> {
     polygons.iter().flatten().fold(None, |acc, p| match acc {
@@ -68,6 +99,25 @@ pub fn extent_x(polygons: &[Vec<Point2<f64>>]) -> Option<(f64, f64)> {
 }
 
 impl StationOutline {
+    /// True when the capsule `a`-`b` of `radius` keeps `margin` clear of the wing and the
+    /// structure, and of the flap moved by each of `flap_poses`.
+    pub fn capsule_clear(
+        &self,
+        a: Point2<f64>,
+        b: Point2<f64>,
+        radius: f64,
+        margin: f64,
+        flap_poses: &[nalgebra::Isometry2<f64>],
+    ) -> bool {
+        let reach = radius + margin;
+        segment_distance(&self.wing, a, b) > reach
+            && segment_distance(&self.structure, a, b) > reach
+            && flap_poses.iter().all(|pose| {
+                let back = pose.inverse();
+                segment_distance(&self.flap, back * a, back * b) > reach
+            })
+    }
+
     /// The flap's leading (largest x) and trailing (smallest x) edge x and its chord.
     pub fn flap_chord(&self) -> Option<(f64, f64, f64)> {
         let (te, le) = extent_x(&self.flap)?;

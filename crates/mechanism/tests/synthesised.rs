@@ -31,7 +31,11 @@ pub fn outline() -> StationOutline {
             Point2::new(-0.32 + 0.4 * a.cos(), 0.1 + 0.07 * a.sin())
         })
         .collect()];
-    StationOutline { wing, flap }
+    StationOutline {
+        wing,
+        flap,
+        structure: Vec::new(),
+    }
 }
 
 /// The precision positions of the `003_...` B777 settings in this section.
@@ -78,7 +82,7 @@ pub fn dropped_hinge_spec() -> DroppedHingeSpec {
         actuator_attachment_fraction: 0.5,
         actuator_mount: None,
         actuator_standoff_m: 0.4,
-        support_points: [Point2::new(0.4, 0.0), Point2::new(0.15, 0.0)],
+        support_points: None,
         flap_mass: flap_mass(),
         screw_drive: drive(),
         min_transmission_angle_rad: 30f64.to_radians(),

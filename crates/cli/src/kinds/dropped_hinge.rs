@@ -7,7 +7,7 @@ use flapwright_mechanism::{DroppedHinge, DroppedHingeSpec, FlapMass, FlapMechani
 use nalgebra::Point2;
 use serde::Deserialize;
 
-use super::{check_flap_mass, KindScene, ScrewDriveScene, SynthesisContext, MIN_TRANSMISSION_ANGLE_DEG};
+use super::{check_synthesised, KindScene, ScrewDriveScene, SynthesisContext};
 use crate::scene::KeyChecker;
 
 /// Standard gravity (m/s²).
@@ -28,10 +28,12 @@ pub struct DroppedHingeScene {
     /// Where the screw takes hold of the forward arm: 0 at the flap, 1 at the hinge.
     #[serde(default = "half")]
     pub actuator_attachment_fraction: f64,
-    /// The screw's mount; absent: square to the arm at mid-travel, half a flap chord ahead.
+    /// The screw's mount; absent: square to the arm at mid-travel, at the first of a few
+    /// distances (from half a flap chord) and attachments that keep clear of the wing, the
+    /// structure and the turning flap.
     pub actuator_mount_m: Option<[f64; 2]>,
-    /// The support truss's attachments; absent: on the wing's lower skin, 10 % and 30 % of
-    /// the flap chord ahead of the cove.
+    /// The support truss's attachments; absent: the first points of the wing's lower skin
+    /// ahead of the cove whose members keep clear of the structure and the turning flap.
     pub support_points_m: Option<[[f64; 2]; 2]>,
     /// Smallest transmission angle of the screw over the deployment, deg.
     #[serde(default = "default_transmission")]
@@ -59,9 +61,22 @@ fn point(p: [f64; 2]) -> Point2<f64> {
 
 impl KindScene for DroppedHingeScene {
     fn check(&self, checker: &mut dyn KeyChecker, path: &str) {
-        check_flap_mass(checker, path, self.flap_mass_kg, self.flap_centre_of_mass_m.as_ref());
+        check_synthesised(
+            checker,
+            path,
+            self.flap_mass_kg,
+            self.flap_centre_of_mass_m.as_ref(),
+            self.min_transmission_angle_deg,
+            &self.screw,
+        );
         for (k, fraction) in self.attachment_chord_fractions.iter().enumerate() {
-            checker.in_range(&format!("{path}.attachment_chord_fractions[{k}]"), *fraction, 0.02, 0.98, false);
+            checker.in_range(
+                &format!("{path}.attachment_chord_fractions[{k}]"),
+                *fraction,
+                0.02,
+                0.98,
+                false,
+            );
         }
         let [forward, aft] = self.attachment_chord_fractions;
         if forward.is_finite() && aft.is_finite() && aft - forward < 0.05 {
@@ -70,16 +85,19 @@ impl KindScene for DroppedHingeScene {
                 format!("= [{forward}, {aft}]: the aft attachment must lie at least 5 % of the flap chord behind the forward one"),
             );
         }
-        checker.in_range(&format!("{path}.actuator_attachment_fraction"), self.actuator_attachment_fraction, 0.05, 0.95, false);
+        checker.in_range(
+            &format!("{path}.actuator_attachment_fraction"),
+            self.actuator_attachment_fraction,
+            0.05,
+            0.95,
+            false,
+        );
         if let Some(mount) = &self.actuator_mount_m {
             checker.point_within(&format!("{path}.actuator_mount_m"), mount);
         }
         for (k, support) in self.support_points_m.iter().flatten().enumerate() {
             checker.point_within(&format!("{path}.support_points_m[{k}]"), support);
         }
-        let (lo, hi) = MIN_TRANSMISSION_ANGLE_DEG;
-        checker.in_range(&format!("{path}.min_transmission_angle_deg"), self.min_transmission_angle_deg, lo, hi, false);
-        self.screw.check(checker, path);
     }
 
     fn deflection_range(&self) -> Option<(f64, &'static str)> {
@@ -103,18 +121,7 @@ impl KindScene for DroppedHingeScene {
             attachment(self.attachment_chord_fractions[0])?,
             attachment(self.attachment_chord_fractions[1])?,
         ];
-        let support_points = match self.support_points_m {
-            Some([a, b]) => [point(a), point(b)],
-            None => {
-                let lip = outline.cove_lower_lip_x().ok_or("the station plane misses the wing")?;
-                let on_skin = |ahead: f64| {
-                    outline
-                        .wing_lower_point(lip + ahead * flap_chord)
-                        .ok_or("the wing's lower skin does not reach ahead of the cove; give support_points_m")
-                };
-                [on_skin(0.3)?, on_skin(0.1)?]
-            }
-        };
+        let support_points = self.support_points_m.map(|[a, b]| [point(a), point(b)]);
         let centre = match self.flap_centre_of_mass_m {
             Some(c) => point(c),
             None => outline.flap_centroid().ok_or("the flap section has no area")?,

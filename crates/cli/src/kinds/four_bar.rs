@@ -9,7 +9,7 @@ use nalgebra::Point2;
 use serde::Deserialize;
 
 use super::dropped_hinge::{default_transmission, half};
-use super::{check_flap_mass, KindScene, ScrewDriveScene, SynthesisContext, MIN_TRANSMISSION_ANGLE_DEG};
+use super::{check_synthesised, KindScene, ScrewDriveScene, SynthesisContext};
 use crate::scene::KeyChecker;
 
 /// Standard gravity (m/s²).
@@ -46,16 +46,30 @@ fn point(p: [f64; 2]) -> Point2<f64> {
 
 impl KindScene for FourBarScene {
     fn check(&self, checker: &mut dyn KeyChecker, path: &str) {
-        check_flap_mass(checker, path, self.flap_mass_kg, self.flap_centre_of_mass_m.as_ref());
-        for (key, pivot) in [("forward_pivot_m", &self.forward_pivot_m), ("aft_pivot_m", &self.aft_pivot_m), ("actuator_mount_m", &self.actuator_mount_m)] {
+        check_synthesised(
+            checker,
+            path,
+            self.flap_mass_kg,
+            self.flap_centre_of_mass_m.as_ref(),
+            self.min_transmission_angle_deg,
+            &self.screw,
+        );
+        for (key, pivot) in [
+            ("forward_pivot_m", &self.forward_pivot_m),
+            ("aft_pivot_m", &self.aft_pivot_m),
+            ("actuator_mount_m", &self.actuator_mount_m),
+        ] {
             if let Some(p) = pivot {
                 checker.point_within(&format!("{path}.{key}"), p);
             }
         }
-        let (lo, hi) = MIN_TRANSMISSION_ANGLE_DEG;
-        checker.in_range(&format!("{path}.min_transmission_angle_deg"), self.min_transmission_angle_deg, lo, hi, false);
-        checker.in_range(&format!("{path}.actuator_attachment_fraction"), self.actuator_attachment_fraction, 0.05, 1.0, false);
-        self.screw.check(checker, path);
+        checker.in_range(
+            &format!("{path}.actuator_attachment_fraction"),
+            self.actuator_attachment_fraction,
+            0.05,
+            1.0,
+            false,
+        );
     }
 
     fn deflection_range(&self) -> Option<(f64, &'static str)> {

@@ -80,7 +80,7 @@ const SCREW_TURNS: (f64, f64) = (1.0, 1000.0);
 /// Deployment time, s.
 const DEPLOYMENT_TIME_S: (f64, f64) = (0.1, 600.0);
 /// Minimum transmission angle a synthesised kind may be asked for, deg.
-pub(crate) const MIN_TRANSMISSION_ANGLE_DEG: (f64, f64) = (5.0, 80.0);
+const MIN_TRANSMISSION_ANGLE_DEG: (f64, f64) = (5.0, 80.0);
 
 impl ScrewDriveScene {
     fn check(&self, checker: &mut dyn KeyChecker, path: &str) {
@@ -104,12 +104,30 @@ impl ScrewDriveScene {
     }
 }
 
-/// Checks a flap mass and an optional centre of mass.
-fn check_flap_mass(checker: &mut dyn KeyChecker, path: &str, mass_kg: f64, centre: Option<&[f64; 2]>) {
-    checker.in_range(&format!("{path}.flap_mass_kg"), mass_kg, FLAP_MASS_KG.0, FLAP_MASS_KG.1, false);
+/// The keys every kind synthesised from the settings has: flap mass and centre of mass,
+/// minimum transmission angle, the screw drive.
+fn check_synthesised(
+    checker: &mut dyn KeyChecker,
+    path: &str,
+    mass_kg: f64,
+    centre: Option<&[f64; 2]>,
+    min_transmission_angle_deg: f64,
+    screw: &ScrewDriveScene,
+) {
+    let (mass_lo, mass_hi) = FLAP_MASS_KG;
+    checker.in_range(&format!("{path}.flap_mass_kg"), mass_kg, mass_lo, mass_hi, false);
     if let Some(centre) = centre {
         checker.point_within(&format!("{path}.flap_centre_of_mass_m"), centre);
     }
+    let (lo, hi) = MIN_TRANSMISSION_ANGLE_DEG;
+    checker.in_range(
+        &format!("{path}.min_transmission_angle_deg"),
+        min_transmission_angle_deg,
+        lo,
+        hi,
+        false,
+    );
+    screw.check(checker, path);
 }
 
 /// What the rest of Flapwright asks of a kind's scene table.

@@ -75,11 +75,14 @@ pub fn flap_behind_wing(placed: &PlacedStation, flap_name: &str) -> Result<Optio
 /// measured by (kept on the record for the gap-overlap stage).
 pub fn synthesis_context(
     flap: &FlapScene,
+    flaps: &[FlapScene],
     placed: &PlacedStation,
 ) -> Result<(SynthesisContext, Option<FlapBehindWing>)> {
     let outline = StationOutline {
         wing: placed.polygons_of(|name| name == "wing"),
         flap: placed.polygons_of(|name| name == flap.name),
+        // Spars and the torque tube; other flaps' sections are not structure.
+        structure: placed.polygons_of(|name| name != "wing" && !flaps.iter().any(|f| f.name == name)),
     };
     let Some(measure) = flap_behind_wing(placed, &flap.name)? else {
         return Ok((SynthesisContext::default(), None));

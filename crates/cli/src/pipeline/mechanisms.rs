@@ -65,9 +65,12 @@ pub fn synthesise_all(scene: &Scene, placed: Vec<PlacedStation>) -> Result<Vec<S
         let path = format!("station[{i}].mechanism");
         let kind = station.mechanism.kind();
         let placed = placed.next();
-        let flap = station.flap.as_ref().and_then(|name| scene.flap.iter().find(|f| &f.name == name));
+        let flap = station
+            .flap
+            .as_ref()
+            .and_then(|name| scene.flap.iter().find(|f| &f.name == name));
         let (context, flap_behind_wing) = match (&placed, flap) {
-            (Some(placed), Some(flap)) => match flap_position::synthesis_context(flap, placed) {
+            (Some(placed), Some(flap)) => match flap_position::synthesis_context(flap, &scene.flap, placed) {
                 Ok(found) => found,
                 Err(error) => {
                     problems.push(Problem::new(path, format!("{error:#}")));

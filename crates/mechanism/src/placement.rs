@@ -1,0 +1,191 @@
+//! Default placement of the parts a synthesised kind adds around its kinematic core: the
+//! screw jack's mount and attachment, and the struts that hold fixed pivots to the wing's
+//! lower skin. Each is searched over a few candidates for the first that keeps clear of
+//! the wing, the structure and the flap at sampled poses of the deployment (the
+//! interference check then certifies the whole deployment); the designer may give any of
+//! them instead.
+
+use nalgebra::{Isometry2, Point2};
+
+use crate::outline::StationOutline;
+use crate::rocker_drive::{mount_square_at_mid_travel, turn_about, RockerDrive};
+
+/// Poses sampled by the placement search.
+pub const PLACEMENT_SAMPLES: usize = 16;
+
+/// What the screw jack's solids measure (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JackSize {
+    /// Screw outer radius.
+    pub screw_radius_m: f64,
+    /// Nut radius.
+    pub nut_radius_m: f64,
+    /// Jack body length.
+    pub body_length_m: f64,
+    /// Jack body radius.
+    pub body_radius_m: f64,
+}
+
+/// A screw jack turning a body about `pivot` by `rotation_rad`: the first (attachment,
+/// mount) pair of `attachments` x `standoffs` (mounts square at mid-travel) whose drive
+/// keeps the transmission angle above `min_transmission_rad` and whose screw (as long as
+/// the longest stroke plus the nut) and jack body keep `margin` clear of `outline` with the
+/// flap at `flap_at(ψ)` for sampled body rotations ψ. None when no pair is clear.
+#[allow(clippy::too_many_arguments)]
+pub fn screw_jack_placement(
+    pivot: Point2<f64>,
+    rotation_rad: f64,
+    attachments: &[Point2<f64>],
+    standoffs: &[f64],
+    min_transmission_rad: f64,
+    size: &JackSize,
+    margin: f64,
+    outline: &StationOutline,
+    flap_at: &dyn Fn(f64) -> Option<Isometry2<f64>>,
+) -> Option<(Point2<f64>, Point2<f64>)> {
+    let rotations: Vec<f64> = (0..=PLACEMENT_SAMPLES)
+        .map(|k| rotation_rad * k as f64 / PLACEMENT_SAMPLES as f64)
+        .collect();
+    let flap_poses: Option<Vec<Isometry2<f64>>> = rotations.iter().map(|&psi| flap_at(psi)).collect();
+    let flap_poses = flap_poses?;
+    for &attachment in attachments {
+        for &standoff in standoffs {
+            let mount = mount_square_at_mid_travel(pivot, attachment, rotation_rad, standoff);
+            let Ok(drive) = RockerDrive::try_new(pivot, mount, attachment) else {
+                continue;
+            };
+            let length = drive.stroke_at(0.0).max(drive.stroke_at(rotation_rad)) + size.nut_radius_m;
+            let clear = rotations.iter().zip(&flap_poses).all(|(&psi, pose)| {
+                let Ok(state) = drive.state(drive.stroke_at(psi)) else {
+                    return false;
+                };
+                let along = (state.attachment - mount).normalize();
+                let poses = std::slice::from_ref(pose);
+                state.transmission_angle_rad >= min_transmission_rad
+                    && outline.capsule_clear(mount, mount + along * length, size.screw_radius_m, margin, poses)
+                    && outline.capsule_clear(
+                        mount - along * (0.5 * size.body_length_m),
+                        mount + along * (0.5 * size.body_length_m),
+                        size.body_radius_m,
+                        margin,
+                        poses,
+                    )
+            });
+            if clear {
+                return Some((attachment, mount));
+            }
+        }
+    }
+    None
+}
+
+/// How a kind's screw jack is placed: the designer's choices.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ScrewJackChoice {
+    /// The arm the screw pushes, from its fraction 0 end to its fraction 1 end (stowed).
+    pub arm: (Point2<f64>, Point2<f64>),
+    /// Where on the arm the screw takes hold (first candidate).
+    pub attachment_fraction: f64,
+    /// The mount, if the designer gives it.
+    pub mount: Option<Point2<f64>>,
+    /// Base distance from the attachment's mid-travel position to a default mount (m).
+    pub standoff_m: f64,
+    /// Smallest transmission angle (rad).
+    pub min_transmission_rad: f64,
+}
+
+/// The screw jack of a body turning by `rotation_rad` about `pivot`: the designer's mount,
+/// or the first clear candidate of [`screw_jack_placement`] over attachments at
+/// `choice.attachment_fraction`, 0.65, 0.8 and 0.35 of the arm and standoffs 1, 1.6, 2.4
+/// and 0.7 times `choice.standoff_m`; when none is clear, the first candidate and `false`.
+/// Returns (attachment, mount, clear).
+pub fn place_screw_jack(
+    pivot: Point2<f64>,
+    rotation_rad: f64,
+    choice: &ScrewJackChoice,
+    size: &JackSize,
+    margin: f64,
+    outline: &StationOutline,
+    flap_at: &dyn Fn(f64) -> Option<Isometry2<f64>>,
+) -> (Point2<f64>, Point2<f64>, bool) {
+    let (from, to) = choice.arm;
+    let on_arm = |fraction: f64| from + (to - from) * fraction;
+    let first = on_arm(choice.attachment_fraction);
+    if let Some(mount) = choice.mount {
+        return (first, mount, true);
+    }
+    let attachments: Vec<Point2<f64>> = [choice.attachment_fraction, 0.65, 0.8, 0.35]
+        .iter()
+        .map(|&f| on_arm(f))
+        .collect();
+    let standoffs: Vec<f64> = [1.0, 1.6, 2.4, 0.7].iter().map(|k| k * choice.standoff_m).collect();
+    match screw_jack_placement(
+        pivot,
+        rotation_rad,
+        &attachments,
+        &standoffs,
+        choice.min_transmission_rad,
+        size,
+        margin,
+        outline,
+        flap_at,
+    ) {
+        Some((attachment, mount)) => (attachment, mount, true),
+        None => (
+            first,
+            mount_square_at_mid_travel(pivot, first, rotation_rad, choice.standoff_m),
+            false,
+        ),
+    }
+}
+
+/// A strut from the fixed point `from` up to the wing's lower skin: the first top of the
+/// candidates (lower-skin points `ahead` flap chords ahead of the cove, in order) whose
+/// strut keeps `margin` clear of the structure and of the flap at every pose of
+/// `flap_poses`, and that is not `avoid`. None when no candidate is clear.
+pub fn strut_top(
+    outline: &StationOutline,
+    from: Point2<f64>,
+    ahead: &[f64],
+    radius: f64,
+    margin: f64,
+    flap_poses: &[Isometry2<f64>],
+    avoid: Option<Point2<f64>>,
+) -> Option<Point2<f64>> {
+    let lip = outline.cove_lower_lip_x()?;
+    let (_, _, flap_chord) = outline.flap_chord()?;
+    ahead.iter().find_map(|&k| {
+        let top = outline.wing_lower_point(lip + k * flap_chord)?;
+        let distinct = avoid.is_none_or(|p| (p - top).norm() > 0.04 * flap_chord);
+        // The strut ends on the skin: clear of the wing short of its top.
+        let short = top + (from - top).normalize() * (radius + margin);
+        let clear = distinct
+            && crate::outline::segment_distance(&outline.structure, from, top) > radius + margin
+            && outline.capsule_clear(from, short, radius, margin, &[])
+            && flap_poses.iter().all(|pose| {
+                let back = pose.inverse();
+                crate::outline::segment_distance(&outline.flap, back * from, back * top) > radius + margin
+            });
+        clear.then_some(top)
+    })
+}
+
+impl JackSize {
+    /// The solids of `hardware` with a screw of mean radius `mean_radius_m` (thread depth
+    /// a quarter of it).
+    pub fn new(hardware: &crate::flap_load::LinkHardware, mean_radius_m: f64) -> Self {
+        Self {
+            screw_radius_m: 1.25 * mean_radius_m,
+            nut_radius_m: hardware.nut_radius_m,
+            body_length_m: hardware.jack_body_length_m,
+            body_radius_m: hardware.jack_body_radius_m,
+        }
+    }
+}
+
+/// The flap's poses of a turn by `rotation_rad` about `pivot`, sampled.
+pub fn turning_flap(pivot: Point2<f64>, rotation_rad: f64) -> Vec<Isometry2<f64>> {
+    (0..=PLACEMENT_SAMPLES)
+        .map(|k| turn_about(pivot, rotation_rad * k as f64 / PLACEMENT_SAMPLES as f64))
+        .collect()
+}

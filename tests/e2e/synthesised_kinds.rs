@@ -1,0 +1,106 @@
+//! Kinds synthesised from the flap settings, end to end: `tests/e2e/scenes/
+//! transport-synthesised.toml` (a swept B777-like wing, four-bars on the inboard flap,
+//! dropped hinges on the outboard flap, no link length typed by hand).
+
+use serde_json::Value;
+
+use crate::{repo_root, run_flapwright};
+
+fn design(scene_text: &str) -> (tempfile::TempDir, std::process::Output) {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("scene.toml"), scene_text).unwrap();
+    let output = run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);
+    (dir, output)
+}
+
+fn scene_text() -> String {
+    std::fs::read_to_string(repo_root().join("tests/e2e/scenes/transport-synthesised.toml")).unwrap()
+}
+
+/// Every station meets its landing setting exactly (both kinds are synthesised through it),
+/// the four-bars their take-off setting too, and the dropped hinges report their take-off
+/// miss; statics and virtual work agree at every sample; nothing is NaN.
+#[test]
+fn synthesised_kinds_meet_their_precision_positions_through_the_pipeline() {
+    let (dir, output) = design(&scene_text());
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let report: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
+    let stations = report["stations"].as_array().unwrap();
+    let kinds: Vec<&str> = stations
+        .iter()
+        .map(|s| s["mechanism"]["kind"].as_str().unwrap())
+        .collect();
+    assert_eq!(kinds, ["four-bar", "four-bar", "dropped-hinge", "dropped-hinge"]);
+    for station in stations {
+        let kind = station["mechanism"]["kind"].as_str().unwrap();
+        for setting in station["flap_position"]["settings"].as_array().unwrap() {
+            let name = setting["setting"].as_str().unwrap();
+            let exact = name == "landing" || (name == "takeoff" && kind == "four-bar");
+            if !exact {
+                continue;
+            }
+            for (measured, target) in [
+                ("gap_percent_chord", "target_gap_percent_chord"),
+                ("overlap_percent_chord", "target_overlap_percent_chord"),
+            ] {
+                let miss = setting[measured].as_f64().unwrap() - setting[target].as_f64().unwrap();
+                assert!(
+                    miss.abs() < 1e-6,
+                    "{} {name} {measured}: misses by {miss} %c",
+                    station["name"]
+                );
+            }
+        }
+        let synthesis = &station["mechanism"]["details"]["synthesis"];
+        match kind {
+            "dropped-hinge" => assert!(synthesis["takeoff_miss_m"].as_f64().unwrap() > 1e-4),
+            _ => assert!(synthesis["precision_miss_m"].as_f64().unwrap() < 1e-9),
+        }
+        for case in station["mechanism"]["load_cases"].as_array().unwrap() {
+            assert!(case["stopped"].is_null(), "{case}");
+            for sample in case["samples"].as_array().unwrap() {
+                let relative = sample["actuator_load_cross_check_relative"].as_f64().unwrap();
+                assert!(
+                    relative < 1e-9,
+                    "{} statics against virtual work: {relative}",
+                    station["name"]
+                );
+            }
+        }
+    }
+}
+
+/// A synthesised kind needs gap and overlap targets: without them the scene is refused at
+/// the station with the keys to give.
+#[test]
+fn synthesised_kinds_without_gap_and_overlap_name_the_settings_keys() {
+    let text = scene_text()
+        .replace("takeoff_gap_percent = 2.0\n", "")
+        .replace("landing_overlap_percent = -2.5\n", "");
+    let (_dir, output) = design(&text);
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("station[0].mechanism") && stderr.contains("takeoff_gap_percent"),
+        "{stderr}"
+    );
+}
+
+/// A four-bar whose given pivot cannot work is a typed failure at its station, with the
+/// defect named.
+#[test]
+fn an_impossible_four_bar_pivot_is_refused_with_its_defect() {
+    let text = scene_text().replacen(
+        "kind = \"four-bar\"\n",
+        "kind = \"four-bar\"\nforward_pivot_m = [0.0, 0.0]\naft_pivot_m = [0.0, 0.001]\n",
+        1,
+    );
+    let (_dir, output) = design(&text);
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("station[0].mechanism: cannot be synthesised: four-bar:"),
+        "{stderr}"
+    );
+}

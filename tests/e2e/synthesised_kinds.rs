@@ -1,6 +1,6 @@
-//! Kinds synthesised from the flap settings, end to end: `tests/e2e/scenes/
-//! transport-synthesised.toml` (a swept B777-like wing, four-bars on the inboard flap,
-//! dropped hinges on the outboard flap, no link length typed by hand).
+//! Kinds synthesised from the flap settings, end to end: `data/scenes/transport-flap.toml`
+//! (a swept B777-like wing, four-bars on the inboard flap, dropped hinges on the outboard
+//! flap, the settings of `003_...` 5.2, no link length typed by hand).
 
 use serde_json::Value;
 
@@ -14,7 +14,7 @@ fn design(scene_text: &str) -> (tempfile::TempDir, std::process::Output) {
 }
 
 fn scene_text() -> String {
-    std::fs::read_to_string(repo_root().join("tests/e2e/scenes/transport-synthesised.toml")).unwrap()
+    std::fs::read_to_string(repo_root().join("data/scenes/transport-flap.toml")).unwrap()
 }
 
 /// Every station meets its landing setting exactly (both kinds are synthesised through it),
@@ -76,8 +76,8 @@ fn synthesised_kinds_meet_their_precision_positions_through_the_pipeline() {
 #[test]
 fn synthesised_kinds_without_gap_and_overlap_name_the_settings_keys() {
     let text = scene_text()
-        .replace("takeoff_gap_percent = 2.0\n", "")
-        .replace("landing_overlap_percent = -2.5\n", "");
+        .replace("takeoff_gap_percent = 0.0\n", "")
+        .replace("landing_overlap_percent = 0.0\n", "");
     let (_dir, output) = design(&text);
     assert_eq!(output.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&output.stderr);

@@ -77,7 +77,21 @@ pub struct FlapSpec {
     /// [`SIDE_GAP_CHORD_FRACTION`] of the local chord. A flap turning about a hinge line that
     /// is not perpendicular to its streamwise sides moves spanwise and needs more.
     pub side_gap_m: Option<f64>,
+    /// How far (fraction of the local chord) the wing's upper skin reaches aft over the
+    /// stowed flap's nose as a shroud; 0: no shroud, the cove is a straight wall (the
+    /// flap's nose then sits behind the lip and a positive overlap is out of reach). The
+    /// shroud stops short where its underside would come closer to the flap than
+    /// [`SHROUD_CLEARANCE_CHORD_FRACTION`].
+    pub shroud_chord_fraction: f64,
 }
+
+/// Skin thickness of a shroud (fraction of the local chord).
+pub const SHROUD_THICKNESS_CHORD_FRACTION: f64 = 0.004;
+/// Smallest clearance between a shroud's underside and the stowed flap (fraction of the
+/// local chord).
+pub const SHROUD_CLEARANCE_CHORD_FRACTION: f64 = 0.003;
+/// Largest shroud (fraction of the local chord).
+pub const MAX_SHROUD_CHORD_FRACTION: f64 = 0.2;
 
 /// A validated flap on a wing.
 #[derive(Debug, Clone)]
@@ -92,6 +106,12 @@ impl Flap {
     pub fn try_new(spec: FlapSpec, wing: &Wing) -> Result<Flap> {
         require_finite("flap y_inboard_m", spec.y_inboard_m)?;
         require_finite("flap y_outboard_m", spec.y_outboard_m)?;
+        require_range(
+            "flap shroud_chord_fraction",
+            spec.shroud_chord_fraction,
+            0.0,
+            MAX_SHROUD_CHORD_FRACTION,
+        )?;
         if let Some(gap) = spec.side_gap_m {
             let quarter_span = 0.25 * (spec.y_outboard_m - spec.y_inboard_m).abs();
             require_range("flap side_gap_m", gap, 0.0, quarter_span)?;
@@ -233,6 +253,83 @@ impl Flap {
         }
     }
 }
+
+/// The main wing's section outline where `flap` cuts it at `y_m` (unit-chord u, v): the
+/// airfoil back to the cove wall at the flap's foremost point less the cove gap, and, with a
+/// shroud, the upper skin on aft over the flap's nose and its underside back to the wall.
+/// Same point count at every y of one flap (the loft joins stations point by point).
+pub(crate) fn cut_wing_outline(
+    flap: &Flap,
+    y_m: f64,
+    airfoil: &Airfoil,
+    points_per_side: usize,
+) -> Result<Vec<Point2<f64>>> {
+    let flap_outline = flap.stowed_outline(y_m, airfoil, points_per_side)?;
+    let cove_u = cove_chord_fraction(&flap_outline);
+    let fraction = flap.spec.shroud_chord_fraction;
+    if fraction <= 0.0 {
+        return crate::mesher::truncated_outline(airfoil, cove_u, points_per_side);
+    }
+    let front_u = cove_u + COVE_GAP_CHORD_FRACTION;
+    let thickness = SHROUD_THICKNESS_CHORD_FRACTION;
+    // The flap's top at u: the highest crossing of its outline.
+    let flap_top = |u: f64| {
+        flap_outline
+            .iter()
+            .zip(flap_outline.iter().cycle().skip(1))
+            .filter(|(a, b)| (a.x - u) * (b.x - u) <= 0.0 && a.x != b.x)
+            .map(|(a, b)| a.y + (u - a.x) / (b.x - a.x) * (b.y - a.y))
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let clear_to = |tip: f64| -> Result<bool> {
+        for k in 0..=32 {
+            let u = front_u + (tip - front_u) * k as f64 / 32.0;
+            let underside = airfoil.surface_y(u, Surface::Upper)? - thickness;
+            if underside - flap_top(u) < SHROUD_CLEARANCE_CHORD_FRACTION {
+                return Ok(false);
+            }
+        }
+        Ok(true)
+    };
+    // The longest shroud up to the asked length that clears the flap, to 1e-4 chord.
+    let mut tip = front_u + fraction;
+    if !clear_to(tip)? {
+        let (mut lo, mut hi) = (cove_u, tip);
+        while hi - lo > 1e-4 {
+            let mid = 0.5 * (lo + hi);
+            if clear_to(mid)? {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        tip = lo;
+    }
+    let upper = airfoil.surface_line(Surface::Upper);
+    let lower = airfoil.surface_line(Surface::Lower);
+    let bad = || Error::BadAirfoil {
+        name: airfoil.name.clone(),
+        reason: "flap shroud lies outside the wing section",
+    };
+    let s_tip = upper.arc_at_x(tip).ok_or_else(bad)?;
+    let s_cove = lower.arc_at_x(cove_u).ok_or_else(bad)?;
+    let mut outline: Vec<Point2<f64>> = upper
+        .sample_cosine(0.0, s_tip, points_per_side)
+        .into_iter()
+        .rev()
+        .collect();
+    outline.extend(lower.sample_cosine(0.0, s_cove, points_per_side).into_iter().skip(1));
+    // Up the cove wall, then aft along the shroud's underside to below its tip.
+    let under = SHROUD_UNDERSIDE_POINTS;
+    for k in 0..under {
+        let u = cove_u + (tip - cove_u) * k as f64 / (under - 1) as f64;
+        outline.push(Point2::new(u, airfoil.surface_y(u, Surface::Upper)? - thickness));
+    }
+    Ok(outline)
+}
+
+/// Points along a shroud's underside.
+const SHROUD_UNDERSIDE_POINTS: usize = 12;
 
 /// Chord fraction of the cove wall for a stowed flap outline: its foremost u less the gap.
 pub(crate) fn cove_chord_fraction(outline: &[Point2<f64>]) -> f64 {

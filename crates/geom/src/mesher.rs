@@ -5,7 +5,7 @@ use nalgebra::{Point2, Point3};
 
 use crate::airfoil::{Airfoil, Surface};
 use crate::error::{Error, Result};
-use crate::flap::{cove_chord_fraction, Flap};
+use crate::flap::{cut_wing_outline, Flap};
 use crate::loft::loft_closed;
 use crate::mesh::TriMesh;
 use crate::parts::{MeshResolution, WingModel};
@@ -112,14 +112,7 @@ impl<'a> Mesher<'a> {
                 let section = self.section(y)?;
                 let outline = match flap {
                     None => section.airfoil.points.clone(),
-                    Some(flap) => {
-                        let flap_outline = flap.stowed_outline(y, &section.airfoil, self.resolution.points_per_side)?;
-                        truncated_outline(
-                            &section.airfoil,
-                            cove_chord_fraction(&flap_outline),
-                            self.resolution.points_per_side,
-                        )?
-                    }
+                    Some(flap) => cut_wing_outline(flap, y, &section.airfoil, self.resolution.points_per_side)?,
                 };
                 outlines.push(outline);
                 sections.push(section);

@@ -11,11 +11,11 @@ use nalgebra::Point3;
 
 use crate::airfoil::MIN_POINTS_PER_SIDE;
 use crate::error::{require_range, Error, Result};
-use crate::flap::{cove_chord_fraction, Flap, FlapSpec, COVE_GAP_CHORD_FRACTION};
+use crate::flap::{Flap, FlapSpec, COVE_GAP_CHORD_FRACTION};
 use crate::loft::loft_closed;
 use crate::mesh::TriMesh;
 pub use crate::mesher::MIN_TRAILING_EDGE_GAP_CHORD_FRACTION;
-use crate::mesher::{consistent_trailing_edges, truncated_outline, Mesher};
+use crate::mesher::{consistent_trailing_edges, Mesher};
 use crate::structure::{SparSpec, TorqueTubeSpec};
 use crate::wing::{Wing, WingSpec};
 
@@ -257,10 +257,7 @@ impl WingModel {
             .iter()
             .find(|f| y_m >= f.spec().y_inboard_m && y_m <= f.spec().y_outboard_m);
         let wing_outline = match cut_by {
-            Some(flap) => {
-                let flap_outline = flap.stowed_outline(y_m, &section.airfoil, points_per_side)?;
-                truncated_outline(&section.airfoil, cove_chord_fraction(&flap_outline), points_per_side)?
-            }
+            Some(flap) => crate::flap::cut_wing_outline(flap, y_m, &section.airfoil, points_per_side)?,
             None => consistent_trailing_edges(vec![section.airfoil.points.clone()]).remove(0),
         };
         let mut outlines = vec![SectionOutline {

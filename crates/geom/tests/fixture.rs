@@ -72,6 +72,7 @@ pub fn model() -> WingModel {
             },
             section: FlapSectionSpec::OwnSection { airfoil: n63212() },
             side_gap_m: None,
+            shroud_chord_fraction: 0.0,
         },
         FlapSpec {
             name: "outboard-flap".into(),
@@ -85,6 +86,7 @@ pub fn model() -> WingModel {
             },
             section: FlapSectionSpec::CutOut,
             side_gap_m: None,
+            shroud_chord_fraction: 0.0,
         },
     ];
     let spars = vec![

@@ -115,6 +115,7 @@ fn flap(y_inboard_m: f64, y_outboard_m: f64) -> FlapSpec {
         },
         section: FlapSectionSpec::CutOut,
         side_gap_m: None,
+        shroud_chord_fraction: 0.0,
     }
 }
 
@@ -219,6 +220,7 @@ mod random_wings {
                 hinge: HingeSpec::ChordFraction { chord_fraction: 0.8, depth_below_chord_fraction: 0.05 },
                 section: if own_section { FlapSectionSpec::OwnSection { airfoil: tip } } else { FlapSectionSpec::CutOut },
                 side_gap_m: None,
+            shroud_chord_fraction: 0.0,
             };
             let spar = SparSpec { name: "spar".into(), chord_fraction: 0.2, thickness_m: 0.01 * scale * taper, y_start_m: 0.2 * scale, y_end_m: 4.0 * scale };
             let model = WingModel::try_new(spec, vec![flap], vec![spar], None).unwrap();

@@ -53,6 +53,7 @@ pub fn scene_model(points_per_side: usize) -> WingModel {
             airfoil: dat_airfoil("n63212.dat", points_per_side),
         },
         side_gap_m: Some(0.040),
+        shroud_chord_fraction: 0.0,
     };
     let spar = |name: &str, chord_fraction: f64| SparSpec {
         name: name.into(),

@@ -49,7 +49,7 @@ pub struct DroppedHingeSpec {
     /// The screw's mount; `None`: square to the arm at mid-travel, at the first of a few
     /// standoffs from `actuator_standoff_m` and attachments from
     /// `actuator_attachment_fraction` whose screw and jack body keep clear of the wing, the
-    /// structure and the turning flap ([`screw_jack_placement`]).
+    /// structure and the turning flap ([`crate::placement::screw_jack_placement`]).
     pub actuator_mount: Option<Point2<f64>>,
     /// Distance from the attachment's mid-travel position to a default mount (m).
     pub actuator_standoff_m: f64,
@@ -177,10 +177,13 @@ impl DroppedHinge {
                 .fold(0.0, f64::max)
         });
         let hw = spec.hardware;
-        let margin = 0.5 * hw.link_radius_m;
+        // In-plane margin for the 3D check's clearance and the flap's taper across a part's width.
+        let margin = hw.link_radius_m;
         let choice = ScrewJackChoice {
             arm: (spec.flap_attachments[0], hinge),
             attachment_fraction: spec.actuator_attachment_fraction,
+            // On the arm, then on a horn below the hinge.
+            other_fractions: &[0.65, 0.8, 0.35, 1.4, 1.8],
             mount: spec.actuator_mount,
             standoff_m: spec.actuator_standoff_m,
             min_transmission_rad: spec.min_transmission_angle_rad,
@@ -194,7 +197,7 @@ impl DroppedHinge {
             None => {
                 let poses = turning_flap(hinge, turn);
                 let flap_chord = spec.outline.flap_chord().map_or(0.0, |(_, _, c)| c);
-                let ahead = [0.3, 0.25, 0.2, 0.15, 0.1, 0.05, 0.4, 0.5];
+                let ahead = [0.3, 0.25, 0.2, 0.15, 0.1, 0.05, 0.4, 0.5, 0.7, 1.0];
                 let first = strut_top(&spec.outline, hinge, &ahead, hw.link_radius_m, margin, &poses, None);
                 let behind: Vec<f64> = ahead.iter().rev().copied().collect();
                 let second = strut_top(&spec.outline, hinge, &behind, hw.link_radius_m, margin, &poses, first);
@@ -312,10 +315,18 @@ fn bodies_and_joints(
         Body {
             name: "flap".into(),
             role: BodyRole::Flap,
-            solids: vec![
-                capsule("arm-forward", h, forward, hw.link_radius_m),
-                capsule("arm-aft", h, aft, hw.link_radius_m),
-            ],
+            solids: {
+                let mut solids = vec![
+                    capsule("arm-forward", h, forward, hw.link_radius_m),
+                    capsule("arm-aft", h, aft, hw.link_radius_m),
+                ];
+                // The screw's attachment on a horn below the hinge.
+                let along = (p - forward).dot(&(h - forward)) / (h - forward).norm_squared();
+                if along > 1.0 {
+                    solids.push(capsule("horn", h, p, hw.link_radius_m));
+                }
+                solids
+            },
             speed_bound: SpeedBound {
                 reference: h,
                 linear_per_input: 0.0,
@@ -355,6 +366,11 @@ fn bodies_and_joints(
             speed_bound: SpeedBound::FIXED,
         },
     ];
+    let nut_holder = if (p - forward).dot(&(h - forward)) > (h - forward).norm_squared() {
+        "horn"
+    } else {
+        "arm-forward"
+    };
     let joint = |name: &str, description: &str, geometry, ends, touching: &[(&str, &str)]| Joint {
         name: name.into(),
         description: description.into(),
@@ -375,7 +391,7 @@ fn bodies_and_joints(
             "nut pivoting on the forward arm",
             JointGeometry::Revolute { at: p },
             [JointEnd::Body(NUT), JointEnd::Body(FLAP)],
-            &[("nut", "arm-forward")],
+            &[("nut", nut_holder)],
         ),
         joint(
             "nut-slide",

@@ -1,6 +1,6 @@
 //! The four-bar (Zaccai, Bertels & Vos `003_...` section 3, Figs. 6 and 8): the flap is the
-//! coupler of a four-bar linkage, held at a forward pivot A1 by the crank O1-A1 and at an aft
-//! pivot A2 by the rocker O2-A2; a screw jack from a mount B0 turns the crank about O1 (a
+//! coupler of a four-bar linkage, held at pivot A1 by the crank O1-A1 and at pivot A2 by
+//! the rocker O2-A2 (the crank is the link that turns less); a screw jack from a mount B0 turns the crank about O1 (a
 //! [`RockerDrive`]); struts hold O1 and O2 to the wing's lower skin.
 //!
 //! Synthesis is motion generation for three precision positions (stowed, take-off,
@@ -126,7 +126,8 @@ pub struct FourBarSynthesis {
     pub screw_length_m: f64,
     /// Nominal nut speed (m/s).
     pub nominal_speed_mps: f64,
-    /// Where the struts from O1 and O2 meet the wing's lower skin (m).
+    /// Where the struts from O1 and O2 end (m): on the wing's lower skin, or at the other
+    /// pivot (a beam carrying both).
     pub strut_tops_m: [Point2<f64>; 2],
     /// False when no default placement of the screw or a strut kept clear of the wing,
     /// the structure and the flap at the sampled poses (the interference check says where).
@@ -315,7 +316,7 @@ impl FourBar {
         let mut last_defect = None;
         for first in &forward {
             for second in &aft {
-                // The crank is the forward link.
+                // Each unordered pair once.
                 if spec.forward_pivot.is_none() && spec.aft_pivot.is_none() && first.moving.x <= second.moving.x {
                     continue;
                 }
@@ -328,7 +329,14 @@ impl FourBar {
                     continue;
                 }
                 search.pairs += 1;
-                match check_pair(&spec, first, second) {
+                // The screw drives the link that turns less (a square mount keeps it above
+                // the minimum transmission angle over up to pi - 2 mu_min of rotation).
+                let (crank, rocker) = if first.turns[1].abs() <= second.turns[1].abs() {
+                    (first, second)
+                } else {
+                    (second, first)
+                };
+                match check_pair(&spec, crank, rocker) {
                     Ok((loop_, transmission)) => {
                         search.feasible += 1;
                         let lowest = [loop_.o1, loop_.o2, loop_.a1, loop_.a2]
@@ -392,10 +400,13 @@ impl FourBar {
         let rate_bound = |mu: f64| crank_arm / (loop_.rocker * mu.sin()) + crank_arm / (loop_.coupler * mu.sin());
         let certified = (min_transmission - 0.5 * step * rate_bound(0.5 * min_transmission)).max(0.0);
         let hw = spec.hardware;
-        let margin = 0.5 * hw.link_radius_m;
+        // In-plane margin for the 3D check's clearance and the flap's taper across a part's width.
+        let margin = hw.link_radius_m;
         let choice = ScrewJackChoice {
             arm: (loop_.o1, loop_.a1),
             attachment_fraction: spec.actuator_attachment_fraction,
+            // On the crank, then on a horn beyond its fixed pivot.
+            other_fractions: &[0.35, 0.7, 0.9, -0.4, -0.7],
             mount: spec.actuator_mount,
             standoff_m: spec.actuator_standoff_m,
             min_transmission_rad: spec.min_transmission_angle_rad,
@@ -407,10 +418,24 @@ impl FourBar {
         let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)
             .filter_map(|k| loop_.at(travel * k as f64 / PLACEMENT_SAMPLES as f64).map(|p| p.flap))
             .collect();
-        let ahead = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6];
+        let ahead = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
         let strut =
             |from: Point2<f64>| strut_top(&spec.outline, from, &ahead, hw.link_radius_m, margin, &flap_poses, None);
-        let strut_tops = match (strut(loop_.o1), strut(loop_.o2)) {
+        // A pivot whose strut to the skin would cross the flap's path is held by a beam to
+        // the other pivot instead (one support beam carrying both), if that beam is clear.
+        let beam_clear = |from: Point2<f64>, to: Point2<f64>| {
+            flap_poses.iter().all(|pose| {
+                let back = pose.inverse();
+                crate::outline::segment_distance(&spec.outline.flap, back * from, back * to) > hw.link_radius_m + margin
+            }) && !crate::outline::segment_meets(&spec.outline.wing, from, to)
+        };
+        let (first, second) = (strut(loop_.o1), strut(loop_.o2));
+        let (first, second) = match (first, second) {
+            (Some(a), None) if beam_clear(loop_.o2, loop_.o1) => (Some(a), Some(loop_.o1)),
+            (None, Some(b)) if beam_clear(loop_.o1, loop_.o2) => (Some(loop_.o2), Some(b)),
+            other => other,
+        };
+        let strut_tops = match (first, second) {
             (Some(a), Some(b)) => [a, b],
             (a, b) => {
                 placement_clear = false;
@@ -556,7 +581,7 @@ fn search_failure(search: &FourBarSearch) -> Error {
 }
 
 /// The moving-pivot grid: columns from the flap's leading edge to 90 % of its chord, rows
-/// from half a flap chord below its lower surface up to its mid-thickness.
+/// from 4 % to 60 % of the flap chord below its lower surface.
 fn candidates(spec: &FourBarSpec, search: &mut FourBarSearch, chord: f64) -> Vec<Candidate> {
     let Some((le, _, flap_chord)) = spec.outline.flap_chord() else {
         return Vec::new();
@@ -564,11 +589,13 @@ fn candidates(spec: &FourBarSpec, search: &mut FourBarSearch, chord: f64) -> Vec
     let mut found = Vec::new();
     for i in 0..GRID_COLUMNS {
         let x = le - flap_chord * (0.02 + 0.88 * i as f64 / (GRID_COLUMNS - 1) as f64);
-        let Some((lo, hi)) = vertical_span(&spec.outline.flap, x) else {
+        let Some((lo, _)) = vertical_span(&spec.outline.flap, x) else {
             continue;
         };
         for j in 0..GRID_ROWS {
-            let y = lo - 0.5 * flap_chord + (0.5 * flap_chord + 0.5 * (hi - lo)) * j as f64 / (GRID_ROWS - 1) as f64;
+            // Below the flap's lower surface, on brackets: a pivot inside the flap would
+            // put its link and the screw's nut through the flap.
+            let y = lo - flap_chord * (0.04 + 0.56 * j as f64 / (GRID_ROWS - 1) as f64);
             search.candidates += 1;
             match candidate(spec, Point2::new(x, y), chord) {
                 Ok(c) => found.push(c),
@@ -642,6 +669,18 @@ fn check_pair(
     crank: &Candidate,
     rocker: &Candidate,
 ) -> std::result::Result<(Loop, f64), (SynthesisDefect, String)> {
+    // A square mount at a finite distance loses a few degrees at the ends: keep 10 deg.
+    let drivable = std::f64::consts::PI - 2.0 * spec.min_transmission_angle_rad - 10f64.to_radians();
+    if crank.turns[1].abs() > drivable {
+        return Err((
+            SynthesisDefect::Toggle,
+            format!(
+                "its crank turns {:.1} deg: a screw cannot turn it that far above the minimum transmission angle ({:.1} deg at most)",
+                crank.turns[1].abs().to_degrees(),
+                drivable.to_degrees()
+            ),
+        ));
+    }
     let loop_ = Loop::new(crank.fixed, rocker.fixed, crank.moving, rocker.moving);
     let positions = [spec.takeoff, spec.landing];
     for position in positions {
@@ -670,6 +709,17 @@ fn check_pair(
             return Err((SynthesisDefect::NoRealSolution, "the loop cannot close part way".into()));
         };
         min_transmission = min_transmission.min(pose.transmission);
+        // The fixed pivots stay out of the moving flap.
+        let back = pose.flap.inverse();
+        if inside(&spec.outline.flap, back * loop_.o1) || inside(&spec.outline.flap, back * loop_.o2) {
+            return Err((
+                SynthesisDefect::PivotOutsideRegion,
+                format!(
+                    "the flap passes over a fixed pivot at {:.1} deg of crank",
+                    phi.to_degrees()
+                ),
+            ));
+        }
         if min_transmission < spec.min_transmission_angle_rad {
             return Err((
                 SynthesisDefect::Toggle,
@@ -736,7 +786,13 @@ fn bodies_and_joints(
         Body {
             name: "crank".into(),
             role: BodyRole::Link,
-            solids: vec![capsule("crank", o1, a1, hw.link_radius_m)],
+            // From the screw's attachment when it sits on a horn beyond O1.
+            solids: vec![capsule(
+                "crank",
+                if (c - o1).dot(&(a1 - o1)) < 0.0 { c } else { o1 },
+                a1,
+                hw.link_radius_m,
+            )],
             speed_bound: SpeedBound {
                 reference: o1,
                 linear_per_input: 0.0,

@@ -13,6 +13,9 @@ use crate::rocker_drive::{mount_square_at_mid_travel, turn_about, RockerDrive};
 /// Poses sampled by the placement search.
 pub const PLACEMENT_SAMPLES: usize = 16;
 
+/// A screw's attachment on the turning body and its mount (stowed, m).
+pub type AttachmentAndMount = (Point2<f64>, Point2<f64>);
+
 /// What the screw jack's solids measure (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct JackSize {
@@ -26,7 +29,7 @@ pub struct JackSize {
     pub body_radius_m: f64,
 }
 
-/// A screw jack turning a body about `pivot` by `rotation_rad`: the first (attachment,
+/// A screw jack turning a body about `pivot` by `rotation_rad`: the shallowest (attachment,
 /// mount) pair of `attachments` x `standoffs` (mounts square at mid-travel) whose drive
 /// keeps the transmission angle above `min_transmission_rad` and whose screw (as long as
 /// the longest stroke plus the nut) and jack body keep `margin` clear of `outline` with the
@@ -42,27 +45,48 @@ pub fn screw_jack_placement(
     margin: f64,
     outline: &StationOutline,
     flap_at: &dyn Fn(f64) -> Option<Isometry2<f64>>,
-) -> Option<(Point2<f64>, Point2<f64>)> {
+) -> Result<AttachmentAndMount, Option<AttachmentAndMount>> {
     let rotations: Vec<f64> = (0..=PLACEMENT_SAMPLES)
         .map(|k| rotation_rad * k as f64 / PLACEMENT_SAMPLES as f64)
         .collect();
     let flap_poses: Option<Vec<Isometry2<f64>>> = rotations.iter().map(|&psi| flap_at(psi)).collect();
-    let flap_poses = flap_poses?;
+    let flap_poses = flap_poses.ok_or(None)?;
+    let mut fallback = None;
+    let mut best: Option<(Point2<f64>, Point2<f64>, f64)> = None;
+    // The screw square to the arm at mid-travel first, then turned either way about the
+    // attachment (the ends' transmission angles shift by the turn) to reach below the wing.
+    const TURNS: [f64; 5] = [0.0, -0.35, 0.35, -0.7, 0.7];
+    let mut candidates = Vec::new();
     for &attachment in attachments {
         for &standoff in standoffs {
-            let mount = mount_square_at_mid_travel(pivot, attachment, rotation_rad, standoff);
+            candidates.extend(TURNS.iter().map(|&turn| (attachment, standoff, turn)));
+        }
+    }
+    for (attachment, standoff, turn) in candidates {
+        {
+            let square = mount_square_at_mid_travel(pivot, attachment, rotation_rad, standoff);
+            let middle = turn_about(pivot, 0.5 * rotation_rad) * attachment;
+            let mount = turn_about(middle, turn) * square;
             let Ok(drive) = RockerDrive::try_new(pivot, mount, attachment) else {
                 continue;
             };
             let length = drive.stroke_at(0.0).max(drive.stroke_at(rotation_rad)) + size.nut_radius_m;
+            let transmits = rotations.iter().all(|&psi| {
+                drive
+                    .state(drive.stroke_at(psi))
+                    .is_ok_and(|state| state.transmission_angle_rad >= min_transmission_rad)
+            });
+            if !transmits {
+                continue;
+            }
+            fallback = fallback.or(Some((attachment, mount)));
             let clear = rotations.iter().zip(&flap_poses).all(|(&psi, pose)| {
                 let Ok(state) = drive.state(drive.stroke_at(psi)) else {
                     return false;
                 };
                 let along = (state.attachment - mount).normalize();
                 let poses = std::slice::from_ref(pose);
-                state.transmission_angle_rad >= min_transmission_rad
-                    && outline.capsule_clear(mount, mount + along * length, size.screw_radius_m, margin, poses)
+                outline.capsule_clear(mount, mount + along * length, size.screw_radius_m, margin, poses)
                     && outline.capsule_clear(
                         mount - along * (0.5 * size.body_length_m),
                         mount + along * (0.5 * size.body_length_m),
@@ -72,11 +96,20 @@ pub fn screw_jack_placement(
                     )
             });
             if clear {
-                return Some((attachment, mount));
+                // The shallowest: the lowest point of the jack body and of the screw's free
+                // end over the deployment sets the fairing.
+                let lowest = rotations
+                    .iter()
+                    .filter_map(|&psi| drive.state(drive.stroke_at(psi)).ok())
+                    .map(|state| (mount + (state.attachment - mount).normalize() * length).y)
+                    .fold(mount.y - size.body_radius_m - 0.5 * size.body_length_m, f64::min);
+                if best.is_none_or(|(_, _, y)| lowest > y) {
+                    best = Some((attachment, mount, lowest));
+                }
             }
         }
     }
-    None
+    best.map(|(attachment, mount, _)| (attachment, mount)).ok_or(fallback)
 }
 
 /// How a kind's screw jack is placed: the designer's choices.
@@ -86,6 +119,10 @@ pub struct ScrewJackChoice {
     pub arm: (Point2<f64>, Point2<f64>),
     /// Where on the arm the screw takes hold (first candidate).
     pub attachment_fraction: f64,
+    /// Further candidates when the first is not clear; outside [0, 1] on a horn beyond an
+    /// end of the arm (a horn beyond the pivot moves the other way, so its screw can sit on
+    /// the other side).
+    pub other_fractions: &'static [f64],
     /// The mount, if the designer gives it.
     pub mount: Option<Point2<f64>>,
     /// Base distance from the attachment's mid-travel position to a default mount (m).
@@ -96,8 +133,9 @@ pub struct ScrewJackChoice {
 
 /// The screw jack of a body turning by `rotation_rad` about `pivot`: the designer's mount,
 /// or the first clear candidate of [`screw_jack_placement`] over attachments at
-/// `choice.attachment_fraction`, 0.65, 0.8 and 0.35 of the arm and standoffs 1, 1.6, 2.4
-/// and 0.7 times `choice.standoff_m`; when none is clear, the first candidate and `false`.
+/// `choice.attachment_fraction` and `choice.other_fractions` of the arm and standoffs 1, 1.6, 2.4
+/// and 0.7 times `choice.standoff_m`; when none is clear, the first that transmits well
+/// enough (or the first candidate) and `false`.
 /// Returns (attachment, mount, clear).
 pub fn place_screw_jack(
     pivot: Point2<f64>,
@@ -114,9 +152,9 @@ pub fn place_screw_jack(
     if let Some(mount) = choice.mount {
         return (first, mount, true);
     }
-    let attachments: Vec<Point2<f64>> = [choice.attachment_fraction, 0.65, 0.8, 0.35]
-        .iter()
-        .map(|&f| on_arm(f))
+    let attachments: Vec<Point2<f64>> = std::iter::once(choice.attachment_fraction)
+        .chain(choice.other_fractions.iter().copied())
+        .map(on_arm)
         .collect();
     let standoffs: Vec<f64> = [1.0, 1.6, 2.4, 0.7].iter().map(|k| k * choice.standoff_m).collect();
     match screw_jack_placement(
@@ -130,8 +168,9 @@ pub fn place_screw_jack(
         outline,
         flap_at,
     ) {
-        Some((attachment, mount)) => (attachment, mount, true),
-        None => (
+        Ok((attachment, mount)) => (attachment, mount, true),
+        Err(Some((attachment, mount))) => (attachment, mount, false),
+        Err(None) => (
             first,
             mount_square_at_mid_travel(pivot, first, rotation_rad, choice.standoff_m),
             false,
@@ -157,11 +196,11 @@ pub fn strut_top(
     ahead.iter().find_map(|&k| {
         let top = outline.wing_lower_point(lip + k * flap_chord)?;
         let distinct = avoid.is_none_or(|p| (p - top).norm() > 0.04 * flap_chord);
-        // The strut ends on the skin: clear of the wing short of its top.
+        // The strut ends on the skin by design: it must not cross the wing short of its top.
         let short = top + (from - top).normalize() * (radius + margin);
         let clear = distinct
             && crate::outline::segment_distance(&outline.structure, from, top) > radius + margin
-            && outline.capsule_clear(from, short, radius, margin, &[])
+            && !crate::outline::segment_meets(&outline.wing, from, short)
             && flap_poses.iter().all(|pose| {
                 let back = pose.inverse();
                 crate::outline::segment_distance(&outline.flap, back * from, back * top) > radius + margin

@@ -2,113 +2,16 @@
 //! a box wing with a cove and an elliptic flap nested in it, settings of `003_...` 5.2
 //! (take-off 15 deg, 0 %c gap, 3 %c overlap; landing 35 deg, 2 %c gap, 0 %c overlap).
 
-use flapwright_mechanism::dropped_hinge::{DroppedHinge, DroppedHingeSpec};
-use flapwright_mechanism::four_bar::{FourBar, FourBarSpec};
+use flapwright_mechanism::dropped_hinge::DroppedHinge;
+use flapwright_mechanism::four_bar::FourBar;
 use flapwright_mechanism::seam::FlapMechanism;
-use flapwright_mechanism::{
-    Error, ExternalMoment, FlapMass, LinkHardware, LoadCase, PrecisionPosition, ScrewDrive, StationOutline,
-    SynthesisDefect,
-};
-use flapwright_planes::FlapBehindWing;
+use flapwright_mechanism::{Error, ExternalMoment, LoadCase, PrecisionPosition, SynthesisDefect};
 use nalgebra::{Isometry2, Point2};
 
-/// Wing: nose at x = 3, its upper skin sloping down to the lip at (-0.05, 0.175), a cove
-/// below; flap: an ellipse of chord 0.8
-/// nested in the cove (station frame, m).
-pub fn outline() -> StationOutline {
-    let wing = vec![vec![
-        Point2::new(0.1, 0.0),
-        Point2::new(3.0, 0.0),
-        Point2::new(3.0, 0.25),
-        Point2::new(0.6, 0.25),
-        Point2::new(-0.05, 0.175),
-        Point2::new(-0.05, 0.165),
-        Point2::new(0.1, 0.12),
-    ]];
-    let flap = vec![(0..120)
-        .map(|i| {
-            let a = std::f64::consts::TAU * i as f64 / 120.0;
-            Point2::new(-0.32 + 0.4 * a.cos(), 0.1 + 0.07 * a.sin())
-        })
-        .collect()];
-    StationOutline {
-        wing,
-        flap,
-        structure: Vec::new(),
-    }
-}
+#[path = "model_section.rs"]
+mod model_section;
 
-/// The precision positions of the `003_...` B777 settings in this section.
-pub fn settings(outline: &StationOutline) -> (PrecisionPosition, PrecisionPosition) {
-    let measure = FlapBehindWing::new(&outline.wing, &outline.flap).unwrap();
-    let c = measure.chord_m();
-    let at = |name, deg: f64, gap: f64, overlap: f64| PrecisionPosition {
-        name,
-        deflection_rad: deg.to_radians(),
-        flap: measure
-            .displacement_for_setting(deg.to_radians(), gap * c / 100.0, overlap * c / 100.0)
-            .unwrap(),
-    };
-    (at("takeoff", 15.0, 0.0, 3.0), at("landing", 35.0, 2.0, 0.0))
-}
-
-fn flap_mass() -> FlapMass {
-    FlapMass {
-        mass_kg: 40.0,
-        centre_of_mass_stowed_m: Point2::new(-0.3, 0.1),
-        gravity_mps2: 9.81,
-    }
-}
-
-fn drive() -> ScrewDrive {
-    ScrewDrive {
-        mean_radius_m: 0.012,
-        friction_coefficient: 0.1,
-        turns: 30.0,
-        deployment_time_s: 20.0,
-    }
-}
-
-pub fn dropped_hinge_spec() -> DroppedHingeSpec {
-    let outline = outline();
-    let (takeoff, landing) = settings(&outline);
-    DroppedHingeSpec {
-        landing,
-        takeoff: Some(takeoff),
-        flap_attachments: [
-            outline.flap_lower_point(0.15).unwrap(),
-            outline.flap_lower_point(0.5).unwrap(),
-        ],
-        actuator_attachment_fraction: 0.5,
-        actuator_mount: None,
-        actuator_standoff_m: 0.4,
-        support_points: None,
-        flap_mass: flap_mass(),
-        screw_drive: drive(),
-        min_transmission_angle_rad: 30f64.to_radians(),
-        hardware: LinkHardware::for_flap_chord(0.8),
-        outline,
-    }
-}
-
-pub fn four_bar_spec() -> FourBarSpec {
-    let outline = outline();
-    let (takeoff, landing) = settings(&outline);
-    FourBarSpec {
-        takeoff,
-        landing,
-        forward_pivot: None,
-        aft_pivot: None,
-        min_transmission_angle_rad: 30f64.to_radians(),
-        actuator_attachment_fraction: 0.5,
-        actuator_mount: None,
-        actuator_standoff_m: 0.4,
-        flap_mass: flap_mass(),
-        screw_drive: drive(),
-        hardware: LinkHardware::for_flap_chord(0.8),
-        outline,
-    }
-}
+use model_section::{dropped_hinge_spec, four_bar_spec};
 
 fn landing_load() -> LoadCase {
     LoadCase {

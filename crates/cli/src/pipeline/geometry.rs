@@ -87,6 +87,7 @@ pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) ->
                 hinge,
                 section,
                 side_gap_m: f.side_gap_m,
+                shroud_chord_fraction: f.shroud_chord_fraction.unwrap_or(0.0),
             })
         })
         .collect::<Result<Vec<_>>>()?;

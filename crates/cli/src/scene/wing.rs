@@ -84,6 +84,9 @@ pub struct FlapScene {
     /// chord). A hinge line that is not perpendicular to the streamwise flap sides moves
     /// the sides spanwise as the flap deploys.
     pub side_gap_m: Option<f64>,
+    /// How far the wing's upper skin reaches aft over the stowed flap's nose (fraction of
+    /// the local chord); absent: no shroud.
+    pub shroud_chord_fraction: Option<f64>,
     /// The flap rotation axis.
     pub hinge: HingeScene,
     /// Flap settings, deg of rotation about the hinge axis (trailing edge down positive).

@@ -163,6 +163,15 @@ impl Checker<'_> {
             let (min, max) = flapwright_geom::flap::FLAP_CHORD_FRACTION_RANGE;
             self.in_range(&format!("{path}.{key}"), value, min, max, false);
         }
+        if let Some(shroud) = flap.shroud_chord_fraction {
+            self.in_range(
+                &format!("{path}.shroud_chord_fraction"),
+                shroud,
+                0.0,
+                flapwright_geom::flap::MAX_SHROUD_CHORD_FRACTION,
+                false,
+            );
+        }
         if let Some(gap) = flap.side_gap_m {
             let quarter_span = 0.25 * (flap.y_outboard_m - flap.y_inboard_m).abs();
             self.in_range(&format!("{path}.side_gap_m"), gap, 0.0, quarter_span, false);

@@ -104,3 +104,37 @@ fn an_impossible_four_bar_pivot_is_refused_with_its_defect() {
         "{stderr}"
     );
 }
+
+/// Sweep, dihedral and twist changed alone: the hinge line, the torque tube and the
+/// mechanisms follow the wing (every station is synthesised again and meets its landing
+/// setting), and `check` passes or fails naming the pairs in conflict.
+#[test]
+fn changed_sweep_dihedral_and_twist_are_followed_and_checked() {
+    let text = scene_text()
+        .replace("sweep_deg = 33.0", "sweep_deg = 27.0")
+        .replace("dihedral_deg = 6.0", "dihedral_deg = 9.0")
+        .replace("twist_deg = 3.0", "twist_deg = 5.0")
+        .replace("twist_deg = -2.5", "twist_deg = -4.0");
+    assert_ne!(text, scene_text());
+    let (dir, output) = design(&text);
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let report: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
+    for station in report["stations"].as_array().unwrap() {
+        let landing = &station["flap_position"]["settings"][2];
+        assert_eq!(landing["setting"], "landing");
+        let miss = landing["gap_percent_chord"].as_f64().unwrap() - landing["target_gap_percent_chord"].as_f64().unwrap();
+        assert!(miss.abs() < 1e-6, "{}: landing gap misses by {miss} %c", station["name"]);
+    }
+    let check = run_flapwright(dir.path(), &["check", "scene.toml", "--out", "checked"]);
+    let stdout = String::from_utf8_lossy(&check.stdout);
+    let stderr = String::from_utf8_lossy(&check.stderr);
+    match check.status.code() {
+        Some(0) => assert!(stdout.contains("clearances met") || stderr.contains("clearances met"), "{stdout}{stderr}"),
+        Some(1) => assert!(
+            stderr.contains("interference:") && stderr.contains(" and "),
+            "a failing check names its pairs: {stderr}"
+        ),
+        other => panic!("check exits {other:?}: {stderr}"),
+    }
+}

@@ -123,18 +123,107 @@ fn changed_sweep_dihedral_and_twist_are_followed_and_checked() {
     for station in report["stations"].as_array().unwrap() {
         let landing = &station["flap_position"]["settings"][2];
         assert_eq!(landing["setting"], "landing");
-        let miss = landing["gap_percent_chord"].as_f64().unwrap() - landing["target_gap_percent_chord"].as_f64().unwrap();
-        assert!(miss.abs() < 1e-6, "{}: landing gap misses by {miss} %c", station["name"]);
+        let miss =
+            landing["gap_percent_chord"].as_f64().unwrap() - landing["target_gap_percent_chord"].as_f64().unwrap();
+        assert!(
+            miss.abs() < 1e-6,
+            "{}: landing gap misses by {miss} %c",
+            station["name"]
+        );
     }
     let check = run_flapwright(dir.path(), &["check", "scene.toml", "--out", "checked"]);
     let stdout = String::from_utf8_lossy(&check.stdout);
     let stderr = String::from_utf8_lossy(&check.stderr);
     match check.status.code() {
-        Some(0) => assert!(stdout.contains("clearances met") || stderr.contains("clearances met"), "{stdout}{stderr}"),
+        Some(0) => assert!(
+            stdout.contains("clearances met") || stderr.contains("clearances met"),
+            "{stdout}{stderr}"
+        ),
         Some(1) => assert!(
             stderr.contains("interference:") && stderr.contains(" and "),
             "a failing check names its pairs: {stderr}"
         ),
         other => panic!("check exits {other:?}: {stderr}"),
     }
+}
+
+/// The placard case's flap load is shared among the stations by statics: per flap, the
+/// stations' shares of the flap area add up to the area and their first moment about the
+/// root to the area's (force and moment balance of the lever rule), both against Simpson's
+/// rule on the scene's own planform (the chord is linear in y on this panel and the chord
+/// fraction linear in y, so the integrands are quadratic and cubic and Simpson exact), to
+/// within the error bound of the pipeline's 40 midpoint elements.
+#[test]
+fn the_flight_load_is_shared_among_the_stations_by_statics() {
+    let (dir, output) = design(&scene_text());
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let report: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
+    // Scene values: wing chord 12.0 at y 3.1 to 7.4 at y 10.5; flaps with side gaps 0.40.
+    let chord = |y: f64| 12.0 + (7.4 - 12.0) * (y - 3.1) / (10.5 - 3.1);
+    for (flap, (y_in, y_out, f_in, f_out)) in [("inboard", (4.0, 10.2, 0.24, 0.26))] {
+        let fraction = |y: f64| f_in + (f_out - f_in) * (y - y_in) / (y_out - y_in);
+        let (a, b) = (y_in + 0.40, y_out - 0.40);
+        let simpson = |g: &dyn Fn(f64) -> f64| (b - a) / 6.0 * (g(a) + 4.0 * g(0.5 * (a + b)) + g(b));
+        let area = simpson(&|y| fraction(y) * chord(y));
+        // The first moment's integrand is cubic: Simpson is still exact.
+        let moment = simpson(&|y| y * fraction(y) * chord(y));
+        let (mut shares, mut first_moment) = (0.0, 0.0);
+        for station in report["stations"].as_array().unwrap() {
+            if station["flap"] != flap {
+                continue;
+            }
+            let share = station["mechanism"]["flap_load_share"]["flap_area_share_m2"]
+                .as_f64()
+                .unwrap();
+            let y = station["plane"]["frame"]["origin_m"][1].as_f64().unwrap();
+            shares += share;
+            first_moment += share * y;
+        }
+        // The midpoint rule's error over 40 elements: (b - a) h² / 24 max|g''| (g'' from
+        // a central difference; constant for the quadratic, linear for the cubic).
+        let h = (b - a) / 40.0;
+        let bound = |g: &dyn Fn(f64) -> f64| {
+            let second = |y: f64| (g(y + 0.01) - 2.0 * g(y) + g(y - 0.01)) / 1e-4;
+            (b - a) * h * h / 24.0 * second(a).abs().max(second(b).abs()) * 1.01 + 1e-9
+        };
+        let area_bound = bound(&|y| fraction(y) * chord(y));
+        let moment_bound = bound(&|y| y * fraction(y) * chord(y));
+        assert!(
+            (shares - area).abs() <= area_bound,
+            "{flap}: shares {shares} m² against {area} m² (bound {area_bound})"
+        );
+        assert!(
+            (first_moment - moment).abs() <= moment_bound,
+            "{flap}: first moment {first_moment} against {moment} (bound {moment_bound})"
+        );
+    }
+}
+
+/// A flight condition on a scene whose stations take hinge moments only (the thesis
+/// track), or without its coefficient table, is refused at the case's key.
+#[test]
+fn flight_conditions_are_validated_at_their_keys() {
+    let track = format!(
+        "{}\n[[loads.cases]]\nname = \"placard\"\ndynamic_pressure_pa = 4000.0\nnormal_force_coefficient = [[0.0, 0.3], [35.0, 1.3]]\n",
+        crate::default_scene_text()
+    );
+    let (_dir, output) = design(&track);
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("loads.cases[2]") && stderr.contains("hinge moments only"),
+        "{stderr}"
+    );
+    let no_table = scene_text().replace(
+        "normal_force_coefficient = [[0.0, 0.3], [15.0, 0.8], [35.0, 1.3]]\n",
+        "",
+    );
+    let (_dir, output) = design(&no_table);
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("normal_force_coefficient") && stderr.contains("is required"),
+        "{stderr}"
+    );
 }

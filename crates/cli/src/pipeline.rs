@@ -13,6 +13,7 @@ use crate::scene::Scene;
 
 pub mod exports;
 pub mod flap_position;
+pub mod flight_loads;
 mod geometry;
 mod interference;
 pub mod mechanisms;
@@ -114,6 +115,7 @@ pub fn design_with_progress(
     let mut meshed = Vec::new();
     let mut tube_path_ac: Vec<nalgebra::Point3<f64>> = Vec::new();
     let mut placed = Vec::new();
+    let mut wing_model = None;
     if let Some(wing) = &scene.wing {
         let model = stages.run("geometry", || geometry::build_model(scene, wing, inputs.scene_dir))?;
         tube_path_ac = model.torque_tube().map(|t| t.path_ac.clone()).unwrap_or_default();
@@ -123,15 +125,19 @@ pub fn design_with_progress(
         let stage = if write_stl { "stl" } else { "part-statistics" };
         parts = stages.run(stage, || geometry::write_parts(&meshed, write_stl, out))?;
         placed = stages.run("planes", || stations::place_all(scene, &model, &meshed))?;
+        wing_model = Some(model);
     }
     // After the planes: kinds synthesised from the flap settings need the sections.
     let mut records = stages.run("synthesis", || mechanisms::synthesise_all(scene, placed))?;
     warnings.extend(mechanisms::flap_agreement(&records));
-    if scene.wing.is_some() {
+    if let Some(model) = &wing_model {
         stations::attachment_residuals(&mut records)?;
         let implausible = plausibility::station_problems(scene, &records);
         if !implausible.is_empty() {
             return Err(crate::scene::SceneError::Invalid(implausible).into());
+        }
+        if scene.loads.cases.iter().any(|c| c.is_flight_condition()) {
+            flight_loads::shares(scene, model, &mut records)?;
         }
         if full {
             stages.run("gap-overlap", || {
@@ -170,10 +176,10 @@ pub fn design_with_progress(
         }
     }
     if full && outputs.kinematics {
-        let cases = mechanisms::load_cases(scene);
         let samples = scene.resolution.deployment_samples;
         stages.run("kinematics", || {
             for record in &mut records {
+                let cases = mechanisms::load_cases(scene, record);
                 let mut report = mechanisms::sweep_station(record, &cases, samples, &mut warnings)?;
                 if let Some(measure) = &record.flap_behind_wing {
                     flap_position::annotate_samples(record, measure, &mut report)?;

@@ -505,12 +505,14 @@ impl FlapMechanism for DroppedHinge {
         let p = state.attachment;
         let u = (p - self.synthesis.actuator_mount_m).normalize();
         let force = -wrench.moment_about(h) / cross(p - h, u);
-        let hinge_reaction: Vector2<f64> = -(u * force + wrench.force_n);
-        // Virtual work: F ds + W · dD + C dψ = 0 with dψ/ds from the drive's triangle.
+        let hinge_reaction: Vector2<f64> = -(u * force + wrench.force_n());
+        // Virtual work: F ds + Σ f · dp + C dψ = 0 with dψ/ds from the drive's triangle.
         let rate = state.rotation_per_stroke;
-        let d = wrench.at - h;
-        let centre_velocity = Vector2::new(-d.y, d.x) * rate;
-        let force_virtual_work = -wrench.power(centre_velocity, rate);
+        let velocity_of = |point: Point2<f64>| {
+            let r = point - h;
+            Vector2::new(-r.y, r.x) * rate
+        };
+        let force_virtual_work = -wrench.power(velocity_of, rate);
         Ok(Kinetostatics {
             input,
             deflection_rad: state.rotation_rad,

@@ -251,6 +251,14 @@ pub enum Error {
         /// The numbers behind it.
         detail: String,
     },
+    /// A kind's statics cannot take this load.
+    #[error("the {kind} cannot take {load}")]
+    LoadNotSupported {
+        /// The kind.
+        kind: &'static str,
+        /// The load, in words.
+        load: &'static str,
+    },
     /// urdf-rs could not serialise the robot (its error text; the type is opaque).
     #[error("urdf-rs could not write the robot: {message}")]
     UrdfWrite {

@@ -20,37 +20,60 @@ pub struct FlapMass {
     pub gravity_mps2: f64,
 }
 
-/// The wrench on the flap at one pose (station frame).
+/// The wrench on the flap at one pose (station frame): its weight at the centre of mass,
+/// the flight condition's normal force at its point, and the external couple.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FlapWrench {
     /// Weight (N).
-    pub force_n: Vector2<f64>,
-    /// Where it acts: the centre of mass (m).
-    pub at: Point2<f64>,
+    pub weight_n: Vector2<f64>,
+    /// The centre of mass where it stands (m).
+    pub centre_of_mass: Point2<f64>,
+    /// Aerodynamic normal force (N; zero without a flight condition).
+    pub aero_n: Vector2<f64>,
+    /// Where it acts (m).
+    pub aero_at: Point2<f64>,
     /// Couple, counter-clockwise positive (N m): minus the closing moment M12.
     pub couple_nm: f64,
 }
 
 impl FlapWrench {
     /// The wrench for `mass` with the flap at `flap` (displacement from stowed), under
-    /// `load` at drive fraction `fraction` (the external moment's interpolation variable).
+    /// `load` at drive fraction `fraction` (the external moment's interpolation variable);
+    /// the normal force at the flap's deflection (its displacement's rotation), along the
+    /// stowed +y turned with the flap.
     pub fn new(mass: &FlapMass, flap: &Isometry2<f64>, load: &LoadCase, fraction: f64) -> Self {
+        let (aero_n, aero_at) = match &load.flap_normal_force {
+            Some(normal) => (
+                flap.rotation * Vector2::y() * normal.at(flap.rotation.angle()),
+                flap * normal.at_stowed_m,
+            ),
+            None => (Vector2::zeros(), flap * mass.centre_of_mass_stowed_m),
+        };
         Self {
-            force_n: Vector2::new(0.0, -mass.mass_kg * mass.gravity_mps2),
-            at: flap * mass.centre_of_mass_stowed_m,
+            weight_n: Vector2::new(0.0, -mass.mass_kg * mass.gravity_mps2),
+            centre_of_mass: flap * mass.centre_of_mass_stowed_m,
+            aero_n,
+            aero_at,
             couple_nm: -load.external_moment.at(fraction),
         }
     }
 
+    /// The resultant force (N).
+    pub fn force_n(&self) -> Vector2<f64> {
+        self.weight_n + self.aero_n
+    }
+
     /// Its moment about `point` (N m, counter-clockwise).
     pub fn moment_about(&self, point: Point2<f64>) -> f64 {
-        cross(self.at - point, self.force_n) + self.couple_nm
+        cross(self.centre_of_mass - point, self.weight_n) + cross(self.aero_at - point, self.aero_n) + self.couple_nm
     }
 
     /// Its power per unit input when the flap turns at `angular` (rad per unit input) and
-    /// its centre of mass moves at `velocity` (m per unit input).
-    pub fn power(&self, velocity: Vector2<f64>, angular: f64) -> f64 {
-        self.force_n.dot(&velocity) + self.couple_nm * angular
+    /// its points move at `velocity_of(point)` (m per unit input).
+    pub fn power(&self, velocity_of: impl Fn(Point2<f64>) -> Vector2<f64>, angular: f64) -> f64 {
+        self.weight_n.dot(&velocity_of(self.centre_of_mass))
+            + self.aero_n.dot(&velocity_of(self.aero_at))
+            + self.couple_nm * angular
     }
 }
 

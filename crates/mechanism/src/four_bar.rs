@@ -1026,7 +1026,7 @@ impl FlapMechanism for FourBar {
         // Rocker force on the flap f e2 (two-force member), moments about A1.
         let e2 = (pose.a2 - l.o2) / l.rocker;
         let rocker_force = -wrench.moment_about(pose.a1) / cross(pose.a2 - pose.a1, e2);
-        let pin_a1: Vector2<f64> = -(e2 * rocker_force + wrench.force_n);
+        let pin_a1: Vector2<f64> = -(e2 * rocker_force + wrench.force_n());
         // Crank: the flap pushes it with -R1 at A1, the screw with F u at C; moments about O1.
         let c = state.attachment;
         let u = (c - self.synthesis.actuator_mount_m).normalize();
@@ -1038,9 +1038,11 @@ impl FlapMechanism for FourBar {
         let flap_rate = flap_per_crank * crank_rate;
         let r1 = pose.a1 - l.o1;
         let v_a1 = Vector2::new(-r1.y, r1.x) * crank_rate;
-        let d = wrench.at - pose.a1;
-        let v_d = v_a1 + Vector2::new(-d.y, d.x) * flap_rate;
-        let force_virtual_work = -wrench.power(v_d, flap_rate);
+        let velocity_of = |point: Point2<f64>| {
+            let d = point - pose.a1;
+            v_a1 + Vector2::new(-d.y, d.x) * flap_rate
+        };
+        let force_virtual_work = -wrench.power(velocity_of, flap_rate);
         let conditioning = state
             .jacobian_condition_number
             .max(l.coupler.max(l.rocker) / (l.coupler.min(l.rocker) * pose.transmission.sin()));

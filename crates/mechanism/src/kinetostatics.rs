@@ -49,6 +49,42 @@ pub struct LoadCase {
     /// Add the flap's inertia (d'Alembert: m a_D and I_D α12) to the quasi-static balance.
     #[serde(default)]
     pub include_inertia: bool,
+    /// An aerodynamic normal force on the flap from a flight condition (absent: the external
+    /// moment alone). Kinds synthesised from the flap settings take it; the thesis track's
+    /// statics (thesis eqs. 3.4.x) have a moment and the weight only and refuse it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub flap_normal_force: Option<FlapNormalForce>,
+}
+
+/// The normal force a flight condition puts on the flap share of one station: `C_N(δ)`
+/// times `newtons_per_coefficient` (dynamic pressure x load factor x the station's share
+/// of the flap area, `003_...` eq. 1 summed over the spanwise elements the station
+/// carries), along the flap's upward normal (the stowed +y turned with the flap), at a
+/// point fixed to the flap (the quarter chord).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FlapNormalForce {
+    /// (deflection rad, C_N) rows, deflection increasing; linear between, held beyond.
+    pub coefficients: Vec<(f64, f64)>,
+    /// N per unit C_N.
+    pub newtons_per_coefficient: f64,
+    /// Where it acts on the stowed flap (station frame, m).
+    pub at_stowed_m: nalgebra::Point2<f64>,
+}
+
+impl FlapNormalForce {
+    /// The normal force (N) at deflection `deflection_rad`.
+    pub fn at(&self, deflection_rad: f64) -> f64 {
+        let rows = &self.coefficients;
+        let coefficient = match rows.iter().position(|&(d, _)| d >= deflection_rad) {
+            None => rows.last().map_or(0.0, |r| r.1),
+            Some(0) => rows[0].1,
+            Some(k) => {
+                let ((d0, c0), (d1, c1)) = (rows[k - 1], rows[k]);
+                c0 + (c1 - c0) * (deflection_rad - d0) / (d1 - d0)
+            }
+        };
+        coefficient * self.newtons_per_coefficient
+    }
 }
 
 impl LoadCase {
@@ -61,6 +97,7 @@ impl LoadCase {
             name: "cruise".to_owned(),
             external_moment: ExternalMoment::Constant(0.5 * 750.0),
             include_inertia: false,
+            flap_normal_force: None,
         }
     }
 
@@ -74,6 +111,7 @@ impl LoadCase {
                 deployed_nm: 0.5 * 650.0,
             },
             include_inertia: false,
+            flap_normal_force: None,
         }
     }
 }

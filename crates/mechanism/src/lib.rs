@@ -100,7 +100,7 @@ pub use dropped_hinge::{DroppedHinge, DroppedHingeSpec};
 pub use error::{Error, Result, SynthesisDefect};
 pub use flap_load::{FlapMass, LinkHardware};
 pub use four_bar::{FourBar, FourBarSpec};
-pub use kinetostatics::{ExternalMoment, Forces, LoadCase};
+pub use kinetostatics::{ExternalMoment, FlapNormalForce, Forces, LoadCase};
 pub use outline::StationOutline;
 pub use planar_solve::PlanarSolution;
 pub use precision::PrecisionPosition;

@@ -333,6 +333,12 @@ impl FlapMechanism for CircularArcTrack {
     }
 
     fn kinetostatics(&self, input: f64, load: &LoadCase) -> Result<Kinetostatics> {
+        if load.flap_normal_force.is_some() {
+            return Err(crate::error::Error::LoadNotSupported {
+                kind: "circular-arc-track",
+                load: "a flight condition's normal force (its statics, thesis eqs. 3.4.x, take a hinge moment and the weight only): give the case as moments",
+            });
+        }
         let spec = self.spec();
         let pose = CircularArcTrack::pose(self, input, spec.nominal_input_speed_mps, spec.nominal_input_accel_mps2)?;
         let forces = self.forces(&pose, load)?;

@@ -147,6 +147,7 @@ fn inertia_balances_by_virtual_work_and_by_newton_euler() {
             deployed_nm: 325.0,
         },
         include_inertia: true,
+        flap_normal_force: None,
     };
     let weight = spec.flap_mass_kg * spec.gravity_mps2;
     let synthesis = track.synthesis();
@@ -177,6 +178,7 @@ fn inertia_balances_by_virtual_work_and_by_newton_euler() {
     // At the thesis's 35 mm/s the inertia changes F_input by far less than 0.1 % (Fig. 31).
     let slow = LoadCase {
         include_inertia: true,
+        flap_normal_force: None,
         ..LoadCase::thesis_landing()
     };
     for i in 0..=12 {

@@ -5,7 +5,7 @@
 use flapwright_mechanism::dropped_hinge::DroppedHinge;
 use flapwright_mechanism::four_bar::FourBar;
 use flapwright_mechanism::seam::FlapMechanism;
-use flapwright_mechanism::{Error, ExternalMoment, LoadCase, PrecisionPosition, SynthesisDefect};
+use flapwright_mechanism::{Error, ExternalMoment, FlapNormalForce, LoadCase, PrecisionPosition, SynthesisDefect};
 use nalgebra::{Isometry2, Point2};
 
 #[path = "model_section.rs"]
@@ -21,6 +21,7 @@ fn landing_load() -> LoadCase {
             deployed_nm: 2000.0,
         },
         include_inertia: false,
+        flap_normal_force: None,
     }
 }
 
@@ -79,9 +80,23 @@ fn statics_and_virtual_work_agree() {
         Box::new(DroppedHinge::synthesise(dropped_hinge_spec()).unwrap()),
         Box::new(FourBar::synthesise(four_bar_spec()).unwrap()),
     ];
+    // A flight condition's normal force at the quarter chord, C_N rising with deflection.
+    let flight = LoadCase {
+        flap_normal_force: Some(FlapNormalForce {
+            coefficients: vec![(0.0, 0.3), (20f64.to_radians(), 0.9), (35f64.to_radians(), 1.3)],
+            newtons_per_coefficient: 8000.0,
+            at_stowed_m: Point2::new(-0.12, 0.1),
+        }),
+        ..landing_load()
+    };
     for mechanism in &kinds {
-        for input in mechanism.input_range().samples(25) {
-            let loads = mechanism.kinetostatics(input, &landing_load()).unwrap();
+        for (input, load) in mechanism
+            .input_range()
+            .samples(25)
+            .into_iter()
+            .flat_map(|q| [(q, landing_load()), (q, flight.clone())])
+        {
+            let loads = mechanism.kinetostatics(input, &load).unwrap();
             let relative = (loads.actuator_load - loads.actuator_load_virtual_work).abs() / loads.actuator_load.abs();
             assert!(relative < 1e-9, "{}: {relative}", mechanism.kind());
             assert!(loads.health.closure_residual_m < 1e-12);
@@ -104,6 +119,7 @@ fn rates_and_transmission_angle_match_finite_differences() {
             name: "couple".into(),
             external_moment: ExternalMoment::Constant(-1.0),
             include_inertia: false,
+            flap_normal_force: None,
         };
         let mut massless = four_bar_spec();
         massless.flap_mass.mass_kg = 0.0;

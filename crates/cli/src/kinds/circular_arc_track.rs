@@ -198,4 +198,9 @@ impl KindScene for CircularArcTrackScene {
     fn geometry_keys(&self) -> &'static str {
         SCREW_GEOMETRY_KEYS
     }
+
+    /// The thesis statics (eqs. 3.4.x) take a hinge moment and the weight only.
+    fn takes_normal_force(&self) -> bool {
+        false
+    }
 }

@@ -151,6 +151,12 @@ pub trait KindScene {
 
     /// The keys that decide the kind's geometry, for messages about degenerate layouts.
     fn geometry_keys(&self) -> &'static str;
+
+    /// True when the kind's statics take a flight condition's normal force on the flap
+    /// (false: hinge moments only).
+    fn takes_normal_force(&self) -> bool {
+        true
+    }
 }
 
 /// `[station.mechanism]`: `kind` picks the variant, the other keys are its dimensions.

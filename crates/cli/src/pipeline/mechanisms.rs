@@ -38,6 +38,8 @@ pub struct StationRecord {
     pub fairing: Option<FairingDepth>,
     /// Deployments under every load case (kinematics stage).
     pub kinematics: Option<MechanismReport>,
+    /// Its share of its flap's flight load (after the planes, with a wing).
+    pub flap_load_share: Option<crate::pipeline::flight_loads::FlapLoadShare>,
 }
 
 /// The report's record of one station's mechanism: kind-neutral apart from `details`.
@@ -51,6 +53,9 @@ pub struct MechanismReport {
     pub details: serde_json::Value,
     /// One deployment per load case.
     pub load_cases: Vec<Deployment>,
+    /// Its share of its flap's flight load, where a case gives a flight condition.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub flap_load_share: Option<crate::pipeline::flight_loads::FlapLoadShare>,
 }
 
 /// Synthesises every station, each with its placed plane where the scene has a wing
@@ -92,6 +97,7 @@ pub fn synthesise_all(scene: &Scene, placed: Vec<PlacedStation>) -> Result<Vec<S
                     flap_position: None,
                     fairing: None,
                     kinematics: None,
+                    flap_load_share: None,
                 })
             }
             Err(message) => problems.push(Problem { path, message }),
@@ -209,6 +215,7 @@ fn degeneracies(mechanism: &dyn FlapMechanism, path: &str, keys: &str) -> Vec<Pr
         name: "unloaded".into(),
         external_moment: ExternalMoment::Constant(0.0),
         include_inertia: false,
+        flap_normal_force: None,
     };
     let quantity = mechanism.input_range().quantity;
     let probe = match sweep_deployment(mechanism, 2, &unloaded) {
@@ -255,21 +262,13 @@ fn degeneracies(mechanism: &dyn FlapMechanism, path: &str, keys: &str) -> Vec<Pr
 }
 
 /// The scene's load cases in the mechanism crate's terms.
-pub fn load_cases(scene: &Scene) -> Vec<LoadCase> {
+/// The scene's load cases at `record` (flight conditions shared among its flap's stations).
+pub fn load_cases(scene: &Scene, record: &StationRecord) -> Vec<LoadCase> {
     scene
         .loads
         .cases
         .iter()
-        .map(|case| LoadCase {
-            name: case.name.clone(),
-            external_moment: match (case.moment_nm, case.moment_stowed_nm, case.moment_deployed_nm) {
-                (Some(moment), _, _) => ExternalMoment::Constant(moment),
-                (None, Some(stowed_nm), Some(deployed_nm)) => ExternalMoment::Linear { stowed_nm, deployed_nm },
-                // Validation guarantees one of the two forms; no moment is the honest fallback.
-                _ => ExternalMoment::Constant(0.0),
-            },
-            include_inertia: false,
-        })
+        .map(|case| crate::pipeline::flight_loads::load_case(case, record))
         .collect()
 }
 
@@ -284,6 +283,7 @@ pub fn sweep_station(
         name: "weight-only".into(),
         external_moment: ExternalMoment::Constant(0.0),
         include_inertia: false,
+        flap_normal_force: None,
     }];
     let cases = if cases.is_empty() { &weight_only[..] } else { cases };
     let seam = mechanism.mechanism.as_ref();
@@ -311,6 +311,9 @@ pub fn sweep_station(
         input,
         details: seam.details(),
         load_cases: deployments,
+        flap_load_share: mechanism
+            .flap_load_share
+            .filter(|_| cases.iter().any(|c| c.flap_normal_force.is_some())),
     })
 }
 

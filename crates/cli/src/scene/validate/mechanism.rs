@@ -91,6 +91,63 @@ impl Checker<'_> {
         }
     }
 
+    /// A flight-condition case: one form of dynamic pressure, a C_N table, a wing to take
+    /// the flap areas from, and kinds whose statics take a normal force.
+    fn flight_condition(&mut self, scene: &Scene, case: &crate::scene::LoadCaseScene, path: &str) {
+        if case.moment_nm.is_some() || case.moment_stowed_nm.is_some() || case.moment_deployed_nm.is_some() {
+            self.fail(path, "give either moments or a flight condition, not both");
+        }
+        match (case.dynamic_pressure_pa, case.speed_mps, case.density_kgpm3) {
+            (Some(q), None, None) => {
+                self.in_range(&format!("{path}.dynamic_pressure_pa"), q, 0.0, 1e6, true);
+            }
+            (None, Some(v), Some(rho)) => {
+                self.in_range(&format!("{path}.speed_mps"), v, 0.0, 500.0, true);
+                self.in_range(&format!("{path}.density_kgpm3"), rho, 0.0, 2.0, true);
+            }
+            _ => self.fail(
+                path,
+                "a flight condition gives dynamic_pressure_pa, or speed_mps and density_kgpm3",
+            ),
+        }
+        if let Some(n) = case.load_factor {
+            self.in_range(&format!("{path}.load_factor"), n, -5.0, 10.0, false);
+        }
+        match &case.normal_force_coefficient {
+            None => self.fail(
+                format!("{path}.normal_force_coefficient"),
+                "is required for a flight condition: rows [deflection_deg, C_N]",
+            ),
+            Some(rows) if rows.is_empty() || rows.len() > 64 => self.fail(
+                format!("{path}.normal_force_coefficient"),
+                format!("has {} rows: give 1 to 64 rows [deflection_deg, C_N]", rows.len()),
+            ),
+            Some(rows) => {
+                for (k, [deflection, coefficient]) in rows.iter().enumerate() {
+                    let row = format!("{path}.normal_force_coefficient[{k}]");
+                    self.in_range(&row, *deflection, -10.0, 90.0, false);
+                    self.in_range(&row, *coefficient, -5.0, 5.0, false);
+                    if k > 0 && (deflection.is_nan() || *deflection <= rows[k - 1][0]) {
+                        self.fail(row, "deflections must increase from row to row");
+                    }
+                }
+            }
+        }
+        if scene.wing.is_none() {
+            self.fail(path, "a flight condition needs a [wing]: the flap areas come from it");
+        }
+        for (j, station) in scene.station.iter().enumerate() {
+            if !station.mechanism.kind().takes_normal_force() {
+                self.fail(
+                    path,
+                    format!(
+                        "station[{j}]'s mechanism takes hinge moments only: give this case as moments, or synthesise the station from the flap settings"
+                    ),
+                );
+            }
+        }
+    }
+
     pub(super) fn loads(&mut self, scene: &Scene) {
         if let Some(factor) = scene.loads.safety_factor {
             self.in_range("loads.safety_factor", factor, 1.0, 10.0, false);
@@ -98,6 +155,10 @@ impl Checker<'_> {
         self.unique_names("loads.cases", scene.loads.cases.iter().map(|c| c.name.as_str()));
         for (i, case) in scene.loads.cases.iter().enumerate() {
             let path = format!("loads.cases[{i}]");
+            if case.is_flight_condition() {
+                self.flight_condition(scene, case, &path);
+                continue;
+            }
             match (case.moment_nm, case.moment_stowed_nm, case.moment_deployed_nm) {
                 (Some(m), None, None) => {
                     self.in_range(&format!("{path}.moment_nm"), m, -1e9, 1e9, false);

@@ -1,0 +1,120 @@
+//! Loads from a flight condition (issue 14 step 6): the flap's normal force by spanwise
+//! elements, `N_i = C_N c_i b_i q n` (`003_...` eq. 1, [`flapwright_sizing::loads`]),
+//! shared among the flap's stations by the lever rule of
+//! [`flapwright_sizing::distribute_to_stations`] (each span between neighbouring stations
+//! a simply supported beam, overhangs to the end stations; one station takes it all), and
+//! applied at each station's flap quarter chord along the flap's normal (`003_...` section
+//! 4.1: "the resultant flap load distribution acts on the quarter-chord line").
+//!
+//! C_N is the same along the span, so a station's share is C_N(δ) q n times its share of
+//! the flap's area, found once with unit loads c_i b_i. Simplification: each station's
+//! share acts at its own quarter-chord point (the moment the elements' quarter-chord line
+//! makes about the station's, over a tapered flap, is not carried across).
+
+use anyhow::{Context, Result};
+use flapwright_geom::parts::WingModel;
+use flapwright_mechanism::outline::{extent_x, vertical_span};
+use flapwright_mechanism::{ExternalMoment, FlapNormalForce, LoadCase};
+use flapwright_sizing::{distribute_to_stations, ElementLoad};
+use nalgebra::Point2;
+use serde::Serialize;
+
+use crate::pipeline::mechanisms::StationRecord;
+use crate::scene::{LoadCaseScene, Scene};
+
+/// Spanwise elements of a flap: the midpoint rule's error on a flap chord that varies
+/// quadratically along the span (a linear chord fraction of a linear wing chord) is
+/// (span/elements)^2/24 of the chord's curvature, below 1e-4 of the area here.
+pub const FLAP_ELEMENTS: usize = 40;
+
+/// A station's share of its flap's flight load.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FlapLoadShare {
+    /// The station's share of the flap area (m²): its normal force is C_N q n times this.
+    pub flap_area_share_m2: f64,
+    /// The flap's quarter-chord point in the station plane, stowed (station frame, m).
+    pub quarter_chord_st_m: [f64; 2],
+}
+
+/// Each placed record's share of its flap's area and the point its share acts at.
+pub fn shares(scene: &Scene, model: &WingModel, records: &mut [StationRecord]) -> Result<()> {
+    for (f, flap) in model.flaps().iter().enumerate() {
+        let name = &scene.flap[f].name;
+        let (y_in, y_out) = flap.body_span_m(model.wing())?;
+        let width = (y_out - y_in) / FLAP_ELEMENTS as f64;
+        let elements = (0..FLAP_ELEMENTS)
+            .map(|i| {
+                let y = y_in + (i as f64 + 0.5) * width;
+                let (_, chord, _) = model.wing().planform_at(y)?;
+                Ok(ElementLoad {
+                    span_position_m: y,
+                    normal_force_n: flap.chord_fraction_at(y) * chord * width,
+                    chordwise_position_m: 0.0,
+                    pitching_moment_nm: 0.0,
+                })
+            })
+            .collect::<Result<Vec<_>>>()?;
+        let mut stations: Vec<(usize, f64)> = records
+            .iter()
+            .enumerate()
+            .filter(|(_, r)| r.flap.as_ref() == Some(name))
+            .filter_map(|(i, r)| Some((i, r.placed.as_ref()?.station.frame.origin_ac().y)))
+            .collect();
+        stations.sort_by(|a, b| a.1.total_cmp(&b.1));
+        let area: f64 = elements.iter().map(|e| e.normal_force_n).sum();
+        let areas: Vec<f64> = match stations.len() {
+            0 => continue,
+            1 => vec![area],
+            _ => {
+                let positions: Vec<f64> = stations.iter().map(|s| s.1).collect();
+                distribute_to_stations(&elements, &positions)
+                    .with_context(|| format!("sharing flap {name}'s load among its stations"))?
+                    .iter()
+                    .map(|s| s.normal_force_n)
+                    .collect()
+            }
+        };
+        for (&(i, _), share) in stations.iter().zip(areas) {
+            let record = &mut records[i];
+            let placed = record.placed.as_ref().context("station not placed")?;
+            let polygons = placed.polygons_of(|part| part == name);
+            let (te, le) = extent_x(&polygons).context("the station plane misses its flap")?;
+            let x = le - 0.25 * (le - te);
+            let (lo, hi) = vertical_span(&polygons, x).context("the station plane misses its flap")?;
+            record.flap_load_share = Some(FlapLoadShare {
+                flap_area_share_m2: share,
+                quarter_chord_st_m: [x, 0.5 * (lo + hi)],
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The load case `case` at `record`: its moments, or its flight condition's normal force on
+/// the record's share of the flap.
+pub fn load_case(case: &LoadCaseScene, record: &StationRecord) -> LoadCase {
+    let external_moment = match (case.moment_nm, case.moment_stowed_nm, case.moment_deployed_nm) {
+        (Some(moment), _, _) => ExternalMoment::Constant(moment),
+        (None, Some(stowed_nm), Some(deployed_nm)) => ExternalMoment::Linear { stowed_nm, deployed_nm },
+        // A flight condition, or (validation guarantees one form) no moment.
+        _ => ExternalMoment::Constant(0.0),
+    };
+    let flap_normal_force = match (
+        case.dynamic_pressure(),
+        &case.normal_force_coefficient,
+        record.flap_load_share,
+    ) {
+        (Some(q), Some(rows), Some(share)) => Some(FlapNormalForce {
+            coefficients: rows.iter().map(|[deg, c]| (deg.to_radians(), *c)).collect(),
+            newtons_per_coefficient: q * case.load_factor.unwrap_or(1.0) * share.flap_area_share_m2,
+            at_stowed_m: Point2::new(share.quarter_chord_st_m[0], share.quarter_chord_st_m[1]),
+        }),
+        _ => None,
+    };
+    LoadCase {
+        name: case.name.clone(),
+        external_moment,
+        include_inertia: false,
+        flap_normal_force,
+    }
+}

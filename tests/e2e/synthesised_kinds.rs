@@ -13,6 +13,14 @@ fn design(scene_text: &str) -> (tempfile::TempDir, std::process::Output) {
     (dir, output)
 }
 
+/// Designs `scene_text`, which must succeed, and reads its report.
+fn designed(scene_text: &str) -> (tempfile::TempDir, Value) {
+    let (dir, output) = design(scene_text);
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let report = serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
+    (dir, report)
+}
+
 fn scene_text() -> String {
     std::fs::read_to_string(repo_root().join("data/scenes/transport-flap.toml")).unwrap()
 }
@@ -22,10 +30,7 @@ fn scene_text() -> String {
 /// miss; statics and virtual work agree at every sample; nothing is NaN.
 #[test]
 fn synthesised_kinds_meet_their_precision_positions_through_the_pipeline() {
-    let (dir, output) = design(&scene_text());
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
-    let report: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
+    let (_dir, report) = designed(&scene_text());
     let stations = report["stations"].as_array().unwrap();
     let kinds: Vec<&str> = stations
         .iter()
@@ -116,10 +121,7 @@ fn changed_sweep_dihedral_and_twist_are_followed_and_checked() {
         .replace("twist_deg = 3.0", "twist_deg = 5.0")
         .replace("twist_deg = -2.5", "twist_deg = -4.0");
     assert_ne!(text, scene_text());
-    let (dir, output) = design(&text);
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
-    let report: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
+    let (dir, report) = designed(&text);
     for station in report["stations"].as_array().unwrap() {
         let landing = &station["flap_position"]["settings"][2];
         assert_eq!(landing["setting"], "landing");
@@ -155,10 +157,7 @@ fn changed_sweep_dihedral_and_twist_are_followed_and_checked() {
 /// within the error bound of the pipeline's 40 midpoint elements.
 #[test]
 fn the_flight_load_is_shared_among_the_stations_by_statics() {
-    let (dir, output) = design(&scene_text());
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
-    let report: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
+    let (_dir, report) = designed(&scene_text());
     // Scene values: wing chord 12.0 at y 3.1 to 7.4 at y 10.5; flaps with side gaps 0.40.
     let chord = |y: f64| 12.0 + (7.4 - 12.0) * (y - 3.1) / (10.5 - 3.1);
     for (flap, (y_in, y_out, f_in, f_out)) in [("inboard", (4.0, 10.2, 0.24, 0.26))] {

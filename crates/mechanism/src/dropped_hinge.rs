@@ -29,7 +29,7 @@ use crate::rocker_drive::{cross, turn_about, RockerDrive};
 use crate::screw_jack::{ScrewDrive, ScrewJack};
 use crate::seam::{
     Actuator, Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd,
-    JointGeometry, Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound,
+    JointGeometry, Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound, TwoForceMember,
 };
 
 const KIND: &str = "dropped-hinge";
@@ -518,11 +518,22 @@ impl FlapMechanism for DroppedHinge {
             deflection_rad: state.rotation_rad,
             actuator_load: force,
             actuator_load_virtual_work: force_virtual_work,
-            reactions: vec![
-                ("B0".into(), force),
-                ("H".into(), hinge_reaction.norm()),
-                ("P".into(), force),
-            ],
+            reactions: {
+                // The truss members' axial forces (tension positive): at the hinge node they
+                // balance the flap's push, sum t_i u_i = R_H with u_i towards each member's
+                // wing end.
+                let [s1, s2] = self.synthesis.support_points_m;
+                let (u1, u2) = ((s1 - h).normalize(), (s2 - h).normalize());
+                let det = cross(u1, u2);
+                let (t1, t2) = (cross(hinge_reaction, u2) / det, cross(u1, hinge_reaction) / det);
+                vec![
+                    ("B0".into(), force),
+                    ("H".into(), hinge_reaction.norm()),
+                    ("P".into(), force),
+                    ("truss-aft".into(), t2),
+                    ("truss-forward".into(), t1),
+                ]
+            },
             transmission_angle_rad: state.transmission_angle_rad,
             health: PoseHealth {
                 closure_residual_m: state.closure_residual_m,
@@ -573,6 +584,20 @@ impl FlapMechanism for DroppedHinge {
             screw_length_m: self.synthesis.screw_length_m,
             nominal_speed_mps: self.synthesis.nominal_speed_mps,
         }
+    }
+
+    /// The support truss's two members (the arms are part of the flap's hinged structure).
+    fn members(&self) -> Vec<TwoForceMember> {
+        let h = self.synthesis.hinge_m;
+        ["truss-forward", "truss-aft"]
+            .iter()
+            .zip(self.synthesis.support_points_m)
+            .map(|(name, end)| TwoForceMember {
+                name: name.to_string(),
+                length_m: (end - h).norm(),
+                radius_m: self.spec.hardware.link_radius_m,
+            })
+            .collect()
     }
 
     fn warnings(&self) -> Vec<String> {

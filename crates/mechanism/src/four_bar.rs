@@ -35,7 +35,7 @@ use crate::rocker_drive::{cross, turn_about, RockerDrive};
 use crate::screw_jack::{ScrewDrive, ScrewJack};
 use crate::seam::{
     Actuator, Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd,
-    JointGeometry, Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound,
+    JointGeometry, Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound, TwoForceMember,
 };
 
 const KIND: &str = "four-bar";
@@ -1058,6 +1058,8 @@ impl FlapMechanism for FourBar {
                 ("C".into(), force),
                 ("O1".into(), crank_ground.norm()),
                 ("O2".into(), rocker_force),
+                // The rocker's axial force, tension positive (f pushes the flap away from O2).
+                ("rocker".into(), -rocker_force),
             ],
             transmission_angle_rad: pose.transmission.min(state.transmission_angle_rad),
             health: PoseHealth {
@@ -1109,6 +1111,15 @@ impl FlapMechanism for FourBar {
             screw_length_m: self.synthesis.screw_length_m,
             nominal_speed_mps: self.synthesis.nominal_speed_mps,
         }
+    }
+
+    /// The rocker (the crank carries the screw as well: three forces, not sized here).
+    fn members(&self) -> Vec<TwoForceMember> {
+        vec![TwoForceMember {
+            name: "rocker".into(),
+            length_m: self.loop_.rocker,
+            radius_m: self.spec.hardware.link_radius_m,
+        }]
     }
 
     fn warnings(&self) -> Vec<String> {

@@ -293,6 +293,20 @@ pub struct Joint {
     pub touching_solids: Vec<(String, String)>,
 }
 
+/// A link that carries load only along the line of its two pins (a two-force member,
+/// `003_...` 4.1: "rods ... loaded in axial direction only"): sized for strength and Euler
+/// buckling from its axial force, which the kind's kinetostatics report among the
+/// reactions under the member's name, tension positive.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TwoForceMember {
+    /// The member's solid name (and its axial force's key in the reactions).
+    pub name: String,
+    /// Pin-to-pin length (m).
+    pub length_m: f64,
+    /// Radius of the solid that stands for it (m): the room the station leaves.
+    pub radius_m: f64,
+}
+
 /// A named point of a pose (station frame, m): a pivot, a pin, the centre of mass.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct NamedPoint {
@@ -418,6 +432,11 @@ pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
 
     /// Conditions worth a designer's look that do not stop the design, in words.
     fn warnings(&self) -> Vec<String>;
+
+    /// The two-force members to size (their axial forces are among the reactions).
+    fn members(&self) -> Vec<TwoForceMember> {
+        Vec::new()
+    }
 }
 
 /// A solid where it stands at `pose` (station frame).

@@ -209,3 +209,43 @@ proptest::proptest! {
         }
     }
 }
+
+/// The dropped hinge's truss forces, checked by the whole mechanism's equilibrium (an
+/// independent balance: the ground holds it only at the truss ends S1, S2 and the screw
+/// mount B0): the weight, the couple, and the ground forces t_i u_i at S_i and F u at B0
+/// sum to zero in force and in moment.
+#[test]
+fn dropped_hinge_truss_forces_balance_the_whole_mechanism() {
+    let hinge = DroppedHinge::synthesise(dropped_hinge_spec()).unwrap();
+    let load = landing_load();
+    let mass = dropped_hinge_spec().flap_mass;
+    let range = hinge.input_range();
+    for input in range.samples(9) {
+        let pose = hinge.pose(input).unwrap();
+        let loads = hinge.kinetostatics(input, &load).unwrap();
+        let reaction = |name: &str| loads.reactions.iter().find(|(n, _)| n == name).unwrap().1;
+        let point = |name: &str| pose.point(name).unwrap();
+        let (h, s1, s2, b0, p, d) = (
+            point("H"),
+            point("S1"),
+            point("S2"),
+            point("B0"),
+            point("P"),
+            point("D"),
+        );
+        let weight = nalgebra::Vector2::new(0.0, -mass.mass_kg * mass.gravity_mps2);
+        let couple = -load.external_moment.at(range.fraction(input));
+        let u = (p - b0).normalize();
+        let forces = [
+            (d, weight),
+            (s1, (s1 - h).normalize() * reaction("truss-forward")),
+            (s2, (s2 - h).normalize() * reaction("truss-aft")),
+            (b0, u * reaction("B0")),
+        ];
+        let net: nalgebra::Vector2<f64> = forces.iter().map(|(_, f)| f).sum();
+        let moment: f64 = forces.iter().map(|(at, f)| at.coords.perp(f)).sum::<f64>() + couple;
+        let scale = reaction("B0").abs().max(1.0);
+        assert!(net.norm() < 1e-9 * scale, "net force {net}");
+        assert!(moment.abs() < 1e-9 * scale, "net moment {moment}");
+    }
+}

@@ -55,6 +55,7 @@ pub fn size_all(
         .unwrap_or(flapwright_sizing::CS25_SAFETY_FACTOR);
     let screw_material = material(scene, &scene.sizing.screw_material)?;
     let tube_material = material(scene, &scene.sizing.torque_tube_material)?;
+    let link_material = material(scene, &scene.sizing.link_material)?;
     let mut rods = Vec::new();
     let mut jacks: Vec<Option<ScrewJackSizing>> = Vec::new();
     let mut notes = Vec::new();
@@ -108,6 +109,27 @@ pub fn size_all(
         rod.end_fixity_factor = scene.sizing.screw_end_fixity_factor;
         rod.max_outer_radius_m = Some(screw.mean_radius_m);
         rods.push(size_rod(&rod, &screw_material)?);
+        // Two-force members from their axial forces (tension positive) in every sample.
+        for member in mechanism.mechanism.members() {
+            let axial: Vec<f64> = samples
+                .iter()
+                .filter_map(|s| s.reactions_n.get(&member.name))
+                .map(|f| f * safety_factor)
+                .collect();
+            if axial.is_empty() {
+                continue;
+            }
+            let (tension, compression) = axial_envelope_n(&axial)?;
+            let mut rod = RodInput::new(
+                mechanism.station.clone(),
+                member.name,
+                member.length_m,
+                tension,
+                compression,
+            );
+            rod.max_outer_radius_m = Some(member.radius_m);
+            rods.push(size_rod(&rod, &link_material)?);
+        }
     }
     let mut tubes = Vec::new();
     let mut drive = None;

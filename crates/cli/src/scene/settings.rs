@@ -14,6 +14,10 @@ pub struct SizingScene {
     /// Material of the torque tubes.
     #[serde(default = "default_tube_material")]
     pub torque_tube_material: String,
+    /// Material of the mechanisms' two-force members (links, truss members), sized as
+    /// pinned rods for strength and buckling.
+    #[serde(default = "default_link_material")]
+    pub link_material: String,
     /// Efficiency of each station gearbox, (0, 1].
     #[serde(default = "default_gearbox_efficiency")]
     pub gearbox_efficiency: f64,
@@ -26,6 +30,9 @@ pub struct SizingScene {
 }
 
 fn default_screw_material() -> String {
+    "steel-4340".into()
+}
+fn default_link_material() -> String {
     "steel-4340".into()
 }
 fn default_tube_material() -> String {
@@ -46,6 +53,7 @@ impl Default for SizingScene {
         Self {
             screw_material: default_screw_material(),
             torque_tube_material: default_tube_material(),
+            link_material: default_link_material(),
             gearbox_efficiency: default_gearbox_efficiency(),
             torque_tube_inner_to_outer_ratio: default_wall_ratio(),
             screw_end_fixity_factor: default_end_fixity(),

@@ -35,6 +35,7 @@ impl Checker<'_> {
         for (key, name) in [
             ("screw_material", &sizing.screw_material),
             ("torque_tube_material", &sizing.torque_tube_material),
+            ("link_material", &sizing.link_material),
         ] {
             let known = MATERIAL_PRESETS.contains(&name.as_str()) || scene.materials.iter().any(|m| &m.name == name);
             if !known {

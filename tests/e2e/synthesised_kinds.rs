@@ -32,6 +32,19 @@ fn scene_text() -> String {
 fn synthesised_kinds_meet_their_precision_positions_through_the_pipeline() {
     let (_dir, report) = designed(&scene_text());
     let stations = report["stations"].as_array().unwrap();
+    // The two-force members are sized: the rockers and the truss members, with a mass.
+    let rods = report["sizing"]["rods"].as_array().unwrap();
+    for (station, member) in [
+        ("ib-inner", "rocker"),
+        ("ob-outer", "truss-forward"),
+        ("ob-outer", "truss-aft"),
+    ] {
+        let rod = rods
+            .iter()
+            .find(|r| r["station"] == station && r["name"] == member)
+            .unwrap_or_else(|| panic!("{station}.{member} is sized"));
+        assert!(rod["mass_kg"].as_f64().unwrap() > 0.0);
+    }
     let kinds: Vec<&str> = stations
         .iter()
         .map(|s| s["mechanism"]["kind"].as_str().unwrap())

@@ -16,8 +16,10 @@ pub struct FlapMass {
     pub mass_kg: f64,
     /// Centre of mass, stowed (station frame, m).
     pub centre_of_mass_stowed_m: Point2<f64>,
-    /// Gravity along the station's -y (m/s²).
-    pub gravity_mps2: f64,
+    /// Gravity's acceleration in the station plane (station frame, m/s²): the aircraft's
+    /// downward g projected on the plane's axes, (0, -9.81) in an upright plane; the
+    /// component normal to the plane goes to the joints' out-of-plane play, not modelled.
+    pub gravity_mps2: Vector2<f64>,
 }
 
 /// The wrench on the flap at one pose (station frame): its weight at the centre of mass,
@@ -50,7 +52,7 @@ impl FlapWrench {
             None => (Vector2::zeros(), flap * mass.centre_of_mass_stowed_m),
         };
         Self {
-            weight_n: Vector2::new(0.0, -mass.mass_kg * mass.gravity_mps2),
+            weight_n: mass.gravity_mps2 * mass.mass_kg,
             centre_of_mass: flap * mass.centre_of_mass_stowed_m,
             aero_n,
             aero_at,

@@ -53,7 +53,7 @@ fn flap_mass() -> FlapMass {
     FlapMass {
         mass_kg: 40.0,
         centre_of_mass_stowed_m: Point2::new(-0.3, 0.1),
-        gravity_mps2: 9.81,
+        gravity_mps2: nalgebra::Vector2::new(0.0, -9.81),
     }
 }
 

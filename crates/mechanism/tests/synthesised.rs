@@ -233,7 +233,7 @@ fn dropped_hinge_truss_forces_balance_the_whole_mechanism() {
             point("P"),
             point("D"),
         );
-        let weight = nalgebra::Vector2::new(0.0, -mass.mass_kg * mass.gravity_mps2);
+        let weight = mass.gravity_mps2 * mass.mass_kg;
         let couple = -load.external_moment.at(range.fraction(input));
         let u = (p - b0).normalize();
         let forces = [
@@ -247,5 +247,27 @@ fn dropped_hinge_truss_forces_balance_the_whole_mechanism() {
         let scale = reaction("B0").abs().max(1.0);
         assert!(net.norm() < 1e-9 * scale, "net force {net}");
         assert!(moment.abs() < 1e-9 * scale, "net moment {moment}");
+    }
+}
+
+/// A four-bar driven towards a toggle is reported with the input where it happens: the
+/// search's own pivots, given back with a minimum transmission angle above the loop's
+/// smallest, fail as a toggle at a named crank angle inside the deployment.
+#[test]
+fn a_four_bar_driven_into_a_toggle_is_reported_with_its_input() {
+    let found = FourBar::synthesise(four_bar_spec()).unwrap();
+    let [a1, a2] = found.synthesis().moving_pivots_m;
+    let smallest = found.synthesis().min_transmission_angle_rad;
+    let mut spec = four_bar_spec();
+    spec.forward_pivot = Some(a1);
+    spec.aft_pivot = Some(a2);
+    spec.min_transmission_angle_rad = smallest + 1f64.to_radians();
+    match FourBar::synthesise(spec) {
+        Err(Error::Synthesis {
+            defect: SynthesisDefect::Toggle,
+            detail,
+            ..
+        }) => assert!(detail.contains("deg of crank"), "{detail}"),
+        other => panic!("expected a toggle, got {other:?}"),
     }
 }

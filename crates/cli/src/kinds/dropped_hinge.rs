@@ -10,9 +10,6 @@ use serde::Deserialize;
 use super::{check_synthesised, KindScene, ScrewDriveScene, SynthesisContext};
 use crate::scene::KeyChecker;
 
-/// Standard gravity (m/s²).
-const GRAVITY_MPS2: f64 = 9.81;
-
 /// `[station.mechanism]` with `kind = "dropped-hinge"` (station frame, m).
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -137,7 +134,7 @@ impl KindScene for DroppedHingeScene {
             flap_mass: FlapMass {
                 mass_kg: self.flap_mass_kg,
                 centre_of_mass_stowed_m: centre,
-                gravity_mps2: GRAVITY_MPS2,
+                gravity_mps2: context.gravity_mps2(),
             },
             screw_drive: self.screw.drive(),
             min_transmission_angle_rad: self.min_transmission_angle_deg.to_radians(),

@@ -12,9 +12,6 @@ use super::dropped_hinge::{default_transmission, half};
 use super::{check_synthesised, KindScene, ScrewDriveScene, SynthesisContext};
 use crate::scene::KeyChecker;
 
-/// Standard gravity (m/s²).
-const GRAVITY_MPS2: f64 = 9.81;
-
 /// `[station.mechanism]` with `kind = "four-bar"` (station frame, m).
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -100,7 +97,7 @@ impl KindScene for FourBarScene {
             flap_mass: FlapMass {
                 mass_kg: self.flap_mass_kg,
                 centre_of_mass_stowed_m: centre,
-                gravity_mps2: GRAVITY_MPS2,
+                gravity_mps2: context.gravity_mps2(),
             },
             screw_drive: self.screw.drive(),
             hardware: LinkHardware::for_flap_chord(flap_chord),

@@ -30,9 +30,21 @@ pub struct SynthesisContext {
     /// flap's `[flap.settings]` deflection, gap and overlap); None where the settings give
     /// no gap and overlap.
     pub settings: Option<(PrecisionPosition, PrecisionPosition)>,
+    /// The downward unit vector of the aircraft frame in the station plane (station frame):
+    /// (0, -1) for an upright plane; None without a wing.
+    pub down_st: Option<nalgebra::Vector2<f64>>,
 }
 
+/// Standard gravity (m/s²).
+pub const GRAVITY_MPS2: f64 = 9.81;
+
 impl SynthesisContext {
+    /// Gravity's acceleration in the station plane (m/s²): g along the aircraft's down
+    /// direction projected on the plane, or along the station's -y without a wing.
+    pub fn gravity_mps2(&self) -> nalgebra::Vector2<f64> {
+        self.down_st.unwrap_or(nalgebra::Vector2::new(0.0, -1.0)) * GRAVITY_MPS2
+    }
+
     /// The outline and the settings, or the message a kind that needs them gives.
     pub fn require(&self) -> Result<(&StationOutline, PrecisionPosition, PrecisionPosition), String> {
         let outline = self

@@ -113,6 +113,11 @@ pub fn synthesis_context(
         SynthesisContext {
             outline: Some(outline),
             settings,
+            down_st: Some({
+                // The aircraft's down (-z) on the plane's in-plane axes.
+                let frame = &placed.station.frame;
+                nalgebra::Vector2::new(-frame.x_axis_ac().z, -frame.y_axis_ac().z)
+            }),
         },
         Some(measure),
     ))

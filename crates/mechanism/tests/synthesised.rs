@@ -1,6 +1,5 @@
 //! The kinds synthesised from flap settings (dropped hinge, four-bar) on a model section:
-//! a box wing with a cove and an elliptic flap nested in it, settings of `003_...` 5.2
-//! (take-off 15 deg, 0 %c gap, 3 %c overlap; landing 35 deg, 2 %c gap, 0 %c overlap).
+//! a box wing with a cove and an elliptic flap nested in it (`model_section.rs`).
 
 use flapwright_mechanism::dropped_hinge::DroppedHinge;
 use flapwright_mechanism::four_bar::FourBar;

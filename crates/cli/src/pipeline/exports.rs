@@ -7,6 +7,7 @@ use flapwright_drawing::{
     SectionOutline, SlotArc, StationDrawing,
 };
 use flapwright_interference::InterferenceReport;
+use flapwright_mechanism::seam::BodyRole;
 use flapwright_mechanism::urdf::{build_robot, to_xml, trajectory, BaseLink, CutJoint, MeshRef, StationMechanism3d};
 use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
@@ -116,6 +117,8 @@ fn style_of(part: &str, flap_names: &[String]) -> PartStyle {
 
 /// The mechanism at actuator input `input`, from the seam: each moving body's solids as
 /// links (skeletons), its named points as joints, the flap outline displaced with the flap.
+/// The stowed snapshot also draws the fixed support structure (struts, trusses); fixed
+/// tracks are drawn as their slot arcs.
 fn snapshot(
     mechanism: &dyn FlapMechanism,
     label: &str,
@@ -123,11 +126,12 @@ fn snapshot(
     flap_outline: &[Vec<Point2<f64>>],
 ) -> Result<MechanismSnapshot> {
     let pose = mechanism.pose(input)?;
+    let with_supports = label == "stowed";
     let links = mechanism
         .bodies()
         .iter()
         .zip(&pose.bodies)
-        .filter(|(body, _)| body.is_moving())
+        .filter(|(body, _)| body.is_moving() || (with_supports && body.role == BodyRole::Support))
         .flat_map(|(body, placement)| {
             body.solids.iter().map(move |solid| Link {
                 name: solid.name.clone(),
@@ -185,11 +189,19 @@ pub fn write_svgs(
         // Show the rear of the wing only, as the thesis figures do: up to a margin ahead of
         // the furthest-forward mechanism point or slot end, so the mechanism stays legible.
         let stowed = mechanism.pose(mechanism.input_range().stowed)?;
+        // The station's own flap is shown whole: its nose lies ahead of the mechanism of a
+        // kind whose pivots hang below the flap.
+        let own_flap_nose = sections
+            .iter()
+            .filter(|s| record.flap.as_deref() == Some(s.part.as_str()))
+            .flat_map(|s| s.polygons.iter().flatten())
+            .map(|p| p.x);
         let reach = notes
             .arcs
             .iter()
             .map(|(_, centre, radius, _, _)| centre.x + radius)
             .chain(stowed.points.iter().map(|p| p.position.x))
+            .chain(own_flap_nose)
             .fold(0.0, f64::max);
         let x_limit = reach + VIEW_MARGIN_M;
         let sections: Vec<SectionOutline> = sections

@@ -83,9 +83,14 @@ pub fn synthesis_context(
         flap: placed.polygons_of(|name| name == flap.name),
         // Spars and the torque tube; other flaps' sections are not structure.
         structure: placed.polygons_of(|name| name != "wing" && !flaps.iter().any(|f| f.name == name)),
+        lip: None,
     };
     let Some(measure) = flap_behind_wing(placed, &flap.name)? else {
         return Ok((SynthesisContext::default(), None));
+    };
+    let outline = StationOutline {
+        lip: Some(measure.trailing_edge()),
+        ..outline
     };
     let chord = measure.chord_m();
     let position = |name: &'static str, deflection_deg: f64| -> Result<Option<PrecisionPosition>> {

@@ -50,7 +50,7 @@ impl SynthesisContext {
         let outline = self
             .outline
             .as_ref()
-            .ok_or("is synthesised from the flap settings, and needs a [wing] with the station's flap in its plane")?;
+            .ok_or("is synthesised from the flap settings in the station plane, and that plane cuts no flap section (or the scene has no [wing]): place the station on its flap with axis_offset_m")?;
         let (takeoff, landing) = self.settings.ok_or(
             "is synthesised from the flap settings: give takeoff_gap_percent, takeoff_overlap_percent, landing_gap_percent and landing_overlap_percent in the flap's [flap.settings]",
         )?;

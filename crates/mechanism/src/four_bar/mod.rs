@@ -117,6 +117,9 @@ pub struct FourBarSynthesis {
     pub crank_rotation_rad: [f64; 2],
     /// Smallest transmission angle of the loop over the deployment (rad, sampled).
     pub min_transmission_angle_rad: f64,
+    /// Smallest transmission angle of the screw on the crank over the deployment (rad,
+    /// sampled): the deployment samples report the smaller of the two.
+    pub drive_min_transmission_angle_rad: f64,
     /// A certified lower bound on it between samples (rad).
     pub certified_min_transmission_angle_rad: f64,
     /// Depth of the whole mechanism (every solid, over the deployment) below the stowed
@@ -468,6 +471,7 @@ impl FourBar {
             moving_pivots_m: [loop_.a1, loop_.a2],
             crank_rotation_rad: turns,
             min_transmission_angle_rad: min_transmission,
+            drive_min_transmission_angle_rad: drive_min,
             certified_min_transmission_angle_rad: certified,
             depth_below_section_m: 0.0,
             precision_miss_m: miss,

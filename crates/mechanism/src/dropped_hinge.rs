@@ -16,7 +16,7 @@
 //! the hinge carries R_H = -(F u + W). Virtual work, independently: F = -(W · dD/ds + C dψ/ds)
 //! with dψ/ds from the drive's triangle (not from the cross product above).
 
-use nalgebra::{Isometry2, Point2, Translation2, Unit, Vector2};
+use nalgebra::{Isometry2, Point2, Vector2};
 use serde::Serialize;
 
 use crate::error::{Error, Result, SynthesisDefect};
@@ -25,11 +25,11 @@ use crate::kinetostatics::LoadCase;
 use crate::outline::{inside, StationOutline};
 use crate::placement::{place_screw_jack, strut_top, turning_flap, JackSize, ScrewJackChoice};
 use crate::precision::{pole, PrecisionPosition};
-use crate::rocker_drive::{cross, turn_about, RockerDrive};
+use crate::rocker_drive::{cross, turn_about, RockerDrive, ScrewJackParts};
 use crate::screw_jack::{ScrewDrive, ScrewJack};
 use crate::seam::{
     Actuator, Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd,
-    JointGeometry, Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound, TwoForceMember,
+    JointGeometry, Kinetostatics, MechanismPose, NamedPoint, PoseHealth, SpeedBound, TwoForceMember,
 };
 
 const KIND: &str = "dropped-hinge";
@@ -96,6 +96,10 @@ pub struct DroppedHingeSynthesis {
     /// Largest distance (m) between the turn about H and the landing setting at the flap
     /// attachments: rounding only, the hinge being the pole.
     pub landing_miss_m: f64,
+    /// The first deflection (rad) where the turn about the hinge takes the flap through the
+    /// wing's trailing edge (sampled; None when it stays clear): the two precision positions
+    /// leave no choice, so it is a warning, and the interference check says how deep.
+    pub flap_through_lip_at_rad: Option<f64>,
     /// The screw chosen from the drive: lead, radius, friction.
     pub screw: ScrewJack,
     /// Screw length (m): the longest stroke and the nut.
@@ -253,7 +257,12 @@ impl DroppedHinge {
         // Long enough to carry the nut at the longest stroke, no longer: a screw's free end
         // beyond the nut would sweep into the flap.
         let screw_length_m = stroke_m[0].max(stroke_m[1]) + hw.nut_radius_m;
+        let lip_tolerance = 1e-6 * spec.outline.chord_m().unwrap_or(1.0);
+        let flap_through_lip_at_rad = (1..TRANSMISSION_SAMPLES)
+            .map(|k| turn * k as f64 / TRANSMISSION_SAMPLES as f64)
+            .find(|&psi| spec.outline.flap_through_lip(&turn_about(hinge, psi), lip_tolerance));
         let synthesis = DroppedHingeSynthesis {
+            flap_through_lip_at_rad,
             hinge_m: hinge,
             actuator_mount_m: mount,
             support_points_m: support_points,
@@ -295,127 +304,56 @@ fn bodies_and_joints(
     drive: &RockerDrive,
 ) -> (Vec<Body>, Vec<Joint>) {
     let hw = &spec.hardware;
-    let (h, b0, p) = (
-        synthesis.hinge_m,
-        synthesis.actuator_mount_m,
-        synthesis.actuator_attachment_m,
-    );
+    let (h, p) = (synthesis.hinge_m, synthesis.actuator_attachment_m);
     let [forward, aft] = spec.flap_attachments;
     let turn = spec.landing.deflection_rad;
-    let capsule = |name: &str, from, to, radius_m| BodySolid {
-        name: name.into(),
-        shape: PlanarShape::Capsule { from, to, radius_m },
-        width_m: 0.0,
-        offset_m: 0.0,
-    };
-    // Per metre of stroke (module doc and RockerDrive::rotation_rate_bound).
-    let flap_rate = drive.rotation_rate_bound(turn);
-    let arm = (p - h).norm();
-    let shortest = synthesis.stroke_m[0].min(synthesis.stroke_m[1]);
-    let screw_rate = arm * flap_rate / shortest;
-    let direction = (p - b0).normalize();
-    let half_body = direction * (0.5 * hw.jack_body_length_m);
-    let screw_radius = synthesis.screw.mean_radius_m + 0.25 * synthesis.screw.lead_m;
-    let bodies = vec![
-        Body {
-            name: "flap".into(),
-            role: BodyRole::Flap,
-            solids: {
-                let mut solids = vec![
-                    capsule("arm-forward", h, forward, hw.link_radius_m),
-                    capsule("arm-aft", h, aft, hw.link_radius_m),
-                ];
-                // The screw's attachment on a horn below the hinge.
-                let along = (p - forward).dot(&(h - forward)) / (h - forward).norm_squared();
-                if along > 1.0 {
-                    solids.push(capsule("horn", h, p, hw.link_radius_m));
-                }
-                solids
-            },
-            speed_bound: SpeedBound {
-                reference: h,
-                linear_per_input: 0.0,
-                angular_per_input: flap_rate,
-            },
+    let capsule = |name: &str, from, to| BodySolid::capsule(name, from, to, hw.link_radius_m);
+    // The screw takes hold of the forward arm, or of a horn below the hinge.
+    let on_horn = (p - forward).dot(&(h - forward)) > (h - forward).norm_squared();
+    let holder = if on_horn { "horn" } else { "arm-forward" };
+    let mut flap_solids = vec![capsule("arm-forward", h, forward), capsule("arm-aft", h, aft)];
+    if on_horn {
+        flap_solids.push(capsule("horn", h, p));
+    }
+    let (screw_and_nut, jack_joints) = ScrewJackParts {
+        drive,
+        rotation_rad: turn,
+        screw_length_m: synthesis.screw_length_m,
+        screw_radius_m: synthesis.screw.mean_radius_m + 0.25 * synthesis.screw.lead_m,
+        hardware: hw,
+        indices: [FLAP, SCREW, NUT],
+        pivot: ("P", holder),
+    }
+    .build();
+    let mut bodies = vec![Body {
+        name: "flap".into(),
+        role: BodyRole::Flap,
+        solids: flap_solids,
+        speed_bound: SpeedBound {
+            reference: h,
+            linear_per_input: 0.0,
+            // Per metre of stroke (RockerDrive::rotation_rate_bound).
+            angular_per_input: drive.rotation_rate_bound(turn),
         },
-        Body {
-            name: "screw".into(),
-            role: BodyRole::Actuator,
-            solids: vec![
-                capsule("screw", b0, b0 + direction * synthesis.screw_length_m, screw_radius),
-                capsule("jack-body", b0 - half_body, b0 + half_body, hw.jack_body_radius_m),
-            ],
-            speed_bound: SpeedBound {
-                reference: b0,
-                linear_per_input: 0.0,
-                angular_per_input: screw_rate,
-            },
-        },
-        Body {
-            name: "nut".into(),
-            role: BodyRole::Actuator,
-            solids: vec![capsule("nut", p, p, hw.nut_radius_m)],
-            speed_bound: SpeedBound {
-                reference: p,
-                linear_per_input: arm * flap_rate,
-                angular_per_input: screw_rate,
-            },
-        },
-        Body {
-            name: "support".into(),
-            role: BodyRole::Support,
-            solids: vec![
-                capsule("truss-forward", h, synthesis.support_points_m[0], hw.link_radius_m),
-                capsule("truss-aft", h, synthesis.support_points_m[1], hw.link_radius_m),
-            ],
-            speed_bound: SpeedBound::FIXED,
-        },
-    ];
-    let nut_holder = if (p - forward).dot(&(h - forward)) > (h - forward).norm_squared() {
-        "horn"
-    } else {
-        "arm-forward"
-    };
-    let joint = |name: &str, description: &str, geometry, ends, touching: &[(&str, &str)]| Joint {
-        name: name.into(),
-        description: description.into(),
-        geometry,
-        ends,
-        touching_solids: touching.iter().map(|(x, y)| (x.to_string(), y.to_string())).collect(),
-    };
-    let joints = vec![
-        joint(
-            "H",
-            "the flap's hinge on the support truss",
-            JointGeometry::Revolute { at: h },
-            [JointEnd::Body(SUPPORT), JointEnd::Body(FLAP)],
-            &[("truss-forward", "arm-forward"), ("truss-aft", "arm-aft")],
-        ),
-        joint(
-            "P",
-            "nut pivoting on the forward arm",
-            JointGeometry::Revolute { at: p },
-            [JointEnd::Body(NUT), JointEnd::Body(FLAP)],
-            &[("nut", nut_holder)],
-        ),
-        joint(
-            "nut-slide",
-            "nut riding along the screw",
-            JointGeometry::Prismatic {
-                origin: p,
-                direction: Unit::new_normalize(p - b0),
-            },
-            [JointEnd::Body(SCREW), JointEnd::Body(NUT)],
-            &[("screw", "nut")],
-        ),
-        joint(
-            "B0",
-            "screw turning in the jack body",
-            JointGeometry::Revolute { at: b0 },
-            [JointEnd::Ground, JointEnd::Body(SCREW)],
-            &[],
-        ),
-    ];
+    }];
+    bodies.extend(screw_and_nut);
+    bodies.push(Body {
+        name: "support".into(),
+        role: BodyRole::Support,
+        solids: vec![
+            capsule("truss-forward", h, synthesis.support_points_m[0]),
+            capsule("truss-aft", h, synthesis.support_points_m[1]),
+        ],
+        speed_bound: SpeedBound::FIXED,
+    });
+    let mut joints = vec![Joint::new(
+        "H",
+        "the flap's hinge on the support truss",
+        JointGeometry::Revolute { at: h },
+        [JointEnd::Body(SUPPORT), JointEnd::Body(FLAP)],
+        &[("truss-forward", "arm-forward"), ("truss-aft", "arm-aft")],
+    )];
+    joints.extend(jack_joints);
     (bodies, joints)
 }
 
@@ -473,11 +411,7 @@ impl FlapMechanism for DroppedHinge {
         let state = self.drive.state(input)?;
         let (h, b0) = (self.synthesis.hinge_m, self.synthesis.actuator_mount_m);
         let flap = turn_about(h, state.rotation_rad);
-        let screw_turn = self.drive.screw_rotation(state.attachment);
-        let p_stowed = self.synthesis.actuator_attachment_m;
-        let nut = Translation2::from(state.attachment.coords)
-            * Isometry2::rotation(screw_turn)
-            * Translation2::from(-p_stowed.coords);
+        let (screw, nut) = self.drive.screw_and_nut(state.attachment);
         let [forward, aft] = self.spec.flap_attachments;
         let points = [
             ("H", h, true),
@@ -495,7 +429,7 @@ impl FlapMechanism for DroppedHinge {
         Ok(MechanismPose {
             deflection_rad: state.rotation_rad,
             input,
-            bodies: vec![flap, turn_about(b0, screw_turn), nut, Isometry2::identity()],
+            bodies: vec![flap, screw, nut, Isometry2::identity()],
             flap,
             points,
         })
@@ -607,6 +541,12 @@ impl FlapMechanism for DroppedHinge {
 
     fn warnings(&self) -> Vec<String> {
         let mut warnings = Vec::new();
+        if let Some(at) = self.synthesis.flap_through_lip_at_rad {
+            warnings.push(format!(
+                "the turn about the hinge takes the flap through the wing's trailing edge at {:.1} deg: a dropped hinge meets stowed and landing only",
+                at.to_degrees()
+            ));
+        }
         if !self.synthesis.actuator_clear {
             warnings.push("no default place of the screw jack kept clear of the wing, the structure and the flap at the sampled poses; give actuator_mount_m".into());
         }

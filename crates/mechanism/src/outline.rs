@@ -128,6 +128,16 @@ impl StationOutline {
             })
     }
 
+    /// True when the flap moved by `flap` passes through the wing's trailing edge (the lip):
+    /// the lip lies inside the moved flap by more than `tolerance_m` (a zero gap at a setting
+    /// touches it within rounding). False without a lip.
+    pub fn flap_through_lip(&self, flap: &nalgebra::Isometry2<f64>, tolerance_m: f64) -> bool {
+        self.lip.is_some_and(|lip| {
+            let at = flap.inverse() * lip;
+            inside(&self.flap, at) && boundary_distance(&self.flap, at) > tolerance_m
+        })
+    }
+
     /// The flap's leading (largest x) and trailing (smallest x) edge x and its chord.
     pub fn flap_chord(&self) -> Option<(f64, f64, f64)> {
         let (te, le) = extent_x(&self.flap)?;
@@ -205,5 +215,16 @@ mod tests {
         assert!(vertical_span(&square, 2.0).is_none());
         assert!(segment_meets(&square, Point2::new(-1.0, 0.5), Point2::new(2.0, 0.5)));
         assert!(!segment_meets(&square, Point2::new(-1.0, 1.5), Point2::new(2.0, 1.5)));
+        // A lip at the square's top edge: touching is not passing through, 0.1 deeper is.
+        let outline = StationOutline {
+            flap: square.clone(),
+            lip: Some(Point2::new(0.5, 1.0)),
+            ..Default::default()
+        };
+        let shifted = |d: f64| nalgebra::Isometry2::translation(0.0, d);
+        assert!(!outline.flap_through_lip(&shifted(0.0), 1e-9));
+        assert!(outline.flap_through_lip(&shifted(0.1), 1e-9));
+        assert!(!outline.flap_through_lip(&shifted(-0.1), 1e-9));
+        assert!((boundary_distance(&square, Point2::new(0.5, 0.9)) - 0.1).abs() < 1e-12);
     }
 }

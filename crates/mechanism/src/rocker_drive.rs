@@ -11,10 +11,11 @@
 //! s² = a1² + a2² - 2 a1 a2 cos γ, dγ/ds = s / (a1 a2 sin γ) = 1 / (a2 sin μ), μ the
 //! transmission angle at the attachment.
 
-use nalgebra::{Isometry2, Point2, Rotation2, Translation2, Vector2};
+use nalgebra::{Isometry2, Point2, Rotation2, Translation2, Unit, Vector2};
 use serde::Serialize;
 
 use crate::error::{Error, Result};
+use crate::seam::{Body, BodyRole, BodySolid, Joint, JointEnd, JointGeometry, SpeedBound};
 use crate::slider_crank::InvertedSliderCrank;
 
 /// A screw jack turning a body about a fixed pivot.
@@ -147,6 +148,116 @@ impl RockerDrive {
         let stowed = self.attachment - self.mount;
         let now = attachment - self.mount;
         Rotation2::rotation_between(&stowed, &now).angle()
+    }
+}
+
+/// The screw jack of a [`RockerDrive`] as two bodies of a mechanism and their three joints,
+/// for every kind that turns a body with one: the screw with its jack body, turning about
+/// the mount B0, and the nut at the attachment, pivoting on the driven body and riding
+/// along the screw.
+pub(crate) struct ScrewJackParts<'a> {
+    /// The drive.
+    pub drive: &'a RockerDrive,
+    /// The driven body's rotation over the deployment (rad).
+    pub rotation_rad: f64,
+    /// The screw's length (m) and outer radius (m).
+    pub screw_length_m: f64,
+    /// Outer radius of the screw (m).
+    pub screw_radius_m: f64,
+    /// Nut and jack-body sizes.
+    pub hardware: &'a crate::flap_load::LinkHardware,
+    /// Indices of the driven body, the screw and the nut in the kind's bodies.
+    pub indices: [usize; 3],
+    /// The nut's pivot on the driven body: its joint name and the driven body's solid it
+    /// sits on.
+    pub pivot: (&'a str, &'a str),
+}
+
+impl ScrewJackParts<'_> {
+    /// The screw and the nut (in that order) and the joints at the nut's pivot, along the
+    /// screw and at B0. Speed bounds per metre of stroke: the driven body turns at most at
+    /// [`RockerDrive::rotation_rate_bound`], so the attachment moves at most `arm` times
+    /// that, and the screw turns at most that speed over the shortest stroke.
+    pub fn build(&self) -> (Vec<Body>, Vec<Joint>) {
+        let (b0, p) = (self.drive.mount(), self.drive.attachment());
+        let [driven, screw, nut] = self.indices;
+        let body_rate = self.drive.rotation_rate_bound(self.rotation_rad);
+        let attachment_speed = (p - self.drive.pivot()).norm() * body_rate;
+        let shortest = self.drive.stroke_at(0.0).min(self.drive.stroke_at(self.rotation_rad));
+        let screw_rate = attachment_speed / shortest;
+        let direction = (p - b0).normalize();
+        let half_body = direction * (0.5 * self.hardware.jack_body_length_m);
+        let bodies = vec![
+            Body {
+                name: "screw".into(),
+                role: BodyRole::Actuator,
+                solids: vec![
+                    BodySolid::capsule("screw", b0, b0 + direction * self.screw_length_m, self.screw_radius_m),
+                    BodySolid::capsule(
+                        "jack-body",
+                        b0 - half_body,
+                        b0 + half_body,
+                        self.hardware.jack_body_radius_m,
+                    ),
+                ],
+                speed_bound: SpeedBound {
+                    reference: b0,
+                    linear_per_input: 0.0,
+                    angular_per_input: screw_rate,
+                },
+            },
+            Body {
+                name: "nut".into(),
+                role: BodyRole::Actuator,
+                solids: vec![BodySolid::capsule("nut", p, p, self.hardware.nut_radius_m)],
+                speed_bound: SpeedBound {
+                    reference: p,
+                    linear_per_input: attachment_speed,
+                    angular_per_input: screw_rate,
+                },
+            },
+        ];
+        let (pivot_name, holder) = self.pivot;
+        let joints = vec![
+            Joint::new(
+                pivot_name,
+                "nut pivoting on the driven link",
+                JointGeometry::Revolute { at: p },
+                [JointEnd::Body(nut), JointEnd::Body(driven)],
+                &[("nut", holder)],
+            ),
+            Joint::new(
+                "nut-slide",
+                "nut riding along the screw",
+                JointGeometry::Prismatic {
+                    origin: p,
+                    direction: Unit::new_normalize(p - b0),
+                },
+                [JointEnd::Body(screw), JointEnd::Body(nut)],
+                &[("screw", "nut")],
+            ),
+            Joint::new(
+                "B0",
+                "screw turning in the jack body",
+                JointGeometry::Revolute { at: b0 },
+                [JointEnd::Ground, JointEnd::Body(screw)],
+                &[],
+            ),
+        ];
+        (bodies, joints)
+    }
+}
+
+impl RockerDrive {
+    /// The screw's and the nut's displacements from stowed with the attachment at
+    /// `attachment`: the screw turns about the mount, the nut moves with the attachment
+    /// and turns with the screw.
+    pub fn screw_and_nut(&self, attachment: Point2<f64>) -> (Isometry2<f64>, Isometry2<f64>) {
+        let turn = self.screw_rotation(attachment);
+        let nut = Translation2::from(attachment.coords)
+            * Isometry2::rotation(turn)
+            * Translation2::from(-self.attachment.coords);
+        (turn_about(self.mount, turn), nut)
     }
 }
 

@@ -180,6 +180,19 @@ pub struct BodySolid {
     pub offset_m: f64,
 }
 
+impl BodySolid {
+    /// A round solid (spanwise as thick as its radius, in the station plane): a capsule of
+    /// `radius_m` about `from`-`to`, a ball when they coincide.
+    pub fn capsule(name: &str, from: Point2<f64>, to: Point2<f64>, radius_m: f64) -> Self {
+        Self {
+            name: name.into(),
+            shape: PlanarShape::Capsule { from, to, radius_m },
+            width_m: 0.0,
+            offset_m: 0.0,
+        }
+    }
+}
+
 /// A certified bound on how fast a body's points move per unit of the actuator input:
 /// |dp/dq| <= `linear_per_input` + `angular_per_input` * |p - `reference`| for every point p
 /// of the body, over the whole deployment (stowed coordinates: the distance to the
@@ -305,6 +318,26 @@ pub struct TwoForceMember {
     pub length_m: f64,
     /// Radius of the solid that stands for it (m): the room the station leaves.
     pub radius_m: f64,
+}
+
+impl Joint {
+    /// A joint named `name` between `ends`, whose `touching` solid pairs (end 0's, end 1's)
+    /// are checked to stay joined.
+    pub fn new(
+        name: &str,
+        description: &str,
+        geometry: JointGeometry,
+        ends: [JointEnd; 2],
+        touching: &[(&str, &str)],
+    ) -> Self {
+        Self {
+            name: name.into(),
+            description: description.into(),
+            geometry,
+            ends,
+            touching_solids: touching.iter().map(|(a, b)| (a.to_string(), b.to_string())).collect(),
+        }
+    }
 }
 
 /// A named point of a pose (station frame, m): a pivot, a pin, the centre of mass.

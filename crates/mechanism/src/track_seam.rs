@@ -178,13 +178,7 @@ pub(crate) fn bodies_and_joints(track: &CircularArcTrack, hardware: &TrackHardwa
             spec.outer_slot_start_angle_rad + spec.inner_slot_offset_angle_rad,
         ),
     ];
-    let joint = |name: &str, description: &str, geometry, ends, touching: &[(&str, &str)]| Joint {
-        name: name.into(),
-        description: description.into(),
-        geometry,
-        ends,
-        touching_solids: touching.iter().map(|(x, y)| (x.to_string(), y.to_string())).collect(),
-    };
+    let joint = Joint::new;
     let joints = vec![
         joint(
             "A",

@@ -64,19 +64,23 @@ fn input_and_deflection_invert_each_other() {
 
 #[test]
 fn speed_bounds_hold_against_finite_differences() {
-    // Every skeleton point of every solid, at 2001 inputs: the finite-difference speed
-    // (m per m of stroke) stays within the body's bound for that solid, which is also not
-    // loose by more than a factor of four for the moving bodies.
-    let track = thesis_track();
-    let steps = inputs(&track, 2001);
-    let h = steps[1] - steps[0];
-    for (b, body) in track.bodies().iter().enumerate() {
+    speed_bounds_hold(&thesis_track(), 0.25);
+}
+
+/// Every skeleton point of every solid of `mechanism`, at 2001 inputs: the finite-difference
+/// speed (m per unit input) stays within the body's bound for that solid, which is also not
+/// loose by more than a factor of `1 / tightness` for the moving bodies; fixed bodies do
+/// not move. Shared by every kind's tests.
+pub fn speed_bounds_hold(mechanism: &dyn FlapMechanism, tightness: f64) {
+    let steps = mechanism.input_range().samples(2001);
+    let h = (steps[1] - steps[0]).abs();
+    for (b, body) in mechanism.bodies().iter().enumerate() {
         for solid in &body.solids {
             let bound = body.speed_bound.for_shape(&solid.shape);
             let mut fastest: f64 = 0.0;
             let mut previous: Option<Vec<Point2<f64>>> = None;
             for &input in &steps {
-                let pose = FlapMechanism::pose(&track, input).unwrap();
+                let pose = mechanism.pose(input).unwrap();
                 let points: Vec<Point2<f64>> = solid.shape.skeleton().iter().map(|p| pose.bodies[b] * p).collect();
                 if let Some(before) = &previous {
                     for (p, q) in points.iter().zip(before) {
@@ -87,13 +91,15 @@ fn speed_bounds_hold_against_finite_differences() {
             }
             assert!(
                 fastest <= bound * (1.0 + 1e-9),
-                "{}: {fastest} > bound {bound}",
+                "{} {}: {fastest} > bound {bound}",
+                mechanism.kind(),
                 solid.name
             );
             if body.is_moving() {
                 assert!(
-                    fastest > 0.25 * bound,
-                    "{}: bound {bound} loose (fastest {fastest})",
+                    fastest > tightness * bound,
+                    "{} {}: bound {bound} loose (fastest {fastest})",
+                    mechanism.kind(),
                     solid.name
                 );
             } else {
@@ -105,22 +111,27 @@ fn speed_bounds_hold_against_finite_differences() {
 
 #[test]
 fn joints_name_existing_bodies_and_solids() {
-    let track = thesis_track();
-    let solids: Vec<&str> = track
+    joints_name_existing(&thesis_track());
+}
+
+/// Every joint's ends are bodies of `mechanism` and its touching solids exist.
+pub fn joints_name_existing(mechanism: &dyn FlapMechanism) {
+    let solids: Vec<&str> = mechanism
         .bodies()
         .iter()
         .flat_map(|b| b.solids.iter().map(|s| s.name.as_str()))
         .collect();
-    for joint in track.joints() {
+    for joint in mechanism.joints() {
         for end in joint.ends {
             if let JointEnd::Body(i) = end {
-                assert!(i < track.bodies().len(), "{}", joint.name);
+                assert!(i < mechanism.bodies().len(), "{}", joint.name);
             }
         }
         for (x, y) in &joint.touching_solids {
             assert!(
                 solids.contains(&x.as_str()) && solids.contains(&y.as_str()),
-                "{}",
+                "{} {}: {x} or {y}",
+                mechanism.kind(),
                 joint.name
             );
         }

@@ -270,3 +270,18 @@ fn a_four_bar_driven_into_a_toggle_is_reported_with_its_input() {
         other => panic!("expected a toggle, got {other:?}"),
     }
 }
+
+/// The seam's promises for both kinds: certified speed bounds (never below the fastest
+/// finite-difference speed of any solid's point, and within a factor of four of it), and
+/// joints that name existing bodies and solids.
+#[test]
+fn synthesised_kinds_keep_the_seams_promises() {
+    let kinds: Vec<Box<dyn FlapMechanism>> = vec![
+        Box::new(DroppedHinge::synthesise(dropped_hinge_spec()).unwrap()),
+        Box::new(FourBar::synthesise(four_bar_spec()).unwrap()),
+    ];
+    for mechanism in &kinds {
+        crate::seam::speed_bounds_hold(mechanism.as_ref(), 0.25);
+        crate::seam::joints_name_existing(mechanism.as_ref());
+    }
+}

@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use flapwright_mechanism::{DroppedHinge, DroppedHingeSpec, FlapMass, FlapMechanism, LinkHardware};
+use flapwright_mechanism::{DroppedHinge, DroppedHingeSpec, FlapMechanism};
 use nalgebra::Point2;
 use serde::Deserialize;
 
@@ -107,10 +107,9 @@ impl KindScene for DroppedHingeScene {
     }
 
     fn synthesise(&self, context: &SynthesisContext) -> Result<Arc<dyn FlapMechanism>, String> {
-        let (outline, takeoff, landing) = context.require()?;
-        let (_, _, flap_chord) = outline.flap_chord().ok_or("the station plane misses the flap")?;
+        let flap = context.station_flap(self.flap_mass_kg, self.flap_centre_of_mass_m)?;
         let attachment = |fraction: f64| {
-            outline
+            flap.outline
                 .flap_lower_point(fraction)
                 .ok_or(format!("no flap surface at {fraction} of the flap chord"))
         };
@@ -118,28 +117,19 @@ impl KindScene for DroppedHingeScene {
             attachment(self.attachment_chord_fractions[0])?,
             attachment(self.attachment_chord_fractions[1])?,
         ];
-        let support_points = self.support_points_m.map(|[a, b]| [point(a), point(b)]);
-        let centre = match self.flap_centre_of_mass_m {
-            Some(c) => point(c),
-            None => outline.flap_centroid().ok_or("the flap section has no area")?,
-        };
         let spec = DroppedHingeSpec {
-            landing,
-            takeoff: Some(takeoff),
+            landing: flap.landing,
+            takeoff: Some(flap.takeoff),
             flap_attachments,
             actuator_attachment_fraction: self.actuator_attachment_fraction,
             actuator_mount: self.actuator_mount_m.map(point),
-            actuator_standoff_m: 0.5 * flap_chord,
-            support_points,
-            flap_mass: FlapMass {
-                mass_kg: self.flap_mass_kg,
-                centre_of_mass_stowed_m: centre,
-                gravity_mps2: context.gravity_mps2(),
-            },
+            actuator_standoff_m: 0.5 * flap.flap_chord_m,
+            support_points: self.support_points_m.map(|[a, b]| [point(a), point(b)]),
+            flap_mass: flap.mass,
             screw_drive: self.screw.drive(),
             min_transmission_angle_rad: self.min_transmission_angle_deg.to_radians(),
-            hardware: LinkHardware::for_flap_chord(flap_chord),
-            outline: outline.clone(),
+            hardware: flap.hardware,
+            outline: flap.outline.clone(),
         };
         DroppedHinge::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)

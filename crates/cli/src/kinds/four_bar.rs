@@ -4,7 +4,7 @@
 
 use std::sync::Arc;
 
-use flapwright_mechanism::{FlapMass, FlapMechanism, FourBar, FourBarSpec, LinkHardware};
+use flapwright_mechanism::{FlapMechanism, FourBar, FourBarSpec};
 use nalgebra::Point2;
 use serde::Deserialize;
 
@@ -79,29 +79,20 @@ impl KindScene for FourBarScene {
     }
 
     fn synthesise(&self, context: &SynthesisContext) -> Result<Arc<dyn FlapMechanism>, String> {
-        let (outline, takeoff, landing) = context.require()?;
-        let (_, _, flap_chord) = outline.flap_chord().ok_or("the station plane misses the flap")?;
-        let centre = match self.flap_centre_of_mass_m {
-            Some(c) => point(c),
-            None => outline.flap_centroid().ok_or("the flap section has no area")?,
-        };
+        let flap = context.station_flap(self.flap_mass_kg, self.flap_centre_of_mass_m)?;
         let spec = FourBarSpec {
-            takeoff,
-            landing,
+            takeoff: flap.takeoff,
+            landing: flap.landing,
             forward_pivot: self.forward_pivot_m.map(point),
             aft_pivot: self.aft_pivot_m.map(point),
             min_transmission_angle_rad: self.min_transmission_angle_deg.to_radians(),
             actuator_attachment_fraction: self.actuator_attachment_fraction,
             actuator_mount: self.actuator_mount_m.map(point),
-            actuator_standoff_m: 0.5 * flap_chord,
-            flap_mass: FlapMass {
-                mass_kg: self.flap_mass_kg,
-                centre_of_mass_stowed_m: centre,
-                gravity_mps2: context.gravity_mps2(),
-            },
+            actuator_standoff_m: 0.5 * flap.flap_chord_m,
+            flap_mass: flap.mass,
             screw_drive: self.screw.drive(),
-            hardware: LinkHardware::for_flap_chord(flap_chord),
-            outline: outline.clone(),
+            hardware: flap.hardware,
+            outline: flap.outline.clone(),
         };
         FourBar::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)

@@ -38,7 +38,47 @@ pub struct SynthesisContext {
 /// Standard gravity (m/s²).
 pub const GRAVITY_MPS2: f64 = 9.81;
 
+/// What every kind synthesised from the settings takes from its station: the sections and
+/// settings, the flap chord, the flap share's mass properties (centre of mass by default the
+/// section's centroid, gravity in the plane) and hardware sized to the flap chord.
+pub(crate) struct StationFlap<'a> {
+    /// The sections.
+    pub outline: &'a StationOutline,
+    /// Take-off and landing.
+    pub takeoff: PrecisionPosition,
+    /// The last precision position.
+    pub landing: PrecisionPosition,
+    /// The flap chord in the plane (m).
+    pub flap_chord_m: f64,
+    /// The flap share.
+    pub mass: flapwright_mechanism::FlapMass,
+    /// Solid sizes.
+    pub hardware: flapwright_mechanism::LinkHardware,
+}
+
 impl SynthesisContext {
+    /// The station's flap for a kind with `mass_kg` and an optional `centre` (station frame).
+    pub(crate) fn station_flap(&self, mass_kg: f64, centre: Option<[f64; 2]>) -> Result<StationFlap<'_>, String> {
+        let (outline, takeoff, landing) = self.require()?;
+        let (_, _, flap_chord_m) = outline.flap_chord().ok_or("the station plane misses the flap")?;
+        let centre = match centre {
+            Some([x, y]) => nalgebra::Point2::new(x, y),
+            None => outline.flap_centroid().ok_or("the flap section has no area")?,
+        };
+        Ok(StationFlap {
+            outline,
+            takeoff,
+            landing,
+            flap_chord_m,
+            mass: flapwright_mechanism::FlapMass {
+                mass_kg,
+                centre_of_mass_stowed_m: centre,
+                gravity_mps2: self.gravity_mps2(),
+            },
+            hardware: flapwright_mechanism::LinkHardware::for_flap_chord(flap_chord_m),
+        })
+    }
+
     /// Gravity's acceleration in the station plane (m/s²): g along the aircraft's down
     /// direction projected on the plane, or along the station's -y without a wing.
     pub fn gravity_mps2(&self) -> nalgebra::Vector2<f64> {

@@ -26,26 +26,26 @@
 //! moments about O1 the screw force F. Virtual work, independently, from the velocity
 //! analysis of the loop: ω_r k x (A2 - O2) - ω_f k x (A2 - A1) = v_A1.
 
-use nalgebra::{Isometry2, Point2, Translation2, Unit, Vector2};
+use nalgebra::{Isometry2, Point2, Vector2};
 use serde::Serialize;
 
+mod bodies;
 mod linkage;
 mod search;
+mod synthesis;
 
-use linkage::{turn_angle, Loop, LoopPose};
-use search::{candidate, candidates, check_pair, search_failure};
+use linkage::{turn_angle, Loop};
 
 use crate::error::{Error, Result, SynthesisDefect};
 use crate::flap_load::{FlapMass, FlapWrench, LinkHardware};
 use crate::kinetostatics::LoadCase;
 use crate::outline::StationOutline;
-use crate::placement::{place_screw_jack, strut_top, JackSize, ScrewJackChoice, PLACEMENT_SAMPLES};
 use crate::precision::PrecisionPosition;
 use crate::rocker_drive::{cross, turn_about, RockerDrive};
 use crate::screw_jack::{ScrewDrive, ScrewJack};
 use crate::seam::{
-    Actuator, Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd,
-    JointGeometry, Kinetostatics, MechanismPose, NamedPoint, PlanarShape, PoseHealth, SpeedBound, TwoForceMember,
+    Actuator, Body, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, Kinetostatics, MechanismPose,
+    NamedPoint, PoseHealth, TwoForceMember,
 };
 
 const KIND: &str = "four-bar";
@@ -164,13 +164,6 @@ pub struct FourBar {
     joints: Vec<Joint>,
 }
 
-const FLAP: usize = 0;
-const CRANK: usize = 1;
-const ROCKER: usize = 2;
-const SCREW: usize = 3;
-const NUT: usize = 4;
-const SUPPORT: usize = 5;
-
 /// Crank samples of the feasibility check over the deployment.
 pub(super) const LOOP_SAMPLES: usize = 48;
 /// Loops, shallowest pivots first, whose screw and struts are placed to pick the shallowest
@@ -187,510 +180,8 @@ pub(super) fn failure(defect: SynthesisDefect, detail: String) -> Error {
     }
 }
 
-impl FourBar {
-    /// Synthesises the four-bar (searching the moving pivots the spec leaves free), its
-    /// drive and solids. Errors: [`Error::Synthesis`] with the defect.
-    pub fn synthesise(spec: FourBarSpec) -> Result<Self> {
-        for position in [spec.takeoff, spec.landing] {
-            let t = position.flap.translation.vector;
-            if !(t.x.is_finite() && t.y.is_finite() && position.deflection_rad.is_finite()) {
-                return Err(failure(
-                    SynthesisDefect::MissingPositions,
-                    "a precision position is not finite".into(),
-                ));
-            }
-        }
-        let Some((_, _, flap_chord)) = spec.outline.flap_chord() else {
-            return Err(failure(
-                SynthesisDefect::MissingPositions,
-                "the station has no flap section".into(),
-            ));
-        };
-        let chord = spec.outline.chord_m().unwrap_or(flap_chord);
-        let mut search = FourBarSearch::default();
-        let given = |p: Point2<f64>, which: &str| {
-            candidate(&spec, p, chord)
-                .map_err(|(defect, why)| failure(defect, format!("{which} pivot {}: {why}", mm(p))))
-        };
-        let grid = if spec.forward_pivot.is_none() || spec.aft_pivot.is_none() {
-            candidates(&spec, &mut search, chord)
-        } else {
-            Vec::new()
-        };
-        let forward = match spec.forward_pivot {
-            Some(p) => vec![given(p, "forward")?],
-            None => grid.clone(),
-        };
-        let aft = match spec.aft_pivot {
-            Some(p) => vec![given(p, "aft")?],
-            None => grid,
-        };
-        let fixed_pair = spec.forward_pivot.is_some() && spec.aft_pivot.is_some();
-        let section_bottom = spec
-            .outline
-            .wing
-            .iter()
-            .chain(&spec.outline.flap)
-            .flatten()
-            .map(|p| p.y)
-            .fold(f64::INFINITY, f64::min);
-        let mut feasible: Vec<(f64, f64, Loop)> = Vec::new();
-        let mut last_defect = None;
-        for first in &forward {
-            for second in &aft {
-                // Each unordered pair once.
-                if spec.forward_pivot.is_none() && spec.aft_pivot.is_none() && first.moving.x <= second.moving.x {
-                    continue;
-                }
-                if (first.moving - second.moving).norm() < 0.1 * flap_chord
-                    || (first.fixed - second.fixed).norm() < 0.02 * flap_chord
-                {
-                    if fixed_pair {
-                        last_defect = Some((SynthesisDefect::NoRealSolution, "the two links coincide".to_string()));
-                    }
-                    continue;
-                }
-                search.pairs += 1;
-                // The screw drives the link that turns less (a square mount keeps it above
-                // the minimum transmission angle over up to pi - 2 mu_min of rotation).
-                let (crank, rocker) = if first.turns[1].abs() <= second.turns[1].abs() {
-                    (first, second)
-                } else {
-                    (second, first)
-                };
-                match check_pair(&spec, crank, rocker) {
-                    Ok((loop_, transmission)) => {
-                        search.feasible += 1;
-                        let lowest = [loop_.o1, loop_.o2, loop_.a1, loop_.a2]
-                            .iter()
-                            .map(|p| p.y)
-                            .fold(f64::INFINITY, f64::min);
-                        let depth = (section_bottom - lowest).max(0.0);
-                        feasible.push((depth, transmission, loop_));
-                    }
-                    Err((defect, why)) => {
-                        match defect {
-                            SynthesisDefect::BranchOrOrder => search.branch_change += 1,
-                            SynthesisDefect::Toggle => search.toggle += 1,
-                            _ => search.link_in_wing += 1,
-                        }
-                        last_defect = Some((defect, why));
-                    }
-                }
-            }
-        }
-        if feasible.is_empty() {
-            if fixed_pair {
-                let (defect, why) = last_defect.unwrap_or((SynthesisDefect::NoRealSolution, "no pair".into()));
-                return Err(failure(defect, why));
-            }
-            return Err(search_failure(&search));
-        }
-        // The shallowest loops by their pivots, then the shallowest whole mechanism once the
-        // screw and the struts are placed (they set the fairing as often as the pivots do).
-        feasible.sort_by(|a, b| a.0.total_cmp(&b.0).then(b.1.total_cmp(&a.1)));
-        // A mechanism whose screw and struts are placed clear ranks before one that is not.
-        let mut best: Option<((bool, f64), Self)> = None;
-        let mut first_error = None;
-        for (examined, &(_, _, loop_)) in feasible.iter().take(FINALISTS).enumerate() {
-            // Enough once a clear mechanism is in hand and the shallowest few were seen.
-            if examined >= CLEAR_FINALISTS && best.as_ref().is_some_and(|((blocked, _), _)| !blocked) {
-                break;
-            }
-            match Self::build(spec.clone(), loop_, search) {
-                Ok(four_bar) => {
-                    let s = &four_bar.synthesis;
-                    let rank = (!(s.actuator_clear && s.placement_clear), s.depth_below_section_m);
-                    let better = best
-                        .as_ref()
-                        .is_none_or(|((blocked, d), _)| (rank.0, rank.1 + 1e-9) < (*blocked, *d));
-                    if better {
-                        best = Some((rank, four_bar));
-                    }
-                }
-                Err(error) => {
-                    first_error.get_or_insert(error);
-                }
-            }
-        }
-        match (best, first_error) {
-            (Some((_, four_bar)), _) => Ok(four_bar),
-            (None, Some(error)) => Err(error),
-            (None, None) => Err(search_failure(&search)),
-        }
-    }
-
-    /// Depth of every solid of the mechanism over the deployment below the stowed section's
-    /// lowest point (m).
-    fn whole_depth(&self) -> Result<f64> {
-        let section_bottom = self
-            .spec
-            .outline
-            .wing
-            .iter()
-            .chain(&self.spec.outline.flap)
-            .flatten()
-            .map(|p| p.y)
-            .fold(f64::INFINITY, f64::min);
-        let mut lowest = f64::INFINITY;
-        for input in self.input_range().samples(PLACEMENT_SAMPLES + 1) {
-            let pose = FlapMechanism::pose(self, input)?;
-            for (body, placement) in self.bodies.iter().zip(&pose.bodies) {
-                for solid in &body.solids {
-                    let posed = crate::seam::posed_shape(&solid.shape, placement);
-                    let low = posed.skeleton().iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
-                    lowest = lowest.min(low - posed.radius_m());
-                }
-            }
-        }
-        Ok((section_bottom - lowest).max(0.0))
-    }
-
-    fn build(spec: FourBarSpec, loop_: Loop, search: FourBarSearch) -> Result<Self> {
-        let turns = [
-            turn_angle(loop_.o1, loop_.a1, spec.takeoff.flap * loop_.a1),
-            turn_angle(loop_.o1, loop_.a1, spec.landing.flap * loop_.a1),
-        ];
-        let travel = turns[1];
-        let mut min_transmission = f64::INFINITY;
-        let mut max_crank_ratio = 0.0_f64;
-        for k in 0..=LOOP_SAMPLES {
-            let phi = travel * k as f64 / LOOP_SAMPLES as f64;
-            let pose = loop_.at(phi).ok_or_else(|| {
-                failure(
-                    SynthesisDefect::NoRealSolution,
-                    "the loop breaks inside the deployment".into(),
-                )
-            })?;
-            min_transmission = min_transmission.min(pose.transmission);
-            let (rocker, flap) = loop_.rates(&pose);
-            max_crank_ratio = max_crank_ratio.max(rocker.abs()).max(flap.abs());
-        }
-        // Between samples the transmission angle changes at most as fast as the coupler and
-        // rocker turn: |dμ/dφ| <= |ω_r| + |ω_f| per unit crank rate, bounded by the rates at
-        // half the sampled minimum (they grow as 1/sin μ).
-        let step = travel.abs() / LOOP_SAMPLES as f64;
-        let crank_arm = (loop_.a1 - loop_.o1).norm();
-        let rate_bound = |mu: f64| crank_arm / (loop_.rocker * mu.sin()) + crank_arm / (loop_.coupler * mu.sin());
-        let certified = (min_transmission - 0.5 * step * rate_bound(0.5 * min_transmission)).max(0.0);
-        let hw = spec.hardware;
-        // In-plane margin for the 3D check's clearance and the flap's taper across a part's width.
-        let margin = hw.link_radius_m;
-        let choice = ScrewJackChoice {
-            arm: (loop_.o1, loop_.a1),
-            attachment_fraction: spec.actuator_attachment_fraction,
-            // On the crank, then on a horn beyond its fixed pivot.
-            other_fractions: &[0.35, 0.7, 0.9, -0.4, -0.7],
-            mount: spec.actuator_mount,
-            standoff_m: spec.actuator_standoff_m,
-            min_transmission_rad: spec.min_transmission_angle_rad,
-        };
-        let size = JackSize::new(&hw, spec.screw_drive.mean_radius_m);
-        let flap_at = |phi: f64| loop_.at(phi).map(|p| p.flap);
-        let (attachment, mount, actuator_clear) =
-            place_screw_jack(loop_.o1, travel, &choice, &size, margin, &spec.outline, &flap_at);
-        let mut placement_clear = true;
-        let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)
-            .filter_map(|k| loop_.at(travel * k as f64 / PLACEMENT_SAMPLES as f64).map(|p| p.flap))
-            .collect();
-        let ahead = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
-        let strut =
-            |from: Point2<f64>| strut_top(&spec.outline, from, &ahead, hw.link_radius_m, margin, &flap_poses, None);
-        // A pivot whose strut to the skin would cross the flap's path is held by a beam to
-        // the other pivot instead (one support beam carrying both), if that beam is clear.
-        let beam_clear = |from: Point2<f64>, to: Point2<f64>| {
-            flap_poses.iter().all(|pose| {
-                let back = pose.inverse();
-                crate::outline::segment_distance(&spec.outline.flap, back * from, back * to) > hw.link_radius_m + margin
-            }) && !crate::outline::segment_meets(&spec.outline.wing, from, to)
-        };
-        let (first, second) = (strut(loop_.o1), strut(loop_.o2));
-        let (first, second) = match (first, second) {
-            (Some(a), None) if beam_clear(loop_.o2, loop_.o1) => (Some(a), Some(loop_.o1)),
-            (None, Some(b)) if beam_clear(loop_.o1, loop_.o2) => (Some(loop_.o2), Some(b)),
-            other => other,
-        };
-        let strut_tops = match (first, second) {
-            (Some(a), Some(b)) => [a, b],
-            (a, b) => {
-                placement_clear = false;
-                let straight_up = |o: Point2<f64>| {
-                    spec.outline
-                        .wing_lower_point(o.x)
-                        .unwrap_or(Point2::new(o.x, o.y + hw.link_radius_m))
-                };
-                [
-                    a.unwrap_or_else(|| straight_up(loop_.o1)),
-                    b.unwrap_or_else(|| straight_up(loop_.o2)),
-                ]
-            }
-        };
-        let drive = RockerDrive::try_new(loop_.o1, mount, attachment).map_err(|_| {
-            failure(
-                SynthesisDefect::Toggle,
-                format!(
-                    "the screw mount {}, O1 and the crank attachment lie on one line",
-                    mm(mount)
-                ),
-            )
-        })?;
-        let drive_min = (0..=LOOP_SAMPLES)
-            .map(|k| {
-                let phi = travel * k as f64 / LOOP_SAMPLES as f64;
-                drive
-                    .state(drive.stroke_at(phi))
-                    .map_or(0.0, |s| s.transmission_angle_rad)
-            })
-            .fold(f64::INFINITY, f64::min);
-        if !drive.clear_of_toggles(travel, 1e-3) || drive_min < spec.min_transmission_angle_rad {
-            return Err(failure(
-                SynthesisDefect::Toggle,
-                format!(
-                    "the screw's transmission angle on the crank falls to {:.1} deg (minimum {:.1} deg); move the actuator mount or its attachment",
-                    drive_min.to_degrees(),
-                    spec.min_transmission_angle_rad.to_degrees()
-                ),
-            ));
-        }
-        let stroke_m = [drive.stroke_at(0.0), drive.stroke_at(travel)];
-        let (screw, nominal_speed_mps) = spec.screw_drive.screw_for(stroke_m[1] - stroke_m[0]);
-        let miss = [(turns[0], spec.takeoff), (turns[1], spec.landing)]
-            .iter()
-            .filter_map(|(phi, position)| {
-                let pose = loop_.at(*phi)?;
-                Some(
-                    (pose.a1 - position.flap * loop_.a1)
-                        .norm()
-                        .max((pose.a2 - position.flap * loop_.a2).norm()),
-                )
-            })
-            .fold(0.0, f64::max);
-        let synthesis = FourBarSynthesis {
-            crank_pivot_m: loop_.o1,
-            rocker_pivot_m: loop_.o2,
-            moving_pivots_m: [loop_.a1, loop_.a2],
-            crank_rotation_rad: turns,
-            min_transmission_angle_rad: min_transmission,
-            drive_min_transmission_angle_rad: drive_min,
-            certified_min_transmission_angle_rad: certified,
-            depth_below_section_m: 0.0,
-            precision_miss_m: miss,
-            actuator_mount_m: mount,
-            actuator_attachment_m: attachment,
-            stroke_m,
-            screw,
-            // Long enough to carry the nut at the longest stroke: a free end would sweep.
-            screw_length_m: stroke_m[0].max(stroke_m[1]) + hw.nut_radius_m,
-            strut_tops_m: strut_tops,
-            actuator_clear,
-            placement_clear,
-            nominal_speed_mps,
-            search,
-        };
-        let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &loop_, &drive, certified);
-        let mut four_bar = Self {
-            spec,
-            synthesis,
-            loop_,
-            drive,
-            bodies,
-            joints,
-        };
-        four_bar.synthesis.depth_below_section_m = four_bar.whole_depth()?;
-        Ok(four_bar)
-    }
-
-    /// The designer's choices.
-    pub fn spec(&self) -> &FourBarSpec {
-        &self.spec
-    }
-
-    /// What synthesis computed.
-    pub fn synthesis(&self) -> &FourBarSynthesis {
-        &self.synthesis
-    }
-
-    /// The flap's displacement and the loop's transmission angle at crank angle `phi`: the
-    /// closed-form pose (benchmarked).
-    pub fn flap_at_crank_angle(&self, phi: f64) -> Option<(Isometry2<f64>, f64)> {
-        self.loop_.at(phi).map(|p| (p.flap, p.transmission))
-    }
-
-    fn loop_pose(&self, input: f64) -> Result<(crate::rocker_drive::RockerState, LoopPose)> {
-        let state = self.drive.state(input)?;
-        let pose = self.loop_.at(state.rotation_rad).ok_or(Error::CannotAssemble {
-            input_m: input,
-            min_input_m: self.synthesis.stroke_m[0].min(self.synthesis.stroke_m[1]),
-            max_input_m: self.synthesis.stroke_m[0].max(self.synthesis.stroke_m[1]),
-        })?;
-        Ok((state, pose))
-    }
-}
-
 pub(super) fn mm(p: Point2<f64>) -> String {
     format!("({:.1}, {:.1}) mm", p.x * 1e3, p.y * 1e3)
-}
-
-fn bodies_and_joints(
-    spec: &FourBarSpec,
-    synthesis: &FourBarSynthesis,
-    loop_: &Loop,
-    drive: &RockerDrive,
-    certified_transmission: f64,
-) -> (Vec<Body>, Vec<Joint>) {
-    let hw = &spec.hardware;
-    let (o1, o2, a1, a2) = (loop_.o1, loop_.o2, loop_.a1, loop_.a2);
-    let (b0, c) = (synthesis.actuator_mount_m, synthesis.actuator_attachment_m);
-    let capsule = |name: &str, from, to, radius_m| BodySolid {
-        name: name.into(),
-        shape: PlanarShape::Capsule { from, to, radius_m },
-        width_m: 0.0,
-        offset_m: 0.0,
-    };
-    let travel = synthesis.crank_rotation_rad[1];
-    let crank_rate = drive.rotation_rate_bound(travel);
-    let crank_arm = (a1 - o1).norm();
-    let sine = certified_transmission.sin().max(1e-9);
-    let rocker_rate = crank_arm * crank_rate / (loop_.rocker * sine);
-    let flap_rate = crank_arm * crank_rate / (loop_.coupler * sine);
-    let shortest = synthesis.stroke_m[0].min(synthesis.stroke_m[1]);
-    let c_arm = (c - o1).norm();
-    let screw_rate = c_arm * crank_rate / shortest;
-    let direction = (c - b0).normalize();
-    let half_body = direction * (0.5 * hw.jack_body_length_m);
-    let screw_radius = synthesis.screw.mean_radius_m + 0.25 * synthesis.screw.lead_m;
-    let bodies = vec![
-        Body {
-            name: "flap".into(),
-            role: BodyRole::Flap,
-            solids: vec![capsule("bracket", a1, a2, hw.link_radius_m)],
-            speed_bound: SpeedBound {
-                reference: a1,
-                linear_per_input: crank_arm * crank_rate,
-                angular_per_input: flap_rate,
-            },
-        },
-        Body {
-            name: "crank".into(),
-            role: BodyRole::Link,
-            // From the screw's attachment when it sits on a horn beyond O1.
-            solids: vec![capsule(
-                "crank",
-                if (c - o1).dot(&(a1 - o1)) < 0.0 { c } else { o1 },
-                a1,
-                hw.link_radius_m,
-            )],
-            speed_bound: SpeedBound {
-                reference: o1,
-                linear_per_input: 0.0,
-                angular_per_input: crank_rate,
-            },
-        },
-        Body {
-            name: "rocker".into(),
-            role: BodyRole::Link,
-            solids: vec![capsule("rocker", o2, a2, hw.link_radius_m)],
-            speed_bound: SpeedBound {
-                reference: o2,
-                linear_per_input: 0.0,
-                angular_per_input: rocker_rate,
-            },
-        },
-        Body {
-            name: "screw".into(),
-            role: BodyRole::Actuator,
-            solids: vec![
-                capsule("screw", b0, b0 + direction * synthesis.screw_length_m, screw_radius),
-                capsule("jack-body", b0 - half_body, b0 + half_body, hw.jack_body_radius_m),
-            ],
-            speed_bound: SpeedBound {
-                reference: b0,
-                linear_per_input: 0.0,
-                angular_per_input: screw_rate,
-            },
-        },
-        Body {
-            name: "nut".into(),
-            role: BodyRole::Actuator,
-            solids: vec![capsule("nut", c, c, hw.nut_radius_m)],
-            speed_bound: SpeedBound {
-                reference: c,
-                linear_per_input: c_arm * crank_rate,
-                angular_per_input: screw_rate,
-            },
-        },
-        Body {
-            name: "support".into(),
-            role: BodyRole::Support,
-            solids: vec![
-                capsule("strut-O1", o1, synthesis.strut_tops_m[0], hw.link_radius_m),
-                capsule("strut-O2", o2, synthesis.strut_tops_m[1], hw.link_radius_m),
-            ],
-            speed_bound: SpeedBound::FIXED,
-        },
-    ];
-    let joint = |name: &str, description: &str, geometry, ends, touching: &[(&str, &str)]| Joint {
-        name: name.into(),
-        description: description.into(),
-        geometry,
-        ends,
-        touching_solids: touching.iter().map(|(x, y)| (x.to_string(), y.to_string())).collect(),
-    };
-    let joints = vec![
-        joint(
-            "O1",
-            "crank on its support",
-            JointGeometry::Revolute { at: o1 },
-            [JointEnd::Body(SUPPORT), JointEnd::Body(CRANK)],
-            &[("strut-O1", "crank")],
-        ),
-        joint(
-            "O2",
-            "rocker on its support",
-            JointGeometry::Revolute { at: o2 },
-            [JointEnd::Body(SUPPORT), JointEnd::Body(ROCKER)],
-            &[("strut-O2", "rocker")],
-        ),
-        joint(
-            "A1",
-            "crank pinned to the flap",
-            JointGeometry::Revolute { at: a1 },
-            [JointEnd::Body(CRANK), JointEnd::Body(FLAP)],
-            &[("crank", "bracket")],
-        ),
-        joint(
-            "A2",
-            "rocker pinned to the flap",
-            JointGeometry::Revolute { at: a2 },
-            [JointEnd::Body(ROCKER), JointEnd::Body(FLAP)],
-            &[("rocker", "bracket")],
-        ),
-        joint(
-            "C",
-            "nut pivoting on the crank",
-            JointGeometry::Revolute { at: c },
-            [JointEnd::Body(NUT), JointEnd::Body(CRANK)],
-            &[("nut", "crank")],
-        ),
-        joint(
-            "nut-slide",
-            "nut riding along the screw",
-            JointGeometry::Prismatic {
-                origin: c,
-                direction: Unit::new_normalize(c - b0),
-            },
-            [JointEnd::Body(SCREW), JointEnd::Body(NUT)],
-            &[("screw", "nut")],
-        ),
-        joint(
-            "B0",
-            "screw turning in the jack body",
-            JointGeometry::Revolute { at: b0 },
-            [JointEnd::Ground, JointEnd::Body(SCREW)],
-            &[],
-        ),
-    ];
-    (bodies, joints)
 }
 
 impl FlapMechanism for FourBar {
@@ -772,11 +263,7 @@ impl FlapMechanism for FourBar {
         let crank = turn_about(l.o1, state.rotation_rad);
         let rocker = turn_about(l.o2, turn_angle(l.o2, l.a2, pose.a2));
         let b0 = self.synthesis.actuator_mount_m;
-        let screw_turn = self.drive.screw_rotation(state.attachment);
-        let c_stowed = self.synthesis.actuator_attachment_m;
-        let nut = Translation2::from(state.attachment.coords)
-            * Isometry2::rotation(screw_turn)
-            * Translation2::from(-c_stowed.coords);
+        let (screw, nut) = self.drive.screw_and_nut(state.attachment);
         let points = [
             ("O1", l.o1, true),
             ("O2", l.o2, true),
@@ -792,14 +279,7 @@ impl FlapMechanism for FourBar {
         Ok(MechanismPose {
             deflection_rad: pose.flap.rotation.angle(),
             input,
-            bodies: vec![
-                pose.flap,
-                crank,
-                rocker,
-                turn_about(b0, screw_turn),
-                nut,
-                Isometry2::identity(),
-            ],
+            bodies: vec![pose.flap, crank, rocker, screw, nut, Isometry2::identity()],
             flap: pose.flap,
             points,
         })

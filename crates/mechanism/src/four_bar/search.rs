@@ -8,7 +8,7 @@ use nalgebra::Point2;
 use super::linkage::{turn_angle, Loop};
 use super::{failure, mm, FourBarSearch, FourBarSpec, LOOP_SAMPLES};
 use crate::error::{Error, SynthesisDefect};
-use crate::outline::{boundary_distance, inside, segment_meets, vertical_span};
+use crate::outline::{inside, segment_meets, vertical_span};
 use crate::precision::{circle_centre, PrecisionPosition};
 use crate::rocker_drive::cross;
 
@@ -174,6 +174,8 @@ pub(super) fn check_pair(
             }
         }
     }
+    // A zero gap at a setting touches the lip to within rounding (1e-6 of the chord).
+    let lip_tolerance = 1e-6 * spec.outline.chord_m().unwrap_or(1.0);
     let mut min_transmission = f64::INFINITY;
     let mut previous = 0.0;
     let sense = spec.landing.deflection_rad.signum();
@@ -183,20 +185,15 @@ pub(super) fn check_pair(
             return Err((SynthesisDefect::NoRealSolution, "the loop cannot close part way".into()));
         };
         min_transmission = min_transmission.min(pose.transmission);
-        // The flap must not pass through the wing's trailing edge between the settings (a
-        // zero gap at a setting touches it, within rounding).
-        if let Some(lip) = spec.outline.lip {
-            let at = pose.flap.inverse() * lip;
-            let chord = spec.outline.chord_m().unwrap_or(1.0);
-            if inside(&spec.outline.flap, at) && boundary_distance(&spec.outline.flap, at) > 1e-6 * chord {
-                return Err((
-                    SynthesisDefect::PivotOutsideRegion,
-                    format!(
-                        "the flap passes through the wing's trailing edge at {:.1} deg of crank",
-                        phi.to_degrees()
-                    ),
-                ));
-            }
+        // The flap must not pass through the wing's trailing edge between the settings.
+        if spec.outline.flap_through_lip(&pose.flap, lip_tolerance) {
+            return Err((
+                SynthesisDefect::PivotOutsideRegion,
+                format!(
+                    "the flap passes through the wing's trailing edge at {:.1} deg of crank",
+                    phi.to_degrees()
+                ),
+            ));
         }
         // The fixed pivots stay out of the moving flap.
         let back = pose.flap.inverse();

@@ -45,6 +45,9 @@ fn synthesised_kinds_meet_their_precision_positions_through_the_pipeline() {
             .unwrap_or_else(|| panic!("{station}.{member} is sized"));
         assert!(rod["mass_kg"].as_f64().unwrap() > 0.0);
     }
+    // The acceptance: every pair of the transport scene clears, the rigid flaps moving by
+    // the motion fitted to their stations and the take-off slot sealed.
+    assert_eq!(report["interference"]["passes"], true, "{}", report["warnings"]);
     let kinds: Vec<&str> = stations
         .iter()
         .map(|s| s["mechanism"]["kind"].as_str().unwrap())
@@ -58,17 +61,12 @@ fn synthesised_kinds_meet_their_precision_positions_through_the_pipeline() {
             if !exact {
                 continue;
             }
-            for (measured, target) in [
-                ("gap_percent_chord", "target_gap_percent_chord"),
-                ("overlap_percent_chord", "target_overlap_percent_chord"),
-            ] {
-                let miss = setting[measured].as_f64().unwrap() - setting[target].as_f64().unwrap();
-                assert!(
-                    miss.abs() < 1e-6,
-                    "{} {name} {measured}: misses by {miss} %c",
-                    station["name"]
-                );
-            }
+            let (gap_miss, overlap_miss, allowed) = setting_misses(station, setting);
+            assert!(
+                gap_miss.abs() <= allowed && overlap_miss.abs() <= allowed,
+                "{} {name}: gap misses by {gap_miss} %c, overlap by {overlap_miss} %c, more than the rigid flap's shift {allowed} %c",
+                station["name"]
+            );
         }
         let synthesis = &station["mechanism"]["details"]["synthesis"];
         match kind {
@@ -140,6 +138,32 @@ fn changed_sweep_dihedral_and_twist_are_followed_and_checked() {
     sweep_dihedral_and_twist("27.0", "9.0", "5.0", "-4.0");
 }
 
+/// How far a station's measured gap and overlap at `setting` miss the targets the kind was
+/// synthesised to (% of the local chord): the scene's, or the sealed gap where the setting
+/// is sealed; and how far they may: the rigid flap's shift of the station's setting
+/// (`rigid_flap`), converted to % chord, plus rounding. Gap and overlap are distances to
+/// points of the flap section, so moving every point by at most s moves each by at most s.
+fn setting_misses(station: &Value, setting: &Value) -> (f64, f64, f64) {
+    let position = &station["flap_position"];
+    let chord = position["local_chord_m"].as_f64().unwrap();
+    let name = setting["setting"].as_str().unwrap();
+    let target_gap = match setting["sealed_gap_m"].as_f64() {
+        Some(sealed) => 100.0 * sealed / chord,
+        None => setting["target_gap_percent_chord"].as_f64().unwrap(),
+    };
+    let shift_m = position["rigid_flap"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .find(|r| r["setting"] == name)
+        .map_or(0.0, |r| r["shift_from_station_target_m"].as_f64().unwrap());
+    (
+        setting["gap_percent_chord"].as_f64().unwrap() - target_gap,
+        setting["overlap_percent_chord"].as_f64().unwrap() - setting["target_overlap_percent_chord"].as_f64().unwrap(),
+        100.0 * shift_m / chord + 1e-6,
+    )
+}
+
 /// Designs the transport scene with these panel angles and twists; false when a station
 /// is refused (checked to be by key), true when designed (and checked).
 fn sweep_dihedral_and_twist(sweep: &str, dihedral: &str, root_twist: &str, tip_twist: &str) -> bool {
@@ -164,11 +188,10 @@ fn sweep_dihedral_and_twist(sweep: &str, dihedral: &str, root_twist: &str, tip_t
     for station in report["stations"].as_array().unwrap() {
         let landing = &station["flap_position"]["settings"][2];
         assert_eq!(landing["setting"], "landing");
-        let miss =
-            landing["gap_percent_chord"].as_f64().unwrap() - landing["target_gap_percent_chord"].as_f64().unwrap();
+        let (miss, _, allowed) = setting_misses(station, landing);
         assert!(
-            miss.abs() < 1e-6,
-            "{}: landing gap misses by {miss} %c",
+            miss.abs() <= allowed,
+            "{}: landing gap misses by {miss} %c, more than the rigid flap's shift {allowed} %c",
             station["name"]
         );
     }

@@ -141,7 +141,7 @@ pub fn design_with_progress(
         }
         if full {
             stages.run("gap-overlap", || {
-                flap_position::flap_positions(&scene.flap, &mut records)
+                flap_position::flap_positions(&scene.flap, &mut records, scene.interference.required_clearance_m)
             })?;
             for record in &records {
                 if let Some(position) = &record.flap_position {

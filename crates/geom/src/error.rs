@@ -110,6 +110,12 @@ pub enum Error {
         /// Tip section position (m).
         tip_y_m: f64,
     },
+    /// Points that do not span what the operation needs (collinear points for a rigid fit).
+    #[error("{what}")]
+    Degenerate {
+        /// What is degenerate, in words.
+        what: &'static str,
+    },
     /// A hinge axis whose two points (nearly) coincide or that does not run outboard.
     #[error("flap {flap:?}: hinge axis length {length_m} m (spanwise run {spanwise_m} m) does not define an outboard direction")]
     DegenerateHingeAxis {

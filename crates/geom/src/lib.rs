@@ -55,6 +55,7 @@ mod loft;
 pub mod mesh;
 mod mesher;
 pub mod parts;
+pub mod rigid_fit;
 pub mod structure;
 pub mod wing;
 
@@ -64,5 +65,6 @@ pub use error::{Error, Result};
 pub use flap::{Flap, FlapSectionSpec, FlapSpec, HingeSpec};
 pub use mesh::{Aabb, MeshCheck, TriMesh};
 pub use parts::{MeshResolution, Part, PartKind, SectionOutline, WingModel};
+pub use rigid_fit::{fit_rigid_motion, FitSpeedGain, RigidFit};
 pub use structure::{tube_mesh, SparSpec, TorqueTubeSpec};
 pub use wing::{PanelSpec, SectionAt, SweepReference, Wing, WingSectionSpec, WingSpec};

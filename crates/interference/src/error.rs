@@ -51,6 +51,15 @@ pub enum Error {
         /// The flap part.
         part: String,
     },
+    /// The stations carrying a flap cannot fix its rigid motion.
+    #[error("flap {flap}: its stations' sections cannot fix a rigid motion")]
+    FlapFit {
+        /// The flap part.
+        flap: String,
+        /// Why.
+        #[source]
+        source: flapwright_geom::Error,
+    },
     /// A declared joint names a part the station does not have.
     #[error("joint {joint} names part {name}, which its station does not have")]
     UnknownPart {

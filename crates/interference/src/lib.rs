@@ -44,6 +44,7 @@
 mod check;
 mod error;
 mod fairing;
+mod flap_motion;
 mod part;
 mod refine;
 mod station;
@@ -51,6 +52,7 @@ mod sweep;
 
 pub use check::{check_assembly, Assembly, ContactResult, InterferenceReport, PairResult, Requirements, UncheckedPair};
 pub use error::{Error, Result};
+pub use flap_motion::{fit_points, FittedFlapMotion, FlapCarrier, FIT_POINTS_PER_CARRIER, FIT_SPEED_MARGIN};
 pub use fairing::{fairing_depth, FairingDepth, PlanarCapsule};
 pub use part::{Fixed, Motion, Part};
 pub use station::{flap_part, planar_parts, station_parts, DeclaredContact, StationPart, StationParts};

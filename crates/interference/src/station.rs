@@ -92,7 +92,7 @@ struct BodyMotion {
 }
 
 /// The planar displacement as a rigid motion of the station frame (about its z axis).
-fn lift(displacement: &Isometry2<f64>) -> Isometry3<f64> {
+pub(crate) fn lift(displacement: &Isometry2<f64>) -> Isometry3<f64> {
     let t = displacement.translation.vector;
     Isometry3::from_parts(
         Translation3::new(t.x, t.y, 0.0),

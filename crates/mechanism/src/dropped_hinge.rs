@@ -260,7 +260,7 @@ impl DroppedHinge {
         let lip_tolerance = 1e-6 * spec.outline.chord_m().unwrap_or(1.0);
         let flap_through_lip_at_rad = (1..TRANSMISSION_SAMPLES)
             .map(|k| turn * k as f64 / TRANSMISSION_SAMPLES as f64)
-            .find(|&psi| spec.outline.flap_through_lip(&turn_about(hinge, psi), lip_tolerance));
+            .find(|&psi| spec.outline.flap_near_lip(&turn_about(hinge, psi), lip_tolerance));
         let synthesis = DroppedHingeSynthesis {
             flap_through_lip_at_rad,
             hinge_m: hinge,
@@ -543,7 +543,8 @@ impl FlapMechanism for DroppedHinge {
         let mut warnings = Vec::new();
         if let Some(at) = self.synthesis.flap_through_lip_at_rad {
             warnings.push(format!(
-                "the turn about the hinge takes the flap through the wing's trailing edge at {:.1} deg: a dropped hinge meets stowed and landing only",
+                "the turn about the hinge takes the flap through or within {:.1} mm of the wing's trailing edge at {:.1} deg: a dropped hinge meets stowed and landing only",
+                1e3 * self.spec.outline.lip_clearance_m,
                 at.to_degrees()
             ));
         }

@@ -19,6 +19,9 @@ pub struct StationOutline {
     /// The main wing's trailing edge (the cove's upper lip) the gap is measured from; the
     /// flap must not pass through it between the settings.
     pub lip: Option<Point2<f64>>,
+    /// The clearance the flap keeps from the lip between the settings (m; the scene's
+    /// required clearance; 0: it may touch).
+    pub lip_clearance_m: f64,
 }
 
 fn edges(polygons: &[Vec<Point2<f64>>]) -> impl Iterator<Item = (Point2<f64>, Point2<f64>)> + '_ {
@@ -108,6 +111,18 @@ pub fn extent_x(polygons: &[Vec<Point2<f64>>]) -> Option<(f64, f64)> {
     })
 }
 
+/// A point on (or on a bracket of) the flap in terms of its section, so that it names the
+/// corresponding point at another station of the same flap: `chord_fraction` of the flap
+/// chord aft of its leading edge, `depth_fraction` of the flap chord below the lower
+/// surface there (negative: above it).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FlapPoint {
+    /// Aft of the flap's leading edge, fraction of its chord.
+    pub chord_fraction: f64,
+    /// Below its lower surface, fraction of its chord.
+    pub depth_fraction: f64,
+}
+
 impl StationOutline {
     /// True when the capsule `a`-`b` of `radius` keeps `margin` clear of the wing and the
     /// structure, and of the flap moved by each of `flap_poses`.
@@ -128,13 +143,13 @@ impl StationOutline {
             })
     }
 
-    /// True when the flap moved by `flap` passes through the wing's trailing edge (the lip):
-    /// the lip lies inside the moved flap by more than `tolerance_m` (a zero gap at a setting
-    /// touches it within rounding). False without a lip.
-    pub fn flap_through_lip(&self, flap: &nalgebra::Isometry2<f64>, tolerance_m: f64) -> bool {
+    /// True when the flap moved by `flap` passes through the wing's trailing edge (the lip)
+    /// or closer to it than [`Self::lip_clearance_m`], less `tolerance_m` (a gap of exactly
+    /// the clearance at a setting passes within rounding). False without a lip.
+    pub fn flap_near_lip(&self, flap: &nalgebra::Isometry2<f64>, tolerance_m: f64) -> bool {
         self.lip.is_some_and(|lip| {
             let at = flap.inverse() * lip;
-            inside(&self.flap, at) && boundary_distance(&self.flap, at) > tolerance_m
+            inside(&self.flap, at) || boundary_distance(&self.flap, at) < self.lip_clearance_m - tolerance_m
         })
     }
 
@@ -154,6 +169,26 @@ impl StationOutline {
             moment += (a.coords + b.coords) * twice / 6.0;
         }
         (area.abs() > 0.0).then(|| Point2::from(moment / area))
+    }
+
+    /// `point` of the stowed flap section in chord terms ([`FlapPoint`]); `None` where no
+    /// vertical through it meets the flap.
+    pub fn to_flap_point(&self, point: Point2<f64>) -> Option<FlapPoint> {
+        let (le, _, chord) = self.flap_chord()?;
+        let (lo, _) = vertical_span(&self.flap, point.x)?;
+        Some(FlapPoint {
+            chord_fraction: (le - point.x) / chord,
+            depth_fraction: (lo - point.y) / chord,
+        })
+    }
+
+    /// The point `at` names on this station's stowed flap section (m); `None` where its
+    /// chord fraction misses the section.
+    pub fn flap_point(&self, at: FlapPoint) -> Option<Point2<f64>> {
+        let (le, _, chord) = self.flap_chord()?;
+        let x = le - at.chord_fraction * chord;
+        let (lo, _) = vertical_span(&self.flap, x)?;
+        Some(Point2::new(x, lo - at.depth_fraction * chord))
     }
 
     /// The local clean chord: wing nose to stowed flap trailing edge (m).
@@ -215,16 +250,45 @@ mod tests {
         assert!(vertical_span(&square, 2.0).is_none());
         assert!(segment_meets(&square, Point2::new(-1.0, 0.5), Point2::new(2.0, 0.5)));
         assert!(!segment_meets(&square, Point2::new(-1.0, 1.5), Point2::new(2.0, 1.5)));
-        // A lip at the square's top edge: touching is not passing through, 0.1 deeper is.
+        // A lip at the square's top edge: touching is not passing through, 0.1 deeper is
+        // (no clearance asked).
         let outline = StationOutline {
             flap: square.clone(),
             lip: Some(Point2::new(0.5, 1.0)),
             ..Default::default()
         };
         let shifted = |d: f64| nalgebra::Isometry2::translation(0.0, d);
-        assert!(!outline.flap_through_lip(&shifted(0.0), 1e-9));
-        assert!(outline.flap_through_lip(&shifted(0.1), 1e-9));
-        assert!(!outline.flap_through_lip(&shifted(-0.1), 1e-9));
+        assert!(!outline.flap_near_lip(&shifted(0.0), 1e-9));
+        assert!(outline.flap_near_lip(&shifted(0.1), 1e-9));
+        assert!(!outline.flap_near_lip(&shifted(-0.1), 1e-9));
+        // With a clearance of 0.05: 0.1 below passes, 0.04 below does not.
+        let kept = StationOutline {
+            lip_clearance_m: 0.05,
+            ..outline.clone()
+        };
+        assert!(!kept.flap_near_lip(&shifted(-0.1), 1e-9));
+        assert!(kept.flap_near_lip(&shifted(-0.04), 1e-9));
+        assert!(!kept.flap_near_lip(&shifted(-0.05), 1e-9));
         assert!((boundary_distance(&square, Point2::new(0.5, 0.9)) - 0.1).abs() < 1e-12);
+    }
+
+    #[test]
+    fn flap_points_name_the_same_place_on_a_scaled_section() {
+        let square = |scale: f64| {
+            vec![[0.0, 0.0], [1.0, 0.0], [1.0, 0.3], [0.0, 0.3]]
+                .into_iter()
+                .map(|[x, y]| Point2::new(scale * x, scale * y))
+                .collect::<Vec<_>>()
+        };
+        let (small, large) = (
+            StationOutline { flap: vec![square(1.0)], ..Default::default() },
+            StationOutline { flap: vec![square(2.0)], ..Default::default() },
+        );
+        let bracket = Point2::new(0.7, -0.2);
+        let at = small.to_flap_point(bracket).unwrap();
+        assert!((at.chord_fraction - 0.3).abs() < 1e-12 && (at.depth_fraction - 0.2).abs() < 1e-12);
+        let there = large.flap_point(at).unwrap();
+        assert!((there - Point2::new(1.4, -0.4)).norm() < 1e-12);
+        assert!(small.flap_point(FlapPoint { chord_fraction: 1.5, depth_fraction: 0.0 }).is_none());
     }
 }

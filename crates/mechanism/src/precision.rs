@@ -66,9 +66,49 @@ pub fn circle_centre(a: Point2<f64>, b: Point2<f64>, c: Point2<f64>) -> Option<P
     centre.coords.iter().all(|v| v.is_finite()).then_some(centre)
 }
 
+/// The planar displacement d minimising Σ |d(from_k) - to_k|² (the 2D orthogonal
+/// Procrustes solution in closed form: the rotation angle is atan2(Σ p̃ × q̃, Σ p̃ · q̃) of
+/// the points about their centroids); `None` for fewer than two pairs, lists of different
+/// lengths, coincident `from` points or a non-finite coordinate.
+pub fn fit_displacement(from: &[Point2<f64>], to: &[Point2<f64>]) -> Option<Isometry2<f64>> {
+    if from.len() < 2 || from.len() != to.len() {
+        return None;
+    }
+    let n = from.len() as f64;
+    let centre = |points: &[Point2<f64>]| points.iter().fold(nalgebra::Vector2::zeros(), |s, p| s + p.coords) / n;
+    let (from_centre, to_centre) = (centre(from), centre(to));
+    let (mut sin, mut cos, mut spread) = (0.0, 0.0, 0.0);
+    for (p, q) in from.iter().zip(to) {
+        let (a, b) = (p.coords - from_centre, q.coords - to_centre);
+        sin += cross(a, b);
+        cos += a.dot(&b);
+        spread += a.norm_squared();
+    }
+    if !(spread > 0.0) || !sin.is_finite() || !cos.is_finite() || !to_centre.iter().all(|v| v.is_finite()) {
+        return None;
+    }
+    let rotation = nalgebra::UnitComplex::new(sin.atan2(cos));
+    Some(Isometry2::from_parts(
+        nalgebra::Translation2::from(to_centre - rotation * from_centre),
+        rotation,
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fit_displacement_recovers_an_exact_displacement_and_refuses_a_point() {
+        let displacement = Isometry2::new(nalgebra::Vector2::new(0.4, -0.7), -2.5);
+        let from = [Point2::new(0.0, 0.0), Point2::new(1.0, 0.1), Point2::new(0.3, -0.6)];
+        let to: Vec<_> = from.iter().map(|p| displacement * p).collect();
+        let fit = fit_displacement(&from, &to).unwrap();
+        assert!((fit.translation.vector - displacement.translation.vector).norm() < 1e-12);
+        assert!((fit.rotation.angle() - displacement.rotation.angle()).abs() < 1e-12);
+        assert!(fit_displacement(&[from[0], from[0]], &to[..2]).is_none());
+        assert!(fit_displacement(&from[..2], &to).is_none());
+    }
 
     #[test]
     fn the_pole_stays_put_and_the_centre_is_equidistant() {

@@ -33,6 +33,7 @@ pub fn outline() -> StationOutline {
         flap,
         structure: Vec::new(),
         lip: Some(Point2::new(-0.05, 0.175)),
+        lip_clearance_m: 0.0,
     }
 }
 
@@ -96,6 +97,7 @@ pub fn four_bar_spec() -> FourBarSpec {
     let outline = outline();
     let (takeoff, landing) = settings(&outline);
     FourBarSpec {
+        follow: None,
         takeoff,
         landing,
         forward_pivot: None,

@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use flapwright_mechanism::four_bar::FollowStation;
 use flapwright_mechanism::{FlapMechanism, FourBar, FourBarSpec};
 use nalgebra::Point2;
 use serde::Deserialize;
@@ -85,6 +86,7 @@ impl KindScene for FourBarScene {
             landing: flap.landing,
             forward_pivot: self.forward_pivot_m.map(point),
             aft_pivot: self.aft_pivot_m.map(point),
+            follow: None,
             min_transmission_angle_rad: self.min_transmission_angle_deg.to_radians(),
             actuator_attachment_fraction: self.actuator_attachment_fraction,
             actuator_mount: self.actuator_mount_m.map(point),
@@ -94,6 +96,18 @@ impl KindScene for FourBarScene {
             hardware: flap.hardware,
             outline: flap.outline.clone(),
         };
+        // Follow the flap's first station (where the scene fixes neither moving pivot): the
+        // same points of the flap section and the nearest deflection schedule at every
+        // station move the rigid flap alike; where none builds here, this station searches.
+        let follow = context.companion.as_ref().and_then(|c| {
+            let mut points: Vec<_> = c.attachments.iter().filter_map(|&a| flap.outline.flap_point(a)).collect();
+            points.sort_by(|a, b| b.x.total_cmp(&a.x));
+            (points.len() == 2 && c.attachments.len() == 2).then(|| FollowStation {
+                pivots: [points[0], points[1]],
+                deflections_rad: c.deflections_rad.clone(),
+            })
+        });
+        let spec = FourBarSpec { follow, ..spec };
         FourBar::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)
             .map_err(|e| format!("cannot be synthesised: {e}"))

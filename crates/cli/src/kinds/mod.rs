@@ -33,7 +33,26 @@ pub struct SynthesisContext {
     /// The downward unit vector of the aircraft frame in the station plane (station frame):
     /// (0, -1) for an upright plane; None without a wing.
     pub down_st: Option<nalgebra::Vector2<f64>>,
+    /// The flap attachments of the station synthesised first on the same flap, in the
+    /// terms of its section: a kind whose free choices are its flap attachments starts
+    /// from them, so that the stations of one rigid flap move it alike (two four-bars
+    /// searched apart move it on paths centimetres apart between the settings).
+    pub companion: Option<Companion>,
 }
+
+/// See [`SynthesisContext::companion`].
+#[derive(Debug, Clone)]
+pub struct Companion {
+    /// The station it comes from.
+    pub station: String,
+    /// Its moving flap attachments, in its flap section's terms.
+    pub attachments: Vec<flapwright_mechanism::outline::FlapPoint>,
+    /// Its flap deflection at [`COMPANION_SAMPLES`] + 1 evenly spaced drive fractions (rad).
+    pub deflections_rad: Vec<f64>,
+}
+
+/// Intervals of the drive fraction a companion's deflection schedule is sampled at.
+pub const COMPANION_SAMPLES: usize = 20;
 
 /// Standard gravity (m/s²).
 pub const GRAVITY_MPS2: f64 = 9.81;

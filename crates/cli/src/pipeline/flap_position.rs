@@ -4,6 +4,7 @@
 
 use anyhow::{Context, Result};
 use flapwright_mechanism::{PrecisionPosition, StationOutline};
+use nalgebra::{Point2, Point3};
 use flapwright_planes::{FlapBehindWing, GapOverlap};
 use serde::Serialize;
 
@@ -28,6 +29,21 @@ pub struct SettingPosition {
     /// The scene's target overlap (% of the local chord), if it gives one.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub target_overlap_percent_chord: Option<f64>,
+    /// Where the target gap is below the flap's sealed gap, the gap the mechanism was
+    /// synthesised to instead (m): the slot is sealed, a seal on the lip closing the rest.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sealed_gap_m: Option<f64>,
+}
+
+/// The gap (m) a setting's mechanism is synthesised to for a target of `gap_percent` of
+/// `chord_m`, and whether the setting is sealed (the target below `sealed_gap_m`).
+pub fn structural_gap_m(gap_percent: f64, chord_m: f64, sealed_gap_m: f64) -> (f64, bool) {
+    let target = gap_percent * chord_m / 100.0;
+    if target < sealed_gap_m {
+        (sealed_gap_m, true)
+    } else {
+        (target, false)
+    }
 }
 
 impl SettingPosition {
@@ -52,6 +68,109 @@ pub struct FlapPositionReport {
     pub local_chord_m: f64,
     /// Stowed, take-off and landing.
     pub settings: Vec<SettingPosition>,
+    /// Where the flap's other stations move the settings from this station's own (see
+    /// [`rigid_flap_settings`]); empty for a flap with one station.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub rigid_flap: Vec<RigidFlapSetting>,
+}
+
+/// How the rigid flap moves one station's setting from where the station's own gap and
+/// overlap put the flap.
+#[derive(Debug, Clone, Serialize)]
+pub struct RigidFlapSetting {
+    /// "takeoff" or "landing".
+    pub setting: &'static str,
+    /// Largest in-plane distance of the station's flap section points (all of them) from
+    /// the position its own gap and overlap give (m): the measured gap and overlap miss the
+    /// station's targets by at most this.
+    pub shift_from_station_target_m: f64,
+    /// Largest distance of the section points from the station plane at the setting (m):
+    /// the out-of-plane motion the flap attachments' joints take up.
+    pub out_of_plane_m: f64,
+    /// The rigid flap's rotation as this plane sees it (deg): the setting's deflection
+    /// give or take the conical motion's share; the station's precision position and its
+    /// `settings` entry are at this deflection.
+    pub deflection_in_plane_deg: f64,
+}
+
+/// The flap is one rigid body. Where several stations carry it, its take-off and landing
+/// poses in 3D are the rigid motions fitted (`flapwright_geom::fit_rigid_motion`) to the
+/// positions each station's settings ask for in its plane: every station's flap section
+/// points, each moved by its own station's displacement. Each station's precision
+/// positions become those poses as its plane sees them: the section points moved by the
+/// pose, projected on the plane and fitted by a planar displacement. On a tapered flap the
+/// fitted poses are conical (`003_...` section 2, Fig. 2b); taken one station at a time the
+/// settings would move a rigid flap apart. Returns per station what the fit changed, in
+/// the order of `stations`; stations without settings are left alone.
+pub fn rigid_flap_settings(
+    flap: &str,
+    stations: &mut [(&PlacedStation, &mut SynthesisContext)],
+) -> Result<Vec<Vec<RigidFlapSetting>>> {
+    let mut changes = vec![Vec::new(); stations.len()];
+    let carried: Vec<usize> = (0..stations.len())
+        .filter(|&i| stations[i].1.settings.is_some())
+        .collect();
+    if carried.len() < 2 {
+        return Ok(changes);
+    }
+    let points: Vec<Vec<Point2<f64>>> = stations
+        .iter()
+        .map(|(placed, _)| flapwright_interference::fit_points(&placed.polygons_of(|name| name == flap)))
+        .collect();
+    let frames: Vec<nalgebra::Isometry3<f64>> = stations
+        .iter()
+        .map(|(placed, _)| *placed.station.frame.aircraft_from_station())
+        .collect();
+    let frame = |i: usize| frames[i];
+    let mut fitted = vec![[None, None]; stations.len()];
+    let lift = |p: &Point2<f64>| Point3::new(p.x, p.y, 0.0);
+    for (which, setting) in ["takeoff", "landing"].into_iter().enumerate() {
+        let own = |i: usize| {
+            let (takeoff, landing) = stations[i].1.settings.expect("carried stations have settings");
+            [takeoff, landing][which].flap
+        };
+        let (mut from, mut to) = (Vec::new(), Vec::new());
+        for &i in &carried {
+            let (f, d) = (frame(i), own(i));
+            from.extend(points[i].iter().map(|p| f * lift(p)));
+            to.extend(points[i].iter().map(|p| f * lift(&(d * p))));
+        }
+        let pose = flapwright_geom::fit_rigid_motion(&from, &to)
+            .with_context(|| format!("flap {flap}: the rigid flap's {setting} pose"))?
+            .motion;
+        for &i in &carried {
+            let (f, d) = (frame(i), own(i));
+            let seen = f.inverse() * pose * f;
+            let moved: Vec<Point3<f64>> = points[i].iter().map(|p| seen * lift(p)).collect();
+            let in_plane: Vec<Point2<f64>> = moved.iter().map(|q| Point2::new(q.x, q.y)).collect();
+            let displacement = flapwright_mechanism::precision::fit_displacement(&points[i], &in_plane)
+                .with_context(|| format!("flap {flap}: its {setting} pose in station {}", stations[i].0.station.name))?;
+            changes[i].push(RigidFlapSetting {
+                setting,
+                // Over the whole section, not the fitted points only: the extreme points
+                // set the gap and the overlap.
+                shift_from_station_target_m: stations[i]
+                    .0
+                    .polygons_of(|name| name == flap)
+                    .iter()
+                    .flatten()
+                    .map(|p| (displacement * p - d * p).norm())
+                    .fold(0.0, f64::max),
+                out_of_plane_m: moved.iter().map(|q| q.z.abs()).fold(0.0, f64::max),
+                deflection_in_plane_deg: displacement.rotation.angle().to_degrees(),
+            });
+            fitted[i][which] = Some(displacement);
+        }
+    }
+    for ((_, context), [takeoff, landing]) in stations.iter_mut().zip(fitted) {
+        if let (Some(settings), Some(takeoff), Some(landing)) = (context.settings.as_mut(), takeoff, landing) {
+            for (position, displacement) in [(&mut settings.0, takeoff), (&mut settings.1, landing)] {
+                position.flap = displacement;
+                position.deflection_rad = displacement.rotation.angle();
+            }
+        }
+    }
+    Ok(changes)
 }
 
 /// The wing and stowed flap sections of `placed`, ready to measure; `None` when the plane
@@ -73,10 +192,13 @@ pub fn flap_behind_wing(placed: &PlacedStation, flap_name: &str) -> Result<Optio
 /// and stowed flap sections, and take-off and landing as flap displacements in the plane
 /// (where `flap`'s settings give gap and overlap), with the flap behind the wing they were
 /// measured by (kept on the record for the gap-overlap stage).
+/// A target gap below the flap's sealed gap (for `required_clearance_m`) is synthesised
+/// at the sealed gap ([`structural_gap_m`]).
 pub fn synthesis_context(
     flap: &FlapScene,
     flaps: &[FlapScene],
     placed: &PlacedStation,
+    required_clearance_m: f64,
 ) -> Result<(SynthesisContext, Option<FlapBehindWing>)> {
     let outline = StationOutline {
         wing: placed.polygons_of(|name| name == "wing"),
@@ -84,12 +206,14 @@ pub fn synthesis_context(
         // Spars and the torque tube; other flaps' sections are not structure.
         structure: placed.polygons_of(|name| name != "wing" && !flaps.iter().any(|f| f.name == name)),
         lip: None,
+        lip_clearance_m: 0.0,
     };
     let Some(measure) = flap_behind_wing(placed, &flap.name)? else {
         return Ok((SynthesisContext::default(), None));
     };
     let outline = StationOutline {
         lip: Some(measure.trailing_edge()),
+        lip_clearance_m: flap.settings.sealed_gap_m(required_clearance_m) - required_clearance_m,
         ..outline
     };
     let chord = measure.chord_m();
@@ -98,8 +222,9 @@ pub fn synthesis_context(
             return Ok(None);
         };
         let deflection_rad = deflection_deg.to_radians();
+        let (gap_m, _) = structural_gap_m(gap, chord, flap.settings.sealed_gap_m(required_clearance_m));
         let displacement = measure
-            .displacement_for_setting(deflection_rad, gap * chord / 100.0, overlap * chord / 100.0)
+            .displacement_for_setting(deflection_rad, gap_m, overlap * chord / 100.0)
             .with_context(|| format!("flap {} {name} setting at station {}", flap.name, placed.station.name))?;
         Ok(Some(PrecisionPosition {
             name,
@@ -123,6 +248,7 @@ pub fn synthesis_context(
                 let frame = &placed.station.frame;
                 nalgebra::Vector2::new(-frame.x_axis_ac().z, -frame.y_axis_ac().z)
             }),
+            companion: None,
         },
         Some(measure),
     ))
@@ -131,14 +257,18 @@ pub fn synthesis_context(
 /// The gap and overlap at each station's flap settings (`flap_position`), measured by the
 /// record's `flap_behind_wing` (set at synthesis); None where the station has no flap
 /// section to measure.
-pub fn flap_positions(flaps: &[FlapScene], records: &mut [StationRecord]) -> Result<()> {
+pub fn flap_positions(flaps: &[FlapScene], records: &mut [StationRecord], required_clearance_m: f64) -> Result<()> {
     for record in records.iter_mut() {
-        record.flap_position = flap_position(flaps, record)?;
+        record.flap_position = flap_position(flaps, record, required_clearance_m)?;
     }
     Ok(())
 }
 
-fn flap_position(flaps: &[FlapScene], record: &StationRecord) -> Result<Option<FlapPositionReport>> {
+fn flap_position(
+    flaps: &[FlapScene],
+    record: &StationRecord,
+    required_clearance_m: f64,
+) -> Result<Option<FlapPositionReport>> {
     let Some(flap) = record
         .flap
         .as_ref()
@@ -157,10 +287,22 @@ fn flap_position(flaps: &[FlapScene], record: &StationRecord) -> Result<Option<F
     ]
     .into_iter()
     .map(|(setting, deflection_deg)| {
+        // A rigid flap's setting is at its rotation as this plane sees it.
+        let deflection_deg = record
+            .rigid_flap
+            .iter()
+            .find(|r| r.setting == setting)
+            .map_or(deflection_deg, |r| r.deflection_in_plane_deg);
         // Where the mechanism puts the flap at this deflection: any planar motion.
         let pose = seam.pose(seam.input_at_deflection(deflection_deg.to_radians())?)?;
         let (target_gap_percent_chord, target_overlap_percent_chord) = flap.settings.targets(setting);
+        let sealed_gap_m = target_gap_percent_chord.and_then(|gap| {
+            let (gap_m, sealed) =
+                structural_gap_m(gap, measure.chord_m(), flap.settings.sealed_gap_m(required_clearance_m));
+            sealed.then_some(gap_m)
+        });
         Ok(SettingPosition {
+            sealed_gap_m,
             setting: setting.into(),
             deflection_deg,
             position: measure.at_displacement(&pose.flap),
@@ -174,6 +316,7 @@ fn flap_position(flaps: &[FlapScene], record: &StationRecord) -> Result<Option<F
         trailing_edge_st_m: [te.x, te.y],
         local_chord_m: measure.chord_m(),
         settings,
+        rigid_flap: record.rigid_flap.clone(),
     }))
 }
 

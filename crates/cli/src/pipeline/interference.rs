@@ -6,7 +6,7 @@ use anyhow::{Context, Result};
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::parts::{Part as MeshPart, PartKind};
 use flapwright_interference::{
-    check_assembly, fairing_depth, flap_part, planar_parts, station_parts, Assembly, InterferenceReport, Part,
+    check_assembly, fairing_depth, fit_points, flap_part, FittedFlapMotion, FlapCarrier, planar_parts, station_parts, Assembly, InterferenceReport, Part,
     Requirements, SweepSettings,
 };
 
@@ -30,19 +30,26 @@ pub fn check(scene: &Scene, meshed: &[MeshPart], records: &[StationRecord]) -> R
             CollisionShape::from_mesh(&part.mesh).with_context(|| format!("collision shape of {}", part.name))?;
         match part.kind {
             PartKind::Flap => {
-                // The flap follows the flap displacement of the first station carrying it
-                // (validation requires every flap to have one; all its stations agree).
-                let carrier = records
+                let carriers: Vec<&StationRecord> = records
                     .iter()
-                    .find(|record| record.flap.as_deref() == Some(part.name.as_str()))
-                    .with_context(|| format!("flap {} has no station", part.name))?;
-                flaps.push(flap_part(
-                    &part.name,
-                    shape,
-                    &part.mesh.vertices,
-                    placed(carrier)?.station.frame.aircraft_from_station(),
-                    &carrier.mechanism,
-                )?);
+                    .filter(|record| record.flap.as_deref() == Some(part.name.as_str()))
+                    .collect();
+                let Some(first) = carriers.first() else {
+                    anyhow::bail!("flap {} has no station", part.name);
+                };
+                if carriers.len() == 1 {
+                    // One station: the flap follows its planar displacement exactly.
+                    flaps.push(flap_part(
+                        &part.name,
+                        shape,
+                        &part.mesh.vertices,
+                        placed(first)?.station.frame.aircraft_from_station(),
+                        &first.mechanism,
+                    )?);
+                } else {
+                    let motion = fitted_flap_motion(&part.name, &carriers, &part.mesh.vertices)?;
+                    flaps.push(Part::moving(part.name.clone(), shape, motion));
+                }
             }
             kind => {
                 if kind == PartKind::WingSkin {
@@ -78,6 +85,32 @@ pub fn check(scene: &Scene, meshed: &[MeshPart], records: &[StationRecord]) -> R
     };
     // The drive fraction: 0 stowed, 1 deployed at every station.
     Ok(check_assembly(&assembly, 1.0, &required, &sweep)?)
+}
+
+/// The rigid motion of a flap carried by several stations, fitted to their sections as
+/// their mechanisms move them (`flapwright_interference::FittedFlapMotion`), with a speed
+/// bound for `vertices_ac`.
+pub fn fitted_flap_motion(
+    flap: &str,
+    carriers: &[&StationRecord],
+    vertices_ac: &[nalgebra::Point3<f64>],
+) -> Result<FittedFlapMotion> {
+    let carriers = carriers
+        .iter()
+        .map(|record| {
+            let placed = record
+                .placed
+                .as_ref()
+                .with_context(|| format!("station {} is not placed", record.station))?;
+            Ok(FlapCarrier {
+                station: record.station.clone(),
+                aircraft_from_station: *placed.station.frame.aircraft_from_station(),
+                mechanism: record.mechanism.clone(),
+                section_st: fit_points(&placed.polygons_of(|name| name == flap)),
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(FittedFlapMotion::try_new(flap, carriers, vertices_ac)?)
 }
 
 /// Fairing depth of each placed station (each record's `fairing`): the mechanism against

@@ -34,6 +34,9 @@ pub struct StationRecord {
     pub flap_behind_wing: Option<FlapBehindWing>,
     /// Gap and overlap at the flap settings (gap-overlap stage).
     pub flap_position: Option<FlapPositionReport>,
+    /// How the rigid flap moved this station's settings (synthesis; empty for a flap with
+    /// one station).
+    pub rigid_flap: Vec<flap_position::RigidFlapSetting>,
     /// Fairing depth (fairing stage).
     pub fairing: Option<FairingDepth>,
     /// Deployments under every load case (kinematics stage).
@@ -64,28 +67,83 @@ pub struct MechanismReport {
 /// any other scene problem.
 pub fn synthesise_all(scene: &Scene, placed: Vec<PlacedStation>) -> Result<Vec<StationRecord>> {
     let mut problems = Vec::new();
-    let mut built = Vec::new();
+    // The synthesis inputs of every station first: the stations of one flap share its
+    // rigid poses at the settings.
     let mut placed = placed.into_iter();
+    let mut inputs = Vec::new();
     for (i, station) in scene.station.iter().enumerate() {
         let path = format!("station[{i}].mechanism");
-        let kind = station.mechanism.kind();
         let placed = placed.next();
         let flap = station
             .flap
             .as_ref()
             .and_then(|name| scene.flap.iter().find(|f| &f.name == name));
         let (context, flap_behind_wing) = match (&placed, flap) {
-            (Some(placed), Some(flap)) => match flap_position::synthesis_context(flap, &scene.flap, placed) {
+            (Some(placed), Some(flap)) => match flap_position::synthesis_context(flap, &scene.flap, placed, scene.interference.required_clearance_m) {
                 Ok(found) => found,
                 Err(error) => {
                     problems.push(Problem::new(path, format!("{error:#}")));
-                    continue;
+                    (SynthesisContext::default(), None)
                 }
             },
             _ => (SynthesisContext::default(), None),
         };
+        inputs.push((placed, context, flap_behind_wing, Vec::new()));
+    }
+    if !problems.is_empty() {
+        return Err(SceneError::Invalid(problems).into());
+    }
+    for flap in &scene.flap {
+        let mut carriers: Vec<(usize, &PlacedStation, &mut SynthesisContext)> = Vec::new();
+        for (i, (placed, context, _, _)) in inputs.iter_mut().enumerate() {
+            if let (Some(placed), true) = (placed.as_ref(), scene.station[i].flap.as_ref() == Some(&flap.name)) {
+                carriers.push((i, placed, context));
+            }
+        }
+        let indices: Vec<usize> = carriers.iter().map(|(i, _, _)| *i).collect();
+        let mut pairs: Vec<(&PlacedStation, &mut SynthesisContext)> =
+            carriers.into_iter().map(|(_, p, c)| (p, c)).collect();
+        let changes = flap_position::rigid_flap_settings(&flap.name, &mut pairs)?;
+        for (i, change) in indices.into_iter().zip(changes) {
+            inputs[i].3 = change;
+        }
+    }
+    let mut built = Vec::new();
+    let mut companions: Vec<(String, crate::kinds::Companion)> = Vec::new();
+    for ((i, station), (placed, mut context, flap_behind_wing, rigid_flap)) in
+        scene.station.iter().enumerate().zip(inputs)
+    {
+        let path = format!("station[{i}].mechanism");
+        let kind = station.mechanism.kind();
+        let flap = station.flap.clone().unwrap_or_default();
+        context.companion = companions.iter().find(|(f, _)| *f == flap).map(|(_, c)| c.clone());
         match kind.synthesise(&context) {
             Ok(mechanism) => {
+                if context.companion.is_none() {
+                    if let Some(outline) = &context.outline {
+                        let attachments = mechanism
+                            .flap_attachments()
+                            .iter()
+                            .filter(|a| !a.fixed)
+                            .filter_map(|a| outline.to_flap_point(a.position))
+                            .collect();
+                        let range = mechanism.input_range();
+                        let samples = crate::kinds::COMPANION_SAMPLES;
+                        let deflections_rad = (0..=samples)
+                            .map(|k| mechanism.deflection_at_input(range.at_fraction(k as f64 / samples as f64)))
+                            .collect::<Result<Vec<_>, _>>();
+                        if let Ok(deflections_rad) = deflections_rad {
+                            companions.push((
+                                flap,
+                                crate::kinds::Companion {
+                                    station: station.name.clone(),
+                                    attachments,
+                                    deflections_rad,
+                                },
+                            ));
+                        }
+                    }
+                }
                 problems.extend(degeneracies(mechanism.as_ref(), &path, kind.geometry_keys()));
                 built.push(StationRecord {
                     station: station.name.clone(),
@@ -95,6 +153,7 @@ pub fn synthesise_all(scene: &Scene, placed: Vec<PlacedStation>) -> Result<Vec<S
                     placed,
                     flap_behind_wing,
                     flap_position: None,
+                    rigid_flap,
                     fairing: None,
                     kinematics: None,
                     flap_load_share: None,
@@ -166,40 +225,55 @@ fn one_drive_speed(mechanisms: &[StationRecord]) -> Vec<Problem> {
     problems
 }
 
-/// Largest disagreement in flap deflection (deg) between stations of one flap part way
-/// through the deployment that passes without a warning.
-pub const FLAP_DEFLECTION_AGREEMENT_DEG: f64 = 0.05;
+/// Largest miss (m) of the rigid flap's fitted motion at any of its stations' section
+/// points that passes without a warning, as a fraction of the flap chord there: the
+/// attachments' spherical bearings and the flap's flexibility take up millimetres.
+pub const FLAP_FIT_WARNING_CHORD_FRACTION: f64 = 0.005;
 
-/// Warnings where the stations of one rigid flap deflect it differently part way through
-/// the deployment (they agree at both ends by validation; the flap follows its first
-/// station, so the others' attachments would be strained).
+/// Drive fractions the fitted flap motion is sampled at for [`flap_agreement`].
+const FLAP_FIT_SAMPLES: usize = 32;
+
+/// Warnings where the stations of one rigid flap move it in ways no rigid motion follows:
+/// the flap moves by the motion fitted to them all (the interference check's,
+/// `flapwright_interference::FittedFlapMotion`), and the stations' sections miss it by up to
+/// the fit's largest residual.
 pub fn flap_agreement(records: &[StationRecord]) -> Vec<String> {
     let mut warnings = Vec::new();
-    for (i, first) in records.iter().enumerate() {
-        let Some(flap) = &first.flap else {
-            continue;
-        };
-        if records[..i].iter().any(|r| r.flap.as_ref() == Some(flap)) {
+    let mut flaps: Vec<&str> = records.iter().filter_map(|r| r.flap.as_deref()).collect();
+    flaps.dedup();
+    for flap in flaps {
+        let carriers: Vec<&StationRecord> = records
+            .iter()
+            .filter(|r| r.flap.as_deref() == Some(flap) && r.placed.is_some())
+            .collect();
+        if carriers.len() < 2 {
             continue;
         }
-        let deflection = |r: &StationRecord, fraction: f64| {
-            let range = r.mechanism.input_range();
-            r.mechanism.deflection_at_input(range.at_fraction(fraction)).ok()
+        let Ok(motion) = crate::pipeline::interference::fitted_flap_motion(flap, &carriers, &[]) else {
+            continue;
         };
-        for other in records[i + 1..].iter().filter(|r| r.flap.as_ref() == Some(flap)) {
-            let worst = (1..8)
-                .filter_map(|k| {
-                    let fraction = k as f64 / 8.0;
-                    Some((deflection(other, fraction)? - deflection(first, fraction)?).abs())
-                })
-                .fold(0.0_f64, f64::max)
-                .to_degrees();
-            if worst > FLAP_DEFLECTION_AGREEMENT_DEG {
-                warnings.push(format!(
-                    "flap {flap}: stations {} and {} deflect it by up to {worst:.2} deg differently part way through the deployment (more than {FLAP_DEFLECTION_AGREEMENT_DEG} deg); the flap is rigid and follows station {}",
-                    first.station, other.station, first.station
-                ));
+        let (mut worst, mut at) = (0.0_f64, 0.0);
+        for k in 0..=FLAP_FIT_SAMPLES {
+            let fraction = k as f64 / FLAP_FIT_SAMPLES as f64;
+            if let Ok(fit) = motion.fit_at(fraction) {
+                if fit.max_m > worst {
+                    (worst, at) = (fit.max_m, fraction);
+                }
             }
+        }
+        let chord = carriers
+            .iter()
+            .filter_map(|r| r.flap_behind_wing.as_ref().map(|m| m.chord_m()))
+            .fold(f64::INFINITY, f64::min);
+        if worst > chord * FLAP_FIT_WARNING_CHORD_FRACTION {
+            let names: Vec<&str> = carriers.iter().map(|r| r.station.as_str()).collect();
+            warnings.push(format!(
+                "flap {flap}: its stations {} move it up to {:.1} mm apart from any rigid motion (at {:.1} % of the deployment; more than {} % of the local chord): the rigid flap follows the motion fitted to them all, and their attachments must take up the rest",
+                names.join(", "),
+                worst * 1e3,
+                at * 100.0,
+                FLAP_FIT_WARNING_CHORD_FRACTION * 100.0
+            ));
         }
     }
     warnings

@@ -124,6 +124,11 @@ pub struct SettingsScene {
     pub landing_gap_percent: Option<f64>,
     /// Target overlap at landing, % of the local chord; optional.
     pub landing_overlap_percent: Option<f64>,
+    /// The gap the structure keeps where a setting asks for less (a sealed slot: a seal on
+    /// the wing's trailing edge closes the rest), m; by default twice the required
+    /// clearance of `[interference]` (the clearance, and as much again for the stations'
+    /// compromise on a rigid flap).
+    pub sealed_gap_m: Option<f64>,
 }
 
 impl SettingsScene {
@@ -136,6 +141,12 @@ impl SettingsScene {
             _ => (None, None),
         }
     }
+
+    /// The structural gap of a sealed setting (m): `sealed_gap_m`, or twice
+    /// `required_clearance_m`.
+    pub fn sealed_gap_m(&self, required_clearance_m: f64) -> f64 {
+        self.sealed_gap_m.unwrap_or(3.0 * required_clearance_m)
+    }
 }
 
 impl Default for SettingsScene {
@@ -147,6 +158,7 @@ impl Default for SettingsScene {
             takeoff_overlap_percent: None,
             landing_gap_percent: None,
             landing_overlap_percent: None,
+            sealed_gap_m: None,
         }
     }
 }

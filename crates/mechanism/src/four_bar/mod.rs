@@ -61,6 +61,11 @@ pub struct FourBarSpec {
     pub forward_pivot: Option<Point2<f64>>,
     /// Aft moving pivot A2 on the flap (stowed); `None`: searched.
     pub aft_pivot: Option<Point2<f64>>,
+    /// Another station of the same rigid flap to move it alike, when both moving pivots
+    /// are searched: the search first tries a small grid about its pivots and keeps the
+    /// mechanism whose deflection schedule is nearest its; only when none builds clear
+    /// does it search the whole region.
+    pub follow: Option<FollowStation>,
     /// Smallest transmission angle over the deployment, of the loop and of the drive (rad).
     pub min_transmission_angle_rad: f64,
     /// Where the screw takes hold of the crank: 0 at O1, 1 at A1.
@@ -77,6 +82,16 @@ pub struct FourBarSpec {
     pub hardware: LinkHardware,
     /// The station's sections: the search region and the fixed pivots' region.
     pub outline: StationOutline,
+}
+
+/// What a four-bar follows of another station of its flap ([`FourBarSpec::follow`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FollowStation {
+    /// Its moving pivots as the corresponding points of this station's flap section
+    /// (forward, aft; stowed, m).
+    pub pivots: [Point2<f64>; 2],
+    /// Its flap deflection at evenly spaced drive fractions from 0 to 1 (rad).
+    pub deflections_rad: Vec<f64>,
 }
 
 /// Counts of what the free-choice search rejected, for the report and for a failure's

@@ -185,12 +185,13 @@ pub(super) fn check_pair(
             return Err((SynthesisDefect::NoRealSolution, "the loop cannot close part way".into()));
         };
         min_transmission = min_transmission.min(pose.transmission);
-        // The flap must not pass through the wing's trailing edge between the settings.
-        if spec.outline.flap_through_lip(&pose.flap, lip_tolerance) {
+        // The flap must keep its clearance from the wing's trailing edge between the settings.
+        if spec.outline.flap_near_lip(&pose.flap, lip_tolerance) {
             return Err((
                 SynthesisDefect::PivotOutsideRegion,
                 format!(
-                    "the flap passes through the wing's trailing edge at {:.1} deg of crank",
+                    "the flap passes through or within {:.1} mm of the wing's trailing edge at {:.1} deg of crank",
+                    1e3 * spec.outline.lip_clearance_m,
                     phi.to_degrees()
                 ),
             ));

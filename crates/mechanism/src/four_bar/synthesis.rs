@@ -7,12 +7,19 @@ use super::bodies::bodies_and_joints;
 use super::linkage::{turn_angle, Loop, LoopPose};
 use super::search::{candidate, candidates, check_pair, search_failure};
 use super::{
-    failure, mm, FourBar, FourBarSearch, FourBarSpec, FourBarSynthesis, CLEAR_FINALISTS, FINALISTS, LOOP_SAMPLES,
+    failure, mm, FollowStation, FourBar, FourBarSearch, FourBarSpec, FourBarSynthesis, CLEAR_FINALISTS, FINALISTS, LOOP_SAMPLES,
 };
 use crate::error::{Error, Result, SynthesisDefect};
 use crate::placement::{place_screw_jack, strut_top, JackSize, ScrewJackChoice, PLACEMENT_SAMPLES};
 use crate::rocker_drive::RockerDrive;
 use crate::seam::FlapMechanism;
+
+/// Points per side of the grid about each followed pivot (odd: the pivot is one).
+const FOLLOW_STEPS: usize = 9;
+/// Half the side of that grid, fraction of the flap chord.
+const FOLLOW_REACH: f64 = 0.1;
+/// Whole mechanisms built clear before the one nearest the followed schedule is kept.
+const FOLLOW_BUILDS: usize = 40;
 
 impl FourBar {
     /// Synthesises the four-bar (searching the moving pivots the spec leaves free), its
@@ -39,6 +46,12 @@ impl FourBar {
             candidate(&spec, p, chord)
                 .map_err(|(defect, why)| failure(defect, format!("{which} pivot {}: {why}", mm(p))))
         };
+        let free = spec.forward_pivot.is_none() && spec.aft_pivot.is_none();
+        if let (true, Some(follow)) = (free, spec.follow.as_ref()) {
+            if let Some(found) = Self::following(&spec, follow, chord, flap_chord) {
+                return Ok(found);
+            }
+        }
         let grid = if spec.forward_pivot.is_none() || spec.aft_pivot.is_none() {
             candidates(&spec, &mut search, chord)
         } else {
@@ -325,6 +338,76 @@ impl FourBar {
         };
         four_bar.synthesis.depth_below_section_m = four_bar.whole_depth()?;
         Ok(four_bar)
+    }
+
+    /// The four-bar that moves the flap most like `follow`'s station: pairs from a grid of
+    /// [`FOLLOW_STEPS`]² points within [`FOLLOW_REACH`] of the flap chord about each of its
+    /// pivots, nearest first; of the first [`FOLLOW_BUILDS`] whose whole mechanism builds
+    /// clear, the one whose deflection schedule is nearest; `None` when none builds clear.
+    fn following(spec: &FourBarSpec, follow: &FollowStation, chord: f64, flap_chord: f64) -> Option<Self> {
+        let around = |centre: Point2<f64>| -> Vec<Point2<f64>> {
+            let step = 2.0 * FOLLOW_REACH * flap_chord / (FOLLOW_STEPS - 1) as f64;
+            let half = (FOLLOW_STEPS / 2) as f64;
+            (0..FOLLOW_STEPS * FOLLOW_STEPS)
+                .map(|k| {
+                    let (i, j) = ((k / FOLLOW_STEPS) as f64 - half, (k % FOLLOW_STEPS) as f64 - half);
+                    centre + nalgebra::Vector2::new(i * step, j * step)
+                })
+                .collect()
+        };
+        let usable = |points: Vec<Point2<f64>>| -> Vec<_> {
+            points.into_iter().filter_map(|p| candidate(spec, p, chord).ok()).collect()
+        };
+        let [forward_pivot, aft_pivot] = follow.pivots;
+        let (forward, aft) = (usable(around(forward_pivot)), usable(around(aft_pivot)));
+        let mut pairs: Vec<(f64, _, _)> = Vec::new();
+        for f in &forward {
+            for a in &aft {
+                if (f.moving - a.moving).norm() < 0.1 * flap_chord || (f.fixed - a.fixed).norm() < 0.02 * flap_chord {
+                    continue;
+                }
+                let miss = (f.moving - forward_pivot).norm() + (a.moving - aft_pivot).norm();
+                pairs.push((miss, f, a));
+            }
+        }
+        pairs.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let mut search = FourBarSearch::default();
+        let mut best: Option<(f64, Self)> = None;
+        let mut built = 0;
+        for (_, f, a) in pairs {
+            if built >= FOLLOW_BUILDS {
+                break;
+            }
+            search.pairs += 1;
+            let (crank, rocker) = if f.turns[1].abs() <= a.turns[1].abs() { (f, a) } else { (a, f) };
+            let Ok((loop_, _)) = check_pair(spec, crank, rocker) else {
+                continue;
+            };
+            search.feasible += 1;
+            let Ok(four_bar) = Self::build(spec.clone(), loop_, search) else {
+                continue;
+            };
+            if !(four_bar.synthesis.actuator_clear && four_bar.synthesis.placement_clear) {
+                continue;
+            }
+            built += 1;
+            let samples = follow.deflections_rad.len().max(2) - 1;
+            let range = four_bar.input_range();
+            let mismatch = follow
+                .deflections_rad
+                .iter()
+                .enumerate()
+                .map(|(k, target)| {
+                    four_bar
+                        .deflection_at_input(range.at_fraction(k as f64 / samples as f64))
+                        .map_or(f64::INFINITY, |d| (d - target).abs())
+                })
+                .fold(0.0, f64::max);
+            if best.as_ref().is_none_or(|(m, _)| mismatch < *m) {
+                best = Some((mismatch, four_bar));
+            }
+        }
+        best.map(|(_, four_bar)| four_bar)
     }
 
     /// The designer's choices.

@@ -251,6 +251,10 @@ impl Checker<'_> {
                 self.in_range(&format!("{path}.settings.{key}"), value, -20.0, 20.0, false);
             }
         }
+        if let Some(value) = settings.sealed_gap_m {
+            // A seal closes millimetres, not centimetres.
+            self.in_range(&format!("{path}.settings.sealed_gap_m"), value, 0.0, 0.05, false);
+        }
         if takeoff_ok && landing_ok && settings.takeoff_deg > settings.landing_deg {
             self.fail(
                 format!("{path}.settings.takeoff_deg"),

@@ -48,9 +48,8 @@ pub fn fit_rigid_motion(from: &[Point3<f64>], to: &[Point3<f64>]) -> Result<Rigi
             value: *value,
         });
     }
-    let centroid = |points: &[Point3<f64>]| {
-        points.iter().fold(Vector3::zeros(), |sum, p| sum + p.coords) / points.len() as f64
-    };
+    let centroid =
+        |points: &[Point3<f64>]| points.iter().fold(Vector3::zeros(), |sum, p| sum + p.coords) / points.len() as f64;
     let (from_centre, to_centre) = (centroid(from), centroid(to));
     let spread = spread_about(from, &from_centre);
     let covariance = from.iter().zip(to).fold(Matrix3::zeros(), |sum, (p, q)| {
@@ -205,10 +204,16 @@ mod tests {
     fn collinear_and_bad_input_are_refused() {
         let line: Vec<_> = (0..4).map(|i| Point3::new(i as f64, 0.0, 0.0)).collect();
         assert!(matches!(fit_rigid_motion(&line, &line), Err(Error::Degenerate { .. })));
-        assert!(matches!(fit_rigid_motion(&line[..2], &line[..2]), Err(Error::TooFewPoints { .. })));
+        assert!(matches!(
+            fit_rigid_motion(&line[..2], &line[..2]),
+            Err(Error::TooFewPoints { .. })
+        ));
         let mut bad = square_and_apex();
         bad[1].y = f64::NAN;
-        assert!(matches!(fit_rigid_motion(&bad, &square_and_apex()), Err(Error::NotFinite { .. })));
+        assert!(matches!(
+            fit_rigid_motion(&bad, &square_and_apex()),
+            Err(Error::NotFinite { .. })
+        ));
     }
 
     #[test]
@@ -224,7 +229,10 @@ mod tests {
                 .enumerate()
                 .map(|(k, p)| {
                     let k = k as f64;
-                    let rigid = Isometry3::new(Vector3::new(0.2 * t, -0.1 * t, 0.05 * t), Vector3::new(0.0, 0.3 * t, 0.5 * t));
+                    let rigid = Isometry3::new(
+                        Vector3::new(0.2 * t, -0.1 * t, 0.05 * t),
+                        Vector3::new(0.0, 0.3 * t, 0.5 * t),
+                    );
                     // A small non-rigid part: the fit is not exact.
                     rigid * p + Vector3::new(0.01 * (k * t).sin(), 0.0, 0.01 * k * t)
                 })
@@ -235,7 +243,10 @@ mod tests {
             let t = i as f64 / 19.0;
             let (a, b) = (path(t), path(t + h));
             let fastest = a.iter().zip(&b).map(|(p, q)| (q - p).norm() / h).fold(0.0, f64::max);
-            let (fa, fb) = (fit_rigid_motion(&from, &a).unwrap(), fit_rigid_motion(&from, &b).unwrap());
+            let (fa, fb) = (
+                fit_rigid_motion(&from, &a).unwrap(),
+                fit_rigid_motion(&from, &b).unwrap(),
+            );
             for y in &far {
                 let speed = (fb.motion * y - fa.motion * y).norm() / h;
                 assert!(speed <= 1.05 * gain * fastest, "t {t}: {speed} > {gain} x {fastest}");

@@ -90,7 +90,7 @@ impl FittedFlapMotion {
             let body = carrier
                 .mechanism
                 .bodies()
-                .into_iter()
+                .iter()
                 .find(|b| b.role == BodyRole::Flap)
                 .ok_or_else(|| Error::NoFlapBody { part: flap.to_string() })?;
             let travel = carrier.mechanism.input_range().travel().abs();

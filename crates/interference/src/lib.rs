@@ -52,8 +52,8 @@ mod sweep;
 
 pub use check::{check_assembly, Assembly, ContactResult, InterferenceReport, PairResult, Requirements, UncheckedPair};
 pub use error::{Error, Result};
-pub use flap_motion::{fit_points, FittedFlapMotion, FlapCarrier, FIT_POINTS_PER_CARRIER, FIT_SPEED_MARGIN};
 pub use fairing::{fairing_depth, FairingDepth, PlanarCapsule};
+pub use flap_motion::{fit_points, FittedFlapMotion, FlapCarrier, FIT_POINTS_PER_CARRIER, FIT_SPEED_MARGIN};
 pub use part::{Fixed, Motion, Part};
 pub use station::{flap_part, planar_parts, station_parts, DeclaredContact, StationPart, StationParts};
 pub use sweep::{sweep_contact, sweep_pair, JointSeparation, PairClearance, SweepSettings, JOINT_PENETRATION_GRID_M};

@@ -281,14 +281,25 @@ mod tests {
                 .collect::<Vec<_>>()
         };
         let (small, large) = (
-            StationOutline { flap: vec![square(1.0)], ..Default::default() },
-            StationOutline { flap: vec![square(2.0)], ..Default::default() },
+            StationOutline {
+                flap: vec![square(1.0)],
+                ..Default::default()
+            },
+            StationOutline {
+                flap: vec![square(2.0)],
+                ..Default::default()
+            },
         );
         let bracket = Point2::new(0.7, -0.2);
         let at = small.to_flap_point(bracket).unwrap();
         assert!((at.chord_fraction - 0.3).abs() < 1e-12 && (at.depth_fraction - 0.2).abs() < 1e-12);
         let there = large.flap_point(at).unwrap();
         assert!((there - Point2::new(1.4, -0.4)).norm() < 1e-12);
-        assert!(small.flap_point(FlapPoint { chord_fraction: 1.5, depth_fraction: 0.0 }).is_none());
+        assert!(small
+            .flap_point(FlapPoint {
+                chord_fraction: 1.5,
+                depth_fraction: 0.0
+            })
+            .is_none());
     }
 }

@@ -100,7 +100,11 @@ impl KindScene for FourBarScene {
         // same points of the flap section and the nearest deflection schedule at every
         // station move the rigid flap alike; where none builds here, this station searches.
         let follow = context.companion.as_ref().and_then(|c| {
-            let mut points: Vec<_> = c.attachments.iter().filter_map(|&a| flap.outline.flap_point(a)).collect();
+            let mut points: Vec<_> = c
+                .attachments
+                .iter()
+                .filter_map(|&a| flap.outline.flap_point(a))
+                .collect();
             points.sort_by(|a, b| b.x.total_cmp(&a.x));
             (points.len() == 2 && c.attachments.len() == 2).then(|| FollowStation {
                 pivots: [points[0], points[1]],

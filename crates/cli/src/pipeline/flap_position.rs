@@ -4,8 +4,8 @@
 
 use anyhow::{Context, Result};
 use flapwright_mechanism::{PrecisionPosition, StationOutline};
-use nalgebra::{Point2, Point3};
 use flapwright_planes::{FlapBehindWing, GapOverlap};
+use nalgebra::{Point2, Point3};
 use serde::Serialize;
 
 use crate::kinds::SynthesisContext;
@@ -143,8 +143,13 @@ pub fn rigid_flap_settings(
             let seen = f.inverse() * pose * f;
             let moved: Vec<Point3<f64>> = points[i].iter().map(|p| seen * lift(p)).collect();
             let in_plane: Vec<Point2<f64>> = moved.iter().map(|q| Point2::new(q.x, q.y)).collect();
-            let displacement = flapwright_mechanism::precision::fit_displacement(&points[i], &in_plane)
-                .with_context(|| format!("flap {flap}: its {setting} pose in station {}", stations[i].0.station.name))?;
+            let displacement =
+                flapwright_mechanism::precision::fit_displacement(&points[i], &in_plane).with_context(|| {
+                    format!(
+                        "flap {flap}: its {setting} pose in station {}",
+                        stations[i].0.station.name
+                    )
+                })?;
             changes[i].push(RigidFlapSetting {
                 setting,
                 // Over the whole section, not the fitted points only: the extreme points

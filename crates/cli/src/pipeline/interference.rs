@@ -6,8 +6,8 @@ use anyhow::{Context, Result};
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::parts::{Part as MeshPart, PartKind};
 use flapwright_interference::{
-    check_assembly, fairing_depth, fit_points, flap_part, FittedFlapMotion, FlapCarrier, planar_parts, station_parts, Assembly, InterferenceReport, Part,
-    Requirements, SweepSettings,
+    check_assembly, fairing_depth, fit_points, flap_part, planar_parts, station_parts, Assembly, FittedFlapMotion,
+    FlapCarrier, InterferenceReport, Part, Requirements, SweepSettings,
 };
 
 use crate::pipeline::mechanisms::StationRecord;

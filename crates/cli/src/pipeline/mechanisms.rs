@@ -79,7 +79,12 @@ pub fn synthesise_all(scene: &Scene, placed: Vec<PlacedStation>) -> Result<Vec<S
             .as_ref()
             .and_then(|name| scene.flap.iter().find(|f| &f.name == name));
         let (context, flap_behind_wing) = match (&placed, flap) {
-            (Some(placed), Some(flap)) => match flap_position::synthesis_context(flap, &scene.flap, placed, scene.interference.required_clearance_m) {
+            (Some(placed), Some(flap)) => match flap_position::synthesis_context(
+                flap,
+                &scene.flap,
+                placed,
+                scene.interference.required_clearance_m,
+            ) {
                 Ok(found) => found,
                 Err(error) => {
                     problems.push(Problem::new(path, format!("{error:#}")));

@@ -7,7 +7,8 @@ use super::bodies::bodies_and_joints;
 use super::linkage::{turn_angle, Loop, LoopPose};
 use super::search::{candidate, candidates, check_pair, search_failure};
 use super::{
-    failure, mm, FollowStation, FourBar, FourBarSearch, FourBarSpec, FourBarSynthesis, CLEAR_FINALISTS, FINALISTS, LOOP_SAMPLES,
+    failure, mm, FollowStation, FourBar, FourBarSearch, FourBarSpec, FourBarSynthesis, CLEAR_FINALISTS, FINALISTS,
+    LOOP_SAMPLES,
 };
 use crate::error::{Error, Result, SynthesisDefect};
 use crate::placement::{place_screw_jack, strut_top, JackSize, ScrewJackChoice, PLACEMENT_SAMPLES};
@@ -356,7 +357,10 @@ impl FourBar {
                 .collect()
         };
         let usable = |points: Vec<Point2<f64>>| -> Vec<_> {
-            points.into_iter().filter_map(|p| candidate(spec, p, chord).ok()).collect()
+            points
+                .into_iter()
+                .filter_map(|p| candidate(spec, p, chord).ok())
+                .collect()
         };
         let [forward_pivot, aft_pivot] = follow.pivots;
         let (forward, aft) = (usable(around(forward_pivot)), usable(around(aft_pivot)));
@@ -379,7 +383,11 @@ impl FourBar {
                 break;
             }
             search.pairs += 1;
-            let (crank, rocker) = if f.turns[1].abs() <= a.turns[1].abs() { (f, a) } else { (a, f) };
+            let (crank, rocker) = if f.turns[1].abs() <= a.turns[1].abs() {
+                (f, a)
+            } else {
+                (a, f)
+            };
             let Ok((loop_, _)) = check_pair(spec, crank, rocker) else {
                 continue;
             };

@@ -84,7 +84,12 @@ pub fn fit_displacement(from: &[Point2<f64>], to: &[Point2<f64>]) -> Option<Isom
         cos += a.dot(&b);
         spread += a.norm_squared();
     }
-    if spread.is_nan() || spread <= 0.0 || !sin.is_finite() || !cos.is_finite() || !to_centre.iter().all(|v| v.is_finite()) {
+    if spread.is_nan()
+        || spread <= 0.0
+        || !sin.is_finite()
+        || !cos.is_finite()
+        || !to_centre.iter().all(|v| v.is_finite())
+    {
         return None;
     }
     let rotation = nalgebra::UnitComplex::new(sin.atan2(cos));

@@ -107,8 +107,11 @@ pub fn rigid_flap_settings(
     stations: &mut [(&PlacedStation, &mut SynthesisContext)],
 ) -> Result<Vec<Vec<RigidFlapSetting>>> {
     let mut changes = vec![Vec::new(); stations.len()];
-    let carried: Vec<usize> = (0..stations.len())
-        .filter(|&i| stations[i].1.settings.is_some())
+    let own_settings: Vec<_> = stations.iter().map(|(_, context)| context.settings).collect();
+    let carried: Vec<(usize, [PrecisionPosition; 2])> = own_settings
+        .iter()
+        .enumerate()
+        .filter_map(|(i, s)| s.map(|(takeoff, landing)| (i, [takeoff, landing])))
         .collect();
     if carried.len() < 2 {
         return Ok(changes);
@@ -125,21 +128,17 @@ pub fn rigid_flap_settings(
     let mut fitted = vec![[None, None]; stations.len()];
     let lift = |p: &Point2<f64>| Point3::new(p.x, p.y, 0.0);
     for (which, setting) in ["takeoff", "landing"].into_iter().enumerate() {
-        let own = |i: usize| {
-            let (takeoff, landing) = stations[i].1.settings.expect("carried stations have settings");
-            [takeoff, landing][which].flap
-        };
         let (mut from, mut to) = (Vec::new(), Vec::new());
-        for &i in &carried {
-            let (f, d) = (frame(i), own(i));
+        for &(i, own) in &carried {
+            let (f, d) = (frame(i), own[which].flap);
             from.extend(points[i].iter().map(|p| f * lift(p)));
             to.extend(points[i].iter().map(|p| f * lift(&(d * p))));
         }
         let pose = flapwright_geom::fit_rigid_motion(&from, &to)
             .with_context(|| format!("flap {flap}: the rigid flap's {setting} pose"))?
             .motion;
-        for &i in &carried {
-            let (f, d) = (frame(i), own(i));
+        for &(i, own) in &carried {
+            let (f, d) = (frame(i), own[which].flap);
             let seen = f.inverse() * pose * f;
             let moved: Vec<Point3<f64>> = points[i].iter().map(|p| seen * lift(p)).collect();
             let in_plane: Vec<Point2<f64>> = moved.iter().map(|q| Point2::new(q.x, q.y)).collect();

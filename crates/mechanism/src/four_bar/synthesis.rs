@@ -5,7 +5,7 @@ use nalgebra::{Isometry2, Point2};
 
 use super::bodies::bodies_and_joints;
 use super::linkage::{turn_angle, Loop, LoopPose};
-use super::search::{candidate, candidates, check_pair, search_failure};
+use super::search::{candidate, candidates, check_pair, search_failure, Candidate};
 use super::{
     failure, mm, FollowStation, FourBar, FourBarSearch, FourBarSpec, FourBarSynthesis, CLEAR_FINALISTS, FINALISTS,
     LOOP_SAMPLES,
@@ -83,9 +83,7 @@ impl FourBar {
                 if spec.forward_pivot.is_none() && spec.aft_pivot.is_none() && first.moving.x <= second.moving.x {
                     continue;
                 }
-                if (first.moving - second.moving).norm() < 0.1 * flap_chord
-                    || (first.fixed - second.fixed).norm() < 0.02 * flap_chord
-                {
+                if links_coincide(first, second, flap_chord) {
                     if fixed_pair {
                         last_defect = Some((SynthesisDefect::NoRealSolution, "the two links coincide".to_string()));
                     }
@@ -94,11 +92,7 @@ impl FourBar {
                 search.pairs += 1;
                 // The screw drives the link that turns less (a square mount keeps it above
                 // the minimum transmission angle over up to pi - 2 mu_min of rotation).
-                let (crank, rocker) = if first.turns[1].abs() <= second.turns[1].abs() {
-                    (first, second)
-                } else {
-                    (second, first)
-                };
+                let (crank, rocker) = crank_and_rocker(first, second);
                 match check_pair(&spec, crank, rocker) {
                     Ok((loop_, transmission)) => {
                         search.feasible += 1;
@@ -367,7 +361,7 @@ impl FourBar {
         let mut pairs: Vec<(f64, _, _)> = Vec::new();
         for f in &forward {
             for a in &aft {
-                if (f.moving - a.moving).norm() < 0.1 * flap_chord || (f.fixed - a.fixed).norm() < 0.02 * flap_chord {
+                if links_coincide(f, a, flap_chord) {
                     continue;
                 }
                 let miss = (f.moving - forward_pivot).norm() + (a.moving - aft_pivot).norm();
@@ -383,11 +377,7 @@ impl FourBar {
                 break;
             }
             search.pairs += 1;
-            let (crank, rocker) = if f.turns[1].abs() <= a.turns[1].abs() {
-                (f, a)
-            } else {
-                (a, f)
-            };
+            let (crank, rocker) = crank_and_rocker(f, a);
             let Ok((loop_, _)) = check_pair(spec, crank, rocker) else {
                 continue;
             };
@@ -442,5 +432,21 @@ impl FourBar {
             max_input_m: self.synthesis.stroke_m[0].max(self.synthesis.stroke_m[1]),
         })?;
         Ok((state, pose))
+    }
+}
+
+/// True when two links would (nearly) coincide: moving pivots closer than a tenth of the
+/// flap chord, or fixed pivots closer than 2 % of it.
+fn links_coincide(a: &Candidate, b: &Candidate, flap_chord: f64) -> bool {
+    (a.moving - b.moving).norm() < 0.1 * flap_chord || (a.fixed - b.fixed).norm() < 0.02 * flap_chord
+}
+
+/// The screw drives the link that turns less (a square mount keeps it above the minimum
+/// transmission angle over up to pi - 2 mu_min of rotation): (crank, rocker).
+fn crank_and_rocker<'a>(a: &'a Candidate, b: &'a Candidate) -> (&'a Candidate, &'a Candidate) {
+    if a.turns[1].abs() <= b.turns[1].abs() {
+        (a, b)
+    } else {
+        (b, a)
     }
 }

@@ -289,3 +289,71 @@ fn flight_conditions_are_validated_at_their_keys() {
         "{stderr}"
     );
 }
+
+/// `plane = "skew-corrected"` (`003_...` Fig. 4): the station's plane holds the wing's
+/// dihedral vector (0, -sin 6 deg, cos 6 deg) and turns away from the plane perpendicular to
+/// the hinge line; the dropped hinge meets its landing setting as the rigid flap's pose
+/// puts it in the turned plane, within the shift that pose makes (reported).
+#[test]
+fn a_skew_corrected_plane_follows_the_flaps_landing_motion() {
+    let text = scene_text()
+        .replace(
+            "name = \"ob-outer\"\n",
+            "name = \"ob-outer\"\nplane = \"skew-corrected\"\n",
+        )
+        .replace(
+            "[outputs]\nstl = true\nkinematics = true",
+            "[outputs]\nstl = false\nkinematics = false\nsizing = false\ninterference = false\nsvg = false",
+        );
+    let (_dir, report) = designed(&text);
+    let stations = report["stations"].as_array().unwrap();
+    let plane = |name: &str| {
+        &stations
+            .iter()
+            .find(|s| s["name"] == name)
+            .unwrap_or_else(|| panic!("station {name}"))["plane"]
+    };
+    let (skewed, perpendicular) = (plane("ob-outer"), plane("ob-inner"));
+    assert_eq!(skewed["construction"], "skew-corrected");
+    assert_eq!(perpendicular["construction"], "perpendicular-to-axis");
+    let normal: Vec<f64> = skewed["frame"]["z_axis"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    let dihedral = 6.0_f64.to_radians();
+    let along_dihedral_vector = -normal[1] * dihedral.sin() + normal[2] * dihedral.cos();
+    assert!(along_dihedral_vector.abs() < 1e-12, "{along_dihedral_vector}");
+    let turned_deg = skewed["skew_angle_deg"].as_f64().unwrap() - perpendicular["skew_angle_deg"].as_f64().unwrap();
+    assert!(
+        turned_deg.abs() > 0.1,
+        "the plane turns with the flap's motion: {turned_deg} deg"
+    );
+    let station = stations.iter().find(|s| s["name"] == "ob-outer").unwrap();
+    let landing = &station["flap_position"]["settings"][2];
+    assert_eq!(landing["setting"], "landing");
+    let (gap_miss, overlap_miss, allowed) = setting_misses(station, landing);
+    assert!(
+        gap_miss.abs() <= allowed && overlap_miss.abs() <= allowed,
+        "landing misses {gap_miss}, {overlap_miss} %c; the rigid pose moved it by at most {allowed} %c"
+    );
+}
+
+/// A skew-corrected plane follows the flap's landing motion, so a flap without landing gap
+/// and overlap is refused at the station's `plane` key, with its line.
+#[test]
+fn a_skew_corrected_plane_without_landing_settings_is_refused_at_its_key() {
+    let text = std::fs::read_to_string(repo_root().join("data/scenes/small-aircraft.toml")).unwrap();
+    let first_station = text.find("[[station]]").unwrap();
+    let name_line = first_station + text[first_station..].find('\n').unwrap() + 1;
+    let mut text = text;
+    text.insert_str(name_line, "plane = \"skew-corrected\"\n");
+    let (_dir, output) = design(&text);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("station[0].plane") && stderr.contains("landing_gap_percent") && stderr.contains("scene.toml:"),
+        "{stderr}"
+    );
+}

@@ -124,7 +124,10 @@ pub fn design_with_progress(
         let write_stl = full && (outputs.stl || outputs.urdf);
         let stage = if write_stl { "stl" } else { "part-statistics" };
         parts = stages.run(stage, || geometry::write_parts(&meshed, write_stl, out))?;
-        placed = stages.run("planes", || stations::place_all(scene, &model, &meshed))?;
+        placed = stages.run("planes", || {
+            let placed = stations::place_all(scene, &model, &meshed)?;
+            stations::apply_flap_motion(scene, &model, &meshed, placed)
+        })?;
         wing_model = Some(model);
     }
     // After the planes: kinds synthesised from the flap settings need the sections.

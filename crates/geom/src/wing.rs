@@ -223,6 +223,13 @@ impl Wing {
         Ok((le, chord, twist))
     }
 
+    /// Dihedral (rad, positive tip up) of the panel holding `y_m`: on a panel boundary,
+    /// the outboard panel's; an error outside the span.
+    pub fn dihedral_rad_at(&self, y_m: f64) -> Result<f64> {
+        let (k, _) = self.locate(y_m, "wing dihedral")?;
+        Ok(self.spec.panels[k].dihedral_deg.to_radians())
+    }
+
     /// The section at `y_m` with its airfoil blended from the neighbouring sections (each
     /// resampled to `points_per_side` when given, else to the larger of their counts).
     pub fn section_at_with(&self, y_m: f64, points_per_side: Option<usize>) -> Result<SectionAt> {

@@ -1,7 +1,7 @@
 //! Support stations: the plane construction chosen for a station, its frame, skew angle
 //! and the out-of-plane motion of the flap attachment points over the deployment.
 
-use nalgebra::{Isometry3, Point3};
+use nalgebra::{Isometry3, Point3, Unit, Vector3};
 
 use crate::error::Result;
 use crate::frame::StationFrame;
@@ -14,7 +14,7 @@ pub const PURE_ROTATION_ANGLE_TOL_RAD: f64 = 1e-12;
 pub const PURE_ROTATION_LENGTH_TOL_M: f64 = 1e-12;
 
 /// How a station's mechanism plane is built.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum PlaneConstruction {
     /// Perpendicular to the hinge axis (thesis `000`, Ch. 4 step 2).
@@ -55,6 +55,28 @@ impl Station {
     /// (0 when there are no attachment points).
     pub fn max_out_of_plane_residual_m(&self) -> f64 {
         self.attachment_residuals_m.iter().copied().fold(0.0, f64::max)
+    }
+}
+
+impl Station {
+    /// A station at `origin_ac` whose plane has normal `normal_ac` (aircraft frame), built
+    /// by `construction`, with no attachment residuals yet: for a plane whose normal comes
+    /// from a motion known outside this crate (a flap's fitted 3D pose; see
+    /// [`crate::skew::skewed_plane_normal_ac`]).
+    pub fn try_with_normal(
+        name: &str,
+        construction: PlaneConstruction,
+        origin_ac: Point3<f64>,
+        normal_ac: &Unit<Vector3<f64>>,
+    ) -> Result<Self> {
+        let frame = StationFrame::try_from_origin_and_normal(origin_ac, normal_ac)?;
+        Ok(Station {
+            name: name.to_owned(),
+            construction,
+            frame,
+            skew_angle_rad: skew_angle_rad(&frame.z_axis_ac()),
+            attachment_residuals_m: Vec::new(),
+        })
     }
 }
 
@@ -102,17 +124,11 @@ pub fn compute_station(
             skewed_plane_normal_ac(&skew, &dihedral_up_vector_ac(dihedral_rad))?
         }
     };
-    let frame = StationFrame::try_from_origin_and_normal(origin_ac, &normal)?;
+    let mut station = Station::try_with_normal(name, construction, origin_ac, &normal)?;
     let poses = deployment.sample_poses_ac(samples)?;
-    let attachment_residuals_m = attachments_ac
+    station.attachment_residuals_m = attachments_ac
         .iter()
-        .map(|p| out_of_plane_residual_m(&frame, p, &poses))
+        .map(|p| out_of_plane_residual_m(&station.frame, p, &poses))
         .collect();
-    Ok(Station {
-        name: name.to_owned(),
-        construction,
-        frame,
-        skew_angle_rad: skew_angle_rad(&frame.z_axis_ac()),
-        attachment_residuals_m,
-    })
+    Ok(station)
 }

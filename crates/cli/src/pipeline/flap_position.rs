@@ -5,7 +5,7 @@
 use anyhow::{Context, Result};
 use flapwright_mechanism::{PrecisionPosition, StationOutline};
 use flapwright_planes::{FlapBehindWing, GapOverlap};
-use nalgebra::{Point2, Point3};
+use nalgebra::{Isometry2, Isometry3, Point2, Point3};
 use serde::Serialize;
 
 use crate::kinds::SynthesisContext;
@@ -93,88 +93,133 @@ pub struct RigidFlapSetting {
     pub deflection_in_plane_deg: f64,
 }
 
-/// The flap is one rigid body. Where several stations carry it, its take-off and landing
-/// poses in 3D are the rigid motions fitted (`flapwright_geom::fit_rigid_motion`) to the
-/// positions each station's settings ask for in its plane: every station's flap section
-/// points, each moved by its own station's displacement. Each station's precision
-/// positions become those poses as its plane sees them: the section points moved by the
-/// pose, projected on the plane and fitted by a planar displacement. On a tapered flap the
-/// fitted poses are conical (`003_...` section 2, Fig. 2b); taken one station at a time the
-/// settings would move a rigid flap apart. Returns per station what the fit changed, in
-/// the order of `stations`; stations without settings are left alone.
+/// The flap is one rigid body. Where several stations carry it, or a station's plane is
+/// skew-corrected, its take-off and landing poses in 3D are the rigid motions of
+/// [`setting_poses`] (on each placed station), and each station's precision positions
+/// become those poses as its plane sees them: the section points moved by the pose,
+/// projected on the plane and fitted by a planar displacement. On a tapered flap the
+/// poses are conical (`003_...` section 2, Fig. 2b); taken one station at a time the
+/// settings would move a rigid flap apart. Returns per station what this changed, in the
+/// order of `stations`; stations without settings or poses are left alone.
 pub fn rigid_flap_settings(
     flap: &str,
     stations: &mut [(&PlacedStation, &mut SynthesisContext)],
 ) -> Result<Vec<Vec<RigidFlapSetting>>> {
-    let mut changes = vec![Vec::new(); stations.len()];
-    let own_settings: Vec<_> = stations.iter().map(|(_, context)| context.settings).collect();
-    let carried: Vec<(usize, [PrecisionPosition; 2])> = own_settings
-        .iter()
-        .enumerate()
-        .filter_map(|(i, s)| s.map(|(takeoff, landing)| (i, [takeoff, landing])))
-        .collect();
-    if carried.len() < 2 {
-        return Ok(changes);
-    }
-    let points: Vec<Vec<Point2<f64>>> = stations
-        .iter()
-        .map(|(placed, _)| flapwright_interference::fit_points(&placed.polygons_of(|name| name == flap)))
-        .collect();
-    let frames: Vec<nalgebra::Isometry3<f64>> = stations
-        .iter()
-        .map(|(placed, _)| *placed.station.frame.aircraft_from_station())
-        .collect();
-    let frame = |i: usize| frames[i];
-    let mut fitted = vec![[None, None]; stations.len()];
     let lift = |p: &Point2<f64>| Point3::new(p.x, p.y, 0.0);
-    for (which, setting) in ["takeoff", "landing"].into_iter().enumerate() {
-        let (mut from, mut to) = (Vec::new(), Vec::new());
-        for &(i, own) in &carried {
-            let (f, d) = (frame(i), own[which].flap);
-            from.extend(points[i].iter().map(|p| f * lift(p)));
-            to.extend(points[i].iter().map(|p| f * lift(&(d * p))));
-        }
-        let pose = flapwright_geom::fit_rigid_motion(&from, &to)
-            .with_context(|| format!("flap {flap}: the rigid flap's {setting} pose"))?
-            .motion;
-        for &(i, own) in &carried {
-            let (f, d) = (frame(i), own[which].flap);
-            let seen = f.inverse() * pose * f;
-            let moved: Vec<Point3<f64>> = points[i].iter().map(|p| seen * lift(p)).collect();
+    let mut changes = vec![Vec::new(); stations.len()];
+    for ((placed, context), change) in stations.iter_mut().zip(&mut changes) {
+        let (Some(poses), Some(settings)) = (placed.setting_poses_ac, context.settings.as_mut()) else {
+            continue;
+        };
+        let points = section_fit_points(placed, flap);
+        let frame = placed.station.frame.aircraft_from_station();
+        for (pose, position) in poses.iter().zip([&mut settings.0, &mut settings.1]) {
+            let setting = position.name;
+            let seen = frame.inverse() * pose * frame;
+            let moved: Vec<Point3<f64>> = points.iter().map(|p| seen * lift(p)).collect();
             let in_plane: Vec<Point2<f64>> = moved.iter().map(|q| Point2::new(q.x, q.y)).collect();
-            let displacement =
-                flapwright_mechanism::precision::fit_displacement(&points[i], &in_plane).with_context(|| {
-                    format!(
-                        "flap {flap}: its {setting} pose in station {}",
-                        stations[i].0.station.name
-                    )
-                })?;
-            changes[i].push(RigidFlapSetting {
+            let displacement = flapwright_mechanism::precision::fit_displacement(&points, &in_plane)
+                .with_context(|| format!("flap {flap}: its {setting} pose in station {}", placed.station.name))?;
+            let own = position.flap;
+            change.push(RigidFlapSetting {
                 setting,
                 // Over the whole section, not the fitted points only: the extreme points
                 // set the gap and the overlap.
-                shift_from_station_target_m: stations[i]
-                    .0
+                shift_from_station_target_m: placed
                     .polygons_of(|name| name == flap)
                     .iter()
                     .flatten()
-                    .map(|p| (displacement * p - d * p).norm())
+                    .map(|p| (displacement * p - own * p).norm())
                     .fold(0.0, f64::max),
                 out_of_plane_m: moved.iter().map(|q| q.z.abs()).fold(0.0, f64::max),
                 deflection_in_plane_deg: displacement.rotation.angle().to_degrees(),
             });
-            fitted[i][which] = Some(displacement);
-        }
-    }
-    for ((_, context), [takeoff, landing]) in stations.iter_mut().zip(fitted) {
-        if let (Some(settings), Some(takeoff), Some(landing)) = (context.settings.as_mut(), takeoff, landing) {
-            for (position, displacement) in [(&mut settings.0, takeoff), (&mut settings.1, landing)] {
-                position.flap = displacement;
-                position.deflection_rad = displacement.rotation.angle();
-            }
+            position.flap = displacement;
+            position.deflection_rad = displacement.rotation.angle();
         }
     }
     Ok(changes)
+}
+
+/// Per station of `placed` (scene order), the take-off and landing 3D poses (aircraft
+/// frame, mapping the stowed flap to the setting) its flap's settings ask for, where
+/// several stations carry the flap or one of them asks for a skew-corrected plane: the
+/// rigid motions fitted (`flapwright_geom::fit_rigid_motion`) to every station's flap
+/// section points each moved by its own station's displacement for the setting's gap and
+/// overlap; one station's displacement lifted into 3D when it is alone. `None` elsewhere,
+/// and where the flap gives no take-off and landing gap and overlap.
+pub fn setting_poses(
+    scene: &crate::scene::Scene,
+    placed: &[PlacedStation],
+) -> Result<Vec<Option<[Isometry3<f64>; 2]>>> {
+    let mut poses = vec![None; placed.len()];
+    for flap in &scene.flap {
+        let carriers: Vec<usize> = (0..placed.len().min(scene.station.len()))
+            .filter(|&i| scene.station[i].flap.as_deref() == Some(flap.name.as_str()))
+            .collect();
+        let skewed = carriers
+            .iter()
+            .any(|&i| scene.station[i].plane == Some(flapwright_planes::PlaneConstruction::SkewCorrected));
+        if carriers.len() < 2 && !skewed {
+            continue;
+        }
+        let mut asked = Vec::new();
+        for &i in &carriers {
+            let (context, _) =
+                synthesis_context(flap, &scene.flap, &placed[i], scene.interference.required_clearance_m)?;
+            if let Some((takeoff, landing)) = context.settings {
+                asked.push((i, [takeoff.flap, landing.flap]));
+            }
+        }
+        if asked.is_empty() {
+            continue;
+        }
+        let points: Vec<Vec<Point2<f64>>> = placed.iter().map(|p| section_fit_points(p, &flap.name)).collect();
+        let frames: Vec<Isometry3<f64>> = placed
+            .iter()
+            .map(|p| *p.station.frame.aircraft_from_station())
+            .collect();
+        let mut both = [Isometry3::identity(); 2];
+        for (which, setting) in ["takeoff", "landing"].into_iter().enumerate() {
+            let setting_asks: Vec<(usize, Isometry2<f64>)> = asked.iter().map(|&(i, d)| (i, d[which])).collect();
+            both[which] = fitted_pose(&points, &frames, &setting_asks)
+                .with_context(|| format!("flap {}: the rigid flap's {setting} pose", flap.name))?;
+        }
+        for &(i, _) in &asked {
+            poses[i] = Some(both);
+        }
+    }
+    Ok(poses)
+}
+
+/// The points of `flap`'s stowed section at `placed` that a rigid fit weighs (station
+/// frame, m).
+fn section_fit_points(placed: &PlacedStation, flap: &str) -> Vec<Point2<f64>> {
+    flapwright_interference::fit_points(&placed.polygons_of(|name| name == flap))
+}
+
+/// The rigid 3D motion (aircraft frame) that best moves each station's section `points[i]`
+/// (station frame `frames[i]`) as that station's planar displacement asks, over the
+/// stations listed in `asked`; one station's displacement lifted into 3D when it is alone.
+fn fitted_pose(
+    points: &[Vec<Point2<f64>>],
+    frames: &[Isometry3<f64>],
+    asked: &[(usize, Isometry2<f64>)],
+) -> Result<Isometry3<f64>> {
+    let lift = |p: &Point2<f64>| Point3::new(p.x, p.y, 0.0);
+    if let [(i, d)] = asked {
+        let planar = Isometry3::from_parts(
+            nalgebra::Translation3::new(d.translation.x, d.translation.y, 0.0),
+            nalgebra::UnitQuaternion::from_axis_angle(&nalgebra::Vector3::z_axis(), d.rotation.angle()),
+        );
+        return Ok(frames[*i] * planar * frames[*i].inverse());
+    }
+    let (mut from, mut to) = (Vec::new(), Vec::new());
+    for &(i, d) in asked {
+        from.extend(points[i].iter().map(|p| frames[i] * lift(p)));
+        to.extend(points[i].iter().map(|p| frames[i] * lift(&(d * p))));
+    }
+    Ok(flapwright_geom::fit_rigid_motion(&from, &to)?.motion)
 }
 
 /// The wing and stowed flap sections of `placed`, ready to measure; `None` when the plane

@@ -238,22 +238,35 @@ pub const FLAP_FIT_WARNING_CHORD_FRACTION: f64 = 0.005;
 /// Drive fractions the fitted flap motion is sampled at for [`flap_agreement`].
 const FLAP_FIT_SAMPLES: usize = 32;
 
+/// Each flap carried by two or more placed stations, with those stations' records, in the
+/// order the flaps first appear.
+pub fn flaps_on_several_stations(records: &[StationRecord]) -> Vec<(&str, Vec<&StationRecord>)> {
+    let mut flaps: Vec<&str> = Vec::new();
+    for flap in records.iter().filter_map(|r| r.flap.as_deref()) {
+        if !flaps.contains(&flap) {
+            flaps.push(flap);
+        }
+    }
+    flaps
+        .into_iter()
+        .map(|flap| {
+            let carriers: Vec<&StationRecord> = records
+                .iter()
+                .filter(|r| r.flap.as_deref() == Some(flap) && r.placed.is_some())
+                .collect();
+            (flap, carriers)
+        })
+        .filter(|(_, carriers)| carriers.len() >= 2)
+        .collect()
+}
+
 /// Warnings where the stations of one rigid flap move it in ways no rigid motion follows:
 /// the flap moves by the motion fitted to them all (the interference check's,
 /// `flapwright_interference::FittedFlapMotion`), and the stations' sections miss it by up to
 /// the fit's largest residual.
 pub fn flap_agreement(records: &[StationRecord]) -> Vec<String> {
     let mut warnings = Vec::new();
-    let mut flaps: Vec<&str> = records.iter().filter_map(|r| r.flap.as_deref()).collect();
-    flaps.dedup();
-    for flap in flaps {
-        let carriers: Vec<&StationRecord> = records
-            .iter()
-            .filter(|r| r.flap.as_deref() == Some(flap) && r.placed.is_some())
-            .collect();
-        if carriers.len() < 2 {
-            continue;
-        }
+    for (flap, carriers) in flaps_on_several_stations(records) {
         let Ok(motion) = crate::pipeline::interference::fitted_flap_motion(flap, &carriers, &[]) else {
             continue;
         };

@@ -5,11 +5,13 @@
 use anyhow::{Context, Result};
 use flapwright_geom::parts::{Part, WingModel};
 use flapwright_planes::{
-    compute_station, cut_mesh, out_of_plane_residual_m, thesis_stations, FlapDeployment, FlapSetting, HingeAxis, Plane,
-    Section, Station,
+    compute_station, cut_mesh, dihedral_up_vector_ac, out_of_plane_residual_m, skew_direction_ac,
+    skewed_plane_normal_ac, thesis_stations, FlapDeployment, FlapSetting, HingeAxis, Plane, PlaneConstruction, Section,
+    Station,
 };
-use nalgebra::{Point2, Point3, Vector3};
+use nalgebra::{Isometry3, Point2, Point3, Vector3};
 
+use crate::pipeline::flap_position;
 use crate::pipeline::mechanisms::StationRecord;
 use crate::scene::Scene;
 
@@ -26,6 +28,11 @@ pub struct PlacedStation {
     pub sections: Vec<Section>,
     /// The flap's 3D motion the residuals are measured over.
     pub deployment: FlapDeployment,
+    /// The flap's take-off and landing 3D poses (aircraft frame) its settings ask for,
+    /// where several stations carry it or this one's plane is skew-corrected
+    /// ([`apply_flap_motion`]); the station's precision positions are these as its plane
+    /// sees them.
+    pub setting_poses_ac: Option<[Isometry3<f64>; 2]>,
 }
 
 impl PlacedStation {
@@ -50,15 +57,44 @@ pub fn place_all(scene: &Scene, model: &WingModel, parts: &[Part]) -> Result<Vec
 }
 
 /// The out-of-plane residual of each record's flap attachments (its mechanism's) over the
-/// flap's 3D motion.
+/// flap's 3D motion: where several stations carry the flap, the rigid motion fitted to
+/// all of them as their mechanisms move them (the motion the interference check uses);
+/// where one station does, the turn about the hinge line, which a plane perpendicular to
+/// it holds exactly.
 pub fn attachment_residuals(records: &mut [StationRecord]) -> Result<()> {
-    for record in records.iter_mut() {
+    let mut poses_by_record: Vec<Option<Vec<Isometry3<f64>>>> = vec![None; records.len()];
+    for (flap, carriers) in crate::pipeline::mechanisms::flaps_on_several_stations(records) {
+        let attachments_ac: Vec<Point3<f64>> = carriers
+            .iter()
+            .filter_map(|r| r.placed.as_ref().map(|p| (r, p.station.frame)))
+            .flat_map(|(r, frame)| {
+                r.mechanism
+                    .flap_attachments()
+                    .into_iter()
+                    .map(move |a| frame.aircraft_point_from_station(&a.position))
+            })
+            .collect();
+        let motion = crate::pipeline::interference::fitted_flap_motion(flap, &carriers, &attachments_ac)
+            .with_context(|| format!("the fitted motion of flap {flap}"))?;
+        let poses = (0..=RESIDUAL_SAMPLES)
+            .map(|k| Ok(motion.fit_at(k as f64 / RESIDUAL_SAMPLES as f64)?.motion))
+            .collect::<Result<Vec<_>>>()?;
+        for (index, record) in records.iter().enumerate() {
+            if record.flap.as_deref() == Some(flap) && record.placed.is_some() {
+                poses_by_record[index] = Some(poses.clone());
+            }
+        }
+    }
+    for (record, fitted) in records.iter_mut().zip(poses_by_record) {
         let attachments = record.mechanism.flap_attachments();
         let Some(placed) = record.placed.as_mut() else {
             continue;
         };
         let frame = placed.station.frame;
-        let poses = placed.deployment.sample_poses_ac(RESIDUAL_SAMPLES)?;
+        let poses = match fitted {
+            Some(poses) => poses,
+            None => placed.deployment.sample_poses_ac(RESIDUAL_SAMPLES)?,
+        };
         placed.station.attachment_residuals_m = attachments
             .iter()
             .map(|p| out_of_plane_residual_m(&frame, &frame.aircraft_point_from_station(&p.position), &poses))
@@ -113,15 +149,58 @@ fn place(scene: &Scene, model: &WingModel, parts: &[Part], index: usize, dihedra
         RESIDUAL_SAMPLES,
     )
     .with_context(|| format!("station {}", station.name))?;
-    let sections = parts
+    Ok(PlacedStation {
+        sections: cut_parts(parts, &placed)?,
+        station: placed,
+        deployment,
+        setting_poses_ac: None,
+    })
+}
+
+/// Every part's section cut by the station's plane (parts the plane misses left out).
+fn cut_parts(parts: &[Part], station: &Station) -> Result<Vec<Section>> {
+    parts
         .iter()
-        .map(|part| cut_mesh(&part.mesh, &placed.frame, &part.name))
+        .map(|part| cut_mesh(&part.mesh, &station.frame, &part.name))
         .filter(|cut| !matches!(cut, Ok(section) if section.polygons.is_empty()))
         .collect::<flapwright_planes::Result<Vec<_>>>()
-        .with_context(|| format!("cutting the parts at station {}", station.name))?;
-    Ok(PlacedStation {
-        station: placed,
-        sections,
-        deployment,
-    })
+        .with_context(|| format!("cutting the parts at station {}", station.name))
+}
+
+/// Gives every station the 3D poses its flap's settings ask for
+/// ([`flap_position::setting_poses`], fitted on the planes perpendicular to the hinge line,
+/// where the settings are measured), and re-places the stations whose scene asks for the
+/// skew-corrected plane (`plane = "skew-corrected"`): normal = skew direction x dihedral
+/// vector (`003_...` section 2, Fig. 4), the skew direction being how the flap's landing
+/// pose moves the station origin (the forward attachment point on the hinge line) and
+/// the dihedral vector the wing's up direction tilted by the local panel dihedral. As in
+/// `003_...`, the poses come first and the planes from them, once: each station's
+/// precision positions are then those poses as its plane sees them.
+pub fn apply_flap_motion(
+    scene: &Scene,
+    model: &WingModel,
+    parts: &[Part],
+    mut placed: Vec<PlacedStation>,
+) -> Result<Vec<PlacedStation>> {
+    let poses = flap_position::setting_poses(scene, &placed)?;
+    for (i, (station, poses)) in placed.iter_mut().zip(poses).enumerate() {
+        station.setting_poses_ac = poses;
+        if scene.station[i].plane != Some(PlaneConstruction::SkewCorrected) {
+            continue;
+        }
+        let name = &scene.station[i].name;
+        let [_, landing] = poses.with_context(|| {
+            format!("station {name}: a skew-corrected plane needs its flap's take-off and landing gap and overlap")
+        })?;
+        let origin = station.station.frame.origin_ac();
+        let dihedral_rad = model.wing().dihedral_rad_at(origin.y)?;
+        let skew = skew_direction_ac(&origin, &(landing * origin))
+            .with_context(|| format!("station {name}: the skew direction of its landing motion"))?;
+        let normal = skewed_plane_normal_ac(&skew, &dihedral_up_vector_ac(dihedral_rad))
+            .with_context(|| format!("station {name}: the skew-corrected plane"))?;
+        let moved = Station::try_with_normal(name, PlaneConstruction::SkewCorrected, origin, &normal)?;
+        station.sections = cut_parts(parts, &moved)?;
+        station.station = moved;
+    }
+    Ok(placed)
 }

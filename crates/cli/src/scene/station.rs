@@ -12,6 +12,9 @@ pub struct StationScene {
     pub flap: Option<String>,
     /// Distance along the hinge axis from the flap's inboard side plane (thesis d1, or d1 + d2), m.
     pub axis_offset_m: Option<f64>,
+    /// The mechanism plane: `perpendicular-to-axis` (default: the thesis construction) or
+    /// `skew-corrected` (`003_...` Fig. 4: the flap's landing motion x the dihedral vector).
+    pub plane: Option<flapwright_planes::PlaneConstruction>,
     /// Mechanism kind and its dimensions.
     pub mechanism: crate::kinds::MechanismScene,
 }

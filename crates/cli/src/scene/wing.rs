@@ -142,7 +142,7 @@ impl SettingsScene {
         }
     }
 
-    /// The structural gap of a sealed setting (m): `sealed_gap_m`, or twice
+    /// The structural gap of a sealed setting (m): `sealed_gap_m`, or three times
     /// `required_clearance_m`.
     pub fn sealed_gap_m(&self, required_clearance_m: f64) -> f64 {
         self.sealed_gap_m.unwrap_or(3.0 * required_clearance_m)

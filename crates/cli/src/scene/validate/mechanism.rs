@@ -23,6 +23,18 @@ impl Checker<'_> {
                         ),
                     ),
                     Some(flap) => {
+                        let landing = flap.settings.targets("landing");
+                        if station.plane == Some(flapwright_planes::PlaneConstruction::SkewCorrected)
+                            && (landing.0.is_none() || landing.1.is_none())
+                        {
+                            self.fail(
+                                format!("{path}.plane"),
+                                format!(
+                                    "= \"skew-corrected\" follows the flap's landing motion: give flap \"{}\" [flap.settings] landing_gap_percent and landing_overlap_percent, or use \"perpendicular-to-axis\"",
+                                    flap.name
+                                ),
+                            );
+                        }
                         let span = flap.y_outboard_m - flap.y_inboard_m;
                         match station.axis_offset_m {
                             None => self.fail(format!("{path}.axis_offset_m"), "is required for a station on a flap"),

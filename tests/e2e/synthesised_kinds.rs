@@ -357,3 +357,55 @@ fn a_skew_corrected_plane_without_landing_settings_is_refused_at_its_key() {
         "{stderr}"
     );
 }
+
+/// `actuator = "rotary"` on the dropped hinges (`003_...` Fig. 6): the input is the turn
+/// about the hinge, the dropped hinges still meet their landing settings, and sizing gives
+/// each a rotary actuator whose shaft torque is its largest torque over the gear ratio and
+/// the efficiency (ratio = 2 pi turns / landing deflection, the screws' 40 turns).
+#[test]
+fn rotary_dropped_hinges_are_designed_and_sized() {
+    let text = scene_text()
+        .replace(
+            "kind = \"dropped-hinge\"\n",
+            "kind = \"dropped-hinge\"\nactuator = \"rotary\"\n",
+        )
+        .replace(
+            "[outputs]\nstl = true\nkinematics = true",
+            "[outputs]\nstl = false\nkinematics = true\ninterference = false\nsvg = false",
+        );
+    let (_dir, report) = designed(&text);
+    let jacks = report["sizing"]["screw_jacks"].as_array().unwrap();
+    for station in report["stations"].as_array().unwrap() {
+        let name = station["name"].as_str().unwrap();
+        let mechanism = &station["mechanism"];
+        let jack = jacks.iter().find(|j| j["station"] == name).unwrap();
+        if mechanism["kind"] != "dropped-hinge" {
+            assert_eq!(jack["name"], "screw-jack");
+            continue;
+        }
+        assert_eq!(mechanism["input"]["quantity"], "angle");
+        assert_eq!(jack["name"], "rotary-actuator");
+        let rotary = &mechanism["details"]["synthesis"]["rotary_actuator"];
+        let (ratio, efficiency) = (
+            rotary["gear_ratio"].as_f64().unwrap(),
+            rotary["efficiency"].as_f64().unwrap(),
+        );
+        let travel = mechanism["input"]["deployed"].as_f64().unwrap();
+        assert!((ratio * travel - 2.0 * std::f64::consts::PI * 40.0).abs() < 1e-9);
+        let largest = mechanism["load_cases"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .flat_map(|c| c["samples"].as_array().unwrap())
+            .map(|s| s["actuator_load"].as_f64().unwrap())
+            .fold(f64::NEG_INFINITY, f64::max);
+        let raise = jack["max_raise_torque_nm"].as_f64().unwrap();
+        assert!(
+            (raise - largest / (ratio * efficiency)).abs() < 1e-9 * raise.abs(),
+            "{name}: {raise} N m against {largest} N m / ({ratio} x {efficiency})"
+        );
+        let landing = &station["flap_position"]["settings"][2];
+        let (gap_miss, overlap_miss, allowed) = setting_misses(station, landing);
+        assert!(gap_miss.abs() <= allowed && overlap_miss.abs() <= allowed, "{name}");
+    }
+}

@@ -1,7 +1,9 @@
 //! The dropped hinge (Zaccai, Bertels & Vos `003_...` section 3, Figs. 6-7): the flap turns
 //! about one fixed hinge below the wing, carried by a hinged structure (two arms from the
 //! hinge to the flap's forward and aft attachments), the hinge held by a truss to the lower
-//! skin, and a screw jack from a mount in the wing pushes the forward arm round.
+//! skin, and either a screw jack from a mount in the wing pushes the forward arm round or
+//! a geared rotary actuator on the hinge turns the hinged structure (`003_...` Fig. 6:
+//! "can be fitted with a linear actuator or a rotary actuator").
 //!
 //! Synthesis from two precision positions: the hinge is the pole of the flap's planar
 //! displacement stowed -> landing ([`pole`]), so both are met exactly; take-off is then
@@ -14,7 +16,9 @@
 //! moments about H give the screw force F (along B0 -> P, positive pushing the flap):
 //! F = -M_H / ((P - H) x u), u = (P - B0)/|P - B0|, M_H the applied wrench's moment about H;
 //! the hinge carries R_H = -(F u + W). Virtual work, independently: F = -(W · dD/ds + C dψ/ds)
-//! with dψ/ds from the drive's triangle (not from the cross product above).
+//! with dψ/ds from the drive's triangle (not from the cross product above). With the rotary
+//! actuator the input is ψ itself: its torque is T = -M_H by moments about H, and
+//! T = -(W · dD/dψ + C) by virtual work.
 
 use nalgebra::{Isometry2, Point2, Vector2};
 use serde::Serialize;
@@ -26,6 +30,7 @@ use crate::outline::{inside, StationOutline};
 use crate::placement::{place_screw_jack, strut_top, turning_flap, JackSize, ScrewJackChoice};
 use crate::precision::{pole, PrecisionPosition};
 use crate::rocker_drive::{cross, turn_about, RockerDrive, ScrewJackParts};
+use crate::rotary_actuator::RotaryDrive;
 use crate::screw_jack::{ScrewDrive, ScrewJack};
 use crate::seam::{
     Actuator, Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd,
@@ -43,25 +48,15 @@ pub struct DroppedHingeSpec {
     pub takeoff: Option<PrecisionPosition>,
     /// The hinged structure's attachments on the flap, forward and aft (stowed).
     pub flap_attachments: [Point2<f64>; 2],
-    /// Where the screw takes hold of the forward arm: 0 at the forward attachment, 1 at the
-    /// hinge (`003_...`: "between the forward flap attachment and the lower mechanism hinge").
-    pub actuator_attachment_fraction: f64,
-    /// The screw's mount; `None`: square to the arm at mid-travel, at the first of a few
-    /// standoffs from `actuator_standoff_m` and attachments from
-    /// `actuator_attachment_fraction` whose screw and jack body keep clear of the wing, the
-    /// structure and the turning flap ([`crate::placement::screw_jack_placement`]).
-    pub actuator_mount: Option<Point2<f64>>,
-    /// Distance from the attachment's mid-travel position to a default mount (m).
-    pub actuator_standoff_m: f64,
+    /// The actuator and its free choices.
+    pub actuator: DroppedHingeActuator,
     /// The truss's two attachments on the wing (stowed, on the lower skin); `None`: the
     /// first lower-skin points ahead of the cove whose members keep clear of the structure
     /// and the turning flap ([`strut_top`]).
     pub support_points: Option<[Point2<f64>; 2]>,
     /// The flap share this station carries.
     pub flap_mass: FlapMass,
-    /// The screw's thread and the shared drive.
-    pub screw_drive: ScrewDrive,
-    /// Smallest transmission angle of the drive over the deployment (rad).
+    /// Smallest transmission angle of the screw jack over the deployment (rad).
     pub min_transmission_angle_rad: f64,
     /// Solid sizes.
     pub hardware: LinkHardware,
@@ -69,27 +64,47 @@ pub struct DroppedHingeSpec {
     pub outline: StationOutline,
 }
 
+/// What drives a dropped hinge (`003_...` Fig. 6).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "type", rename_all = "kebab-case")]
+pub enum DroppedHingeActuator {
+    /// A screw jack from a mount in the wing to the forward arm (or a horn below the hinge).
+    ScrewJack {
+        /// Where the screw takes hold of the forward arm: 0 at the forward attachment, 1 at
+        /// the hinge (`003_...`: "between the forward flap attachment and the lower
+        /// mechanism hinge").
+        attachment_fraction: f64,
+        /// The screw's mount; `None`: square to the arm at mid-travel, at the first of a
+        /// few standoffs from `standoff_m` and attachments from `attachment_fraction` whose
+        /// screw and jack body keep clear of the wing, the structure and the turning flap
+        /// ([`crate::placement::screw_jack_placement`]).
+        mount: Option<Point2<f64>>,
+        /// Distance from the attachment's mid-travel position to a default mount (m).
+        standoff_m: f64,
+        /// The screw's thread and the shared drive.
+        drive: ScrewDrive,
+    },
+    /// A geared rotary actuator on the hinge, fixed to the support truss, its output the
+    /// hinged structure: the input is the flap's turn about the hinge.
+    Rotary(RotaryDrive),
+}
+
 /// What synthesis computed.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DroppedHingeSynthesis {
     /// The hinge H: the pole of stowed -> landing (m).
     pub hinge_m: Point2<f64>,
-    /// The screw's mount B0 (m).
-    pub actuator_mount_m: Point2<f64>,
     /// The truss's attachments on the wing (m).
     pub support_points_m: [Point2<f64>; 2],
-    /// False when no default place of the screw jack kept clear of the wing, the structure
-    /// and the flap at the sampled poses (the interference check says where).
-    pub actuator_clear: bool,
     /// False when no default place of the support truss kept clear of the structure and
     /// the flap at the sampled poses (the interference check says where).
     pub placement_clear: bool,
-    /// The screw's attachment P on the forward arm, stowed (m).
-    pub actuator_attachment_m: Point2<f64>,
-    /// Stroke |P - B0| stowed and at landing (m).
-    pub stroke_m: [f64; 2],
-    /// Smallest transmission angle of the drive over the deployment (rad, sampled).
-    pub min_transmission_angle_rad: f64,
+    /// The screw jack's layout, when a screw jack drives the hinge.
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    pub screw_jack: Option<DroppedHingeScrewJack>,
+    /// The geared rotary actuator on the hinge, when one drives it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rotary_actuator: Option<Actuator>,
     /// Largest distance (m) between where the turn about H puts a flap attachment at the
     /// take-off deflection and where the take-off setting wants it (None without one).
     pub takeoff_miss_m: Option<f64>,
@@ -100,6 +115,22 @@ pub struct DroppedHingeSynthesis {
     /// wing's trailing edge (sampled; None when it stays clear): the two precision positions
     /// leave no choice, so it is a warning, and the interference check says how deep.
     pub flap_through_lip_at_rad: Option<f64>,
+}
+
+/// The screw jack of a dropped hinge, as synthesis laid it out.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DroppedHingeScrewJack {
+    /// The screw's mount B0 (m).
+    pub actuator_mount_m: Point2<f64>,
+    /// False when no default place of the screw jack kept clear of the wing, the structure
+    /// and the flap at the sampled poses (the interference check says where).
+    pub actuator_clear: bool,
+    /// The screw's attachment P on the forward arm, stowed (m).
+    pub actuator_attachment_m: Point2<f64>,
+    /// Stroke |P - B0| stowed and at landing (m).
+    pub stroke_m: [f64; 2],
+    /// Smallest transmission angle of the drive over the deployment (rad, sampled).
+    pub min_transmission_angle_rad: f64,
     /// The screw chosen from the drive: lead, radius, friction.
     pub screw: ScrewJack,
     /// Screw length (m): the longest stroke and the nut.
@@ -113,15 +144,31 @@ pub struct DroppedHingeSynthesis {
 pub struct DroppedHinge {
     spec: DroppedHingeSpec,
     synthesis: DroppedHingeSynthesis,
-    drive: RockerDrive,
+    drive: Drive,
+    actuator: Actuator,
     bodies: Vec<Body>,
     joints: Vec<Joint>,
+}
+
+/// How the input turns the flap.
+#[derive(Debug, Clone)]
+enum Drive {
+    /// The screw's stroke through the drive's triangle.
+    Screw(RockerDrive),
+    /// The rotary actuator's output angle is the turn.
+    Rotary,
 }
 
 const FLAP: usize = 0;
 const SCREW: usize = 1;
 const NUT: usize = 2;
-const SUPPORT: usize = 3;
+/// The support's index after the flap and, with a screw jack, the screw and the nut.
+fn support_index(drive: &Drive) -> usize {
+    match drive {
+        Drive::Screw(_) => 3,
+        Drive::Rotary => 1,
+    }
+}
 
 /// Samples of the transmission-angle check over the deployment.
 const TRANSMISSION_SAMPLES: usize = 64;
@@ -131,6 +178,18 @@ fn failure(defect: SynthesisDefect, detail: String) -> Error {
         kind: KIND,
         defect,
         detail,
+    }
+}
+
+/// A rotary actuator's input angle, checked finite.
+fn finite_angle(input: f64) -> Result<f64> {
+    if input.is_finite() {
+        Ok(input)
+    } else {
+        Err(Error::NonFinite {
+            quantity: "rotary actuator angle",
+            input_m: input,
+        })
     }
 }
 
@@ -186,19 +245,35 @@ impl DroppedHinge {
         let hw = spec.hardware;
         // In-plane margin for the 3D check's clearance and the flap's taper across a part's width.
         let margin = hw.link_radius_m;
-        let choice = ScrewJackChoice {
-            arm: (spec.flap_attachments[0], hinge),
-            attachment_fraction: spec.actuator_attachment_fraction,
-            // On the arm, then on a horn below the hinge.
-            other_fractions: &[0.65, 0.8, 0.35, 1.4, 1.8],
-            mount: spec.actuator_mount,
-            standoff_m: spec.actuator_standoff_m,
-            min_transmission_rad: spec.min_transmission_angle_rad,
+        let (drive, screw_jack, rotary_actuator, actuator) = match spec.actuator {
+            DroppedHingeActuator::ScrewJack {
+                attachment_fraction,
+                mount,
+                standoff_m,
+                drive,
+            } => {
+                let choice = ScrewJackChoice {
+                    arm: (spec.flap_attachments[0], hinge),
+                    attachment_fraction,
+                    // On the arm, then on a horn below the hinge.
+                    other_fractions: &[0.65, 0.8, 0.35, 1.4, 1.8],
+                    mount,
+                    standoff_m,
+                    min_transmission_rad: spec.min_transmission_angle_rad,
+                };
+                let (rocker, layout) = screw_jack_layout(&spec, hinge, &choice, &drive, margin)?;
+                let actuator = Actuator::ScrewJack {
+                    screw: layout.screw,
+                    screw_length_m: layout.screw_length_m,
+                    nominal_speed_mps: layout.nominal_speed_mps,
+                };
+                (Drive::Screw(rocker), Some(layout), None, actuator)
+            }
+            DroppedHingeActuator::Rotary(drive) => {
+                let actuator = drive.actuator_for(turn);
+                (Drive::Rotary, None, Some(actuator), actuator)
+            }
         };
-        let size = JackSize::new(&hw, spec.screw_drive.mean_radius_m);
-        let flap_at = |psi: f64| Some(turn_about(hinge, psi));
-        let (attachment, mount, actuator_clear) =
-            place_screw_jack(hinge, turn, &choice, &size, margin, &spec.outline, &flap_at);
         let mut placement_clear = true;
         let support_points = match spec.support_points {
             Some(points) => points,
@@ -223,40 +298,6 @@ impl DroppedHinge {
                 }
             }
         };
-        let drive = RockerDrive::try_new(hinge, mount, attachment).map_err(|_| {
-            failure(
-                SynthesisDefect::Toggle,
-                format!(
-                    "the screw mount {}, the hinge {} and the screw's attachment {} lie on one line",
-                    mm(mount),
-                    mm(hinge),
-                    mm(attachment)
-                ),
-            )
-        })?;
-        let min_transmission = (0..=TRANSMISSION_SAMPLES)
-            .map(|k| {
-                let psi = turn * k as f64 / TRANSMISSION_SAMPLES as f64;
-                drive
-                    .state(drive.stroke_at(psi))
-                    .map_or(0.0, |state| state.transmission_angle_rad)
-            })
-            .fold(f64::INFINITY, f64::min);
-        if !drive.clear_of_toggles(turn, 1e-3) || min_transmission < spec.min_transmission_angle_rad {
-            return Err(failure(
-                SynthesisDefect::Toggle,
-                format!(
-                    "the screw's transmission angle falls to {:.1} deg (minimum {:.1} deg); move the actuator mount or its attachment",
-                    min_transmission.to_degrees(),
-                    spec.min_transmission_angle_rad.to_degrees()
-                ),
-            ));
-        }
-        let stroke_m = [drive.stroke_at(0.0), drive.stroke_at(turn)];
-        let (screw, nominal_speed_mps) = spec.screw_drive.screw_for(stroke_m[1] - stroke_m[0]);
-        // Long enough to carry the nut at the longest stroke, no longer: a screw's free end
-        // beyond the nut would sweep into the flap.
-        let screw_length_m = stroke_m[0].max(stroke_m[1]) + hw.nut_radius_m;
         let lip_tolerance = 1e-6 * spec.outline.chord_m().unwrap_or(1.0);
         let flap_through_lip_at_rad = (1..TRANSMISSION_SAMPLES)
             .map(|k| turn * k as f64 / TRANSMISSION_SAMPLES as f64)
@@ -264,24 +305,19 @@ impl DroppedHinge {
         let synthesis = DroppedHingeSynthesis {
             flap_through_lip_at_rad,
             hinge_m: hinge,
-            actuator_mount_m: mount,
             support_points_m: support_points,
-            actuator_clear,
             placement_clear,
-            actuator_attachment_m: attachment,
-            stroke_m,
-            min_transmission_angle_rad: min_transmission,
+            screw_jack,
+            rotary_actuator,
             takeoff_miss_m,
             landing_miss_m,
-            screw,
-            screw_length_m,
-            nominal_speed_mps,
         };
         let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &drive);
         Ok(Self {
             spec,
             synthesis,
             drive,
+            actuator,
             bodies,
             joints,
         })
@@ -298,33 +334,111 @@ impl DroppedHinge {
     }
 }
 
+/// The screw jack's place (mount B0, attachment P), its drive's triangle, and the screw
+/// chosen from the drive. Errors when B0, H and P lie on one line or the transmission angle
+/// falls below the minimum (toggle).
+fn screw_jack_layout(
+    spec: &DroppedHingeSpec,
+    hinge: Point2<f64>,
+    choice: &ScrewJackChoice,
+    screw_drive: &ScrewDrive,
+    margin: f64,
+) -> Result<(RockerDrive, DroppedHingeScrewJack)> {
+    let turn = spec.landing.deflection_rad;
+    let hw = spec.hardware;
+    let size = JackSize::new(&hw, screw_drive.mean_radius_m);
+    let flap_at = |psi: f64| Some(turn_about(hinge, psi));
+    let (attachment, mount, actuator_clear) =
+        place_screw_jack(hinge, turn, choice, &size, margin, &spec.outline, &flap_at);
+    let drive = RockerDrive::try_new(hinge, mount, attachment).map_err(|_| {
+        failure(
+            SynthesisDefect::Toggle,
+            format!(
+                "the screw mount {}, the hinge {} and the screw's attachment {} lie on one line",
+                mm(mount),
+                mm(hinge),
+                mm(attachment)
+            ),
+        )
+    })?;
+    let min_transmission = drive.min_transmission_rad(turn, TRANSMISSION_SAMPLES);
+    if !drive.clear_of_toggles(turn, 1e-3) || min_transmission < spec.min_transmission_angle_rad {
+        return Err(failure(
+            SynthesisDefect::Toggle,
+            format!(
+                "the screw's transmission angle falls to {:.1} deg (minimum {:.1} deg); move the actuator mount or its attachment",
+                min_transmission.to_degrees(),
+                spec.min_transmission_angle_rad.to_degrees()
+            ),
+        ));
+    }
+    let stroke_m = [drive.stroke_at(0.0), drive.stroke_at(turn)];
+    let (screw, nominal_speed_mps) = screw_drive.screw_for(stroke_m[1] - stroke_m[0]);
+    // Long enough to carry the nut at the longest stroke, no longer: a screw's free end
+    // beyond the nut would sweep into the flap.
+    let screw_length_m = stroke_m[0].max(stroke_m[1]) + hw.nut_radius_m;
+    let layout = DroppedHingeScrewJack {
+        actuator_mount_m: mount,
+        actuator_clear,
+        actuator_attachment_m: attachment,
+        stroke_m,
+        min_transmission_angle_rad: min_transmission,
+        screw,
+        screw_length_m,
+        nominal_speed_mps,
+    };
+    Ok((drive, layout))
+}
+
 fn bodies_and_joints(
     spec: &DroppedHingeSpec,
     synthesis: &DroppedHingeSynthesis,
-    drive: &RockerDrive,
+    drive: &Drive,
 ) -> (Vec<Body>, Vec<Joint>) {
     let hw = &spec.hardware;
-    let (h, p) = (synthesis.hinge_m, synthesis.actuator_attachment_m);
+    let h = synthesis.hinge_m;
     let [forward, aft] = spec.flap_attachments;
     let turn = spec.landing.deflection_rad;
     let capsule = |name: &str, from, to| BodySolid::capsule(name, from, to, hw.link_radius_m);
-    // The screw takes hold of the forward arm, or of a horn below the hinge.
-    let on_horn = (p - forward).dot(&(h - forward)) > (h - forward).norm_squared();
-    let holder = if on_horn { "horn" } else { "arm-forward" };
     let mut flap_solids = vec![capsule("arm-forward", h, forward), capsule("arm-aft", h, aft)];
-    if on_horn {
-        flap_solids.push(capsule("horn", h, p));
-    }
-    let (screw_and_nut, jack_joints) = ScrewJackParts {
-        drive,
-        rotation_rad: turn,
-        screw_length_m: synthesis.screw_length_m,
-        screw_radius_m: synthesis.screw.mean_radius_m + 0.25 * synthesis.screw.lead_m,
-        hardware: hw,
-        indices: [FLAP, SCREW, NUT],
-        pivot: ("P", holder),
-    }
-    .build();
+    let mut support_solids = vec![
+        capsule("truss-forward", h, synthesis.support_points_m[0]),
+        capsule("truss-aft", h, synthesis.support_points_m[1]),
+    ];
+    let mut hinge_contacts = vec![("truss-forward", "arm-forward"), ("truss-aft", "arm-aft")];
+    let support = support_index(drive);
+    let mut actuator_bodies = Vec::new();
+    let mut actuator_joints = Vec::new();
+    let angular_per_input = match (drive, &synthesis.screw_jack) {
+        (Drive::Screw(rocker), Some(jack)) => {
+            // The screw takes hold of the forward arm, or of a horn below the hinge.
+            let p = jack.actuator_attachment_m;
+            let on_horn = (p - forward).dot(&(h - forward)) > (h - forward).norm_squared();
+            let holder = if on_horn { "horn" } else { "arm-forward" };
+            if on_horn {
+                flap_solids.push(capsule("horn", h, p));
+            }
+            (actuator_bodies, actuator_joints) = ScrewJackParts {
+                drive: rocker,
+                rotation_rad: turn,
+                screw_length_m: jack.screw_length_m,
+                screw_radius_m: jack.screw.mean_radius_m + 0.25 * jack.screw.lead_m,
+                hardware: hw,
+                indices: [FLAP, SCREW, NUT],
+                pivot: ("P", holder),
+            }
+            .build();
+            // Per metre of stroke (RockerDrive::rotation_rate_bound).
+            rocker.rotation_rate_bound(turn)
+        }
+        _ => {
+            // The geared rotary actuator's housing on the hinge, fixed to the truss; its
+            // output turns the arms by the input angle itself.
+            support_solids.push(BodySolid::capsule("rotary-actuator", h, h, hw.jack_body_radius_m));
+            hinge_contacts.extend([("rotary-actuator", "arm-forward"), ("rotary-actuator", "arm-aft")]);
+            1.0
+        }
+    };
     let mut bodies = vec![Body {
         name: "flap".into(),
         role: BodyRole::Flap,
@@ -332,29 +446,44 @@ fn bodies_and_joints(
         speed_bound: SpeedBound {
             reference: h,
             linear_per_input: 0.0,
-            // Per metre of stroke (RockerDrive::rotation_rate_bound).
-            angular_per_input: drive.rotation_rate_bound(turn),
+            angular_per_input,
         },
     }];
-    bodies.extend(screw_and_nut);
+    bodies.extend(actuator_bodies);
     bodies.push(Body {
         name: "support".into(),
         role: BodyRole::Support,
-        solids: vec![
-            capsule("truss-forward", h, synthesis.support_points_m[0]),
-            capsule("truss-aft", h, synthesis.support_points_m[1]),
-        ],
+        solids: support_solids,
         speed_bound: SpeedBound::FIXED,
     });
     let mut joints = vec![Joint::new(
         "H",
         "the flap's hinge on the support truss",
         JointGeometry::Revolute { at: h },
-        [JointEnd::Body(SUPPORT), JointEnd::Body(FLAP)],
-        &[("truss-forward", "arm-forward"), ("truss-aft", "arm-aft")],
+        [JointEnd::Body(support), JointEnd::Body(FLAP)],
+        &hinge_contacts,
     )];
-    joints.extend(jack_joints);
+    joints.extend(actuator_joints);
     (bodies, joints)
+}
+
+impl DroppedHinge {
+    /// The screw jack's drive triangle and layout, when a screw jack drives the hinge.
+    fn screw_jack(&self) -> Option<(&RockerDrive, &DroppedHingeScrewJack)> {
+        match (&self.drive, &self.synthesis.screw_jack) {
+            (Drive::Screw(rocker), Some(jack)) => Some((rocker, jack)),
+            _ => None,
+        }
+    }
+
+    /// The rotary actuator's input range: its output angle, stowed to landing.
+    fn angle_range(&self) -> InputRange {
+        InputRange {
+            quantity: InputQuantity::Angle,
+            stowed: 0.0,
+            deployed: self.spec.landing.deflection_rad,
+        }
+    }
 }
 
 impl FlapMechanism for DroppedHinge {
@@ -363,10 +492,13 @@ impl FlapMechanism for DroppedHinge {
     }
 
     fn input_range(&self) -> InputRange {
-        InputRange {
-            quantity: InputQuantity::Stroke,
-            stowed: self.synthesis.stroke_m[0],
-            deployed: self.synthesis.stroke_m[1],
+        match self.screw_jack() {
+            Some((_, jack)) => InputRange {
+                quantity: InputQuantity::Stroke,
+                stowed: jack.stroke_m[0],
+                deployed: jack.stroke_m[1],
+            },
+            None => self.angle_range(),
         }
     }
 
@@ -375,11 +507,17 @@ impl FlapMechanism for DroppedHinge {
     }
 
     fn input_at_deflection(&self, deflection_rad: f64) -> Result<f64> {
-        Ok(self.drive.stroke_at(deflection_rad))
+        Ok(match self.screw_jack() {
+            Some((rocker, _)) => rocker.stroke_at(deflection_rad),
+            None => deflection_rad,
+        })
     }
 
     fn deflection_at_input(&self, input: f64) -> Result<f64> {
-        Ok(self.drive.state(input)?.rotation_rad)
+        match self.screw_jack() {
+            Some((rocker, _)) => Ok(rocker.state(input)?.rotation_rad),
+            None => finite_angle(input),
+        }
     }
 
     /// The forward and aft attachments of the hinged structure.
@@ -408,78 +546,126 @@ impl FlapMechanism for DroppedHinge {
     }
 
     fn pose(&self, input: f64) -> Result<MechanismPose> {
-        let state = self.drive.state(input)?;
-        let (h, b0) = (self.synthesis.hinge_m, self.synthesis.actuator_mount_m);
-        let flap = turn_about(h, state.rotation_rad);
-        let (screw, nut) = self.drive.screw_and_nut(state.attachment);
+        let h = self.synthesis.hinge_m;
         let [forward, aft] = self.spec.flap_attachments;
-        let points = [
+        let mut points = vec![
             ("H", h, true),
-            ("B0", b0, true),
             ("S1", self.synthesis.support_points_m[0], true),
             ("S2", self.synthesis.support_points_m[1], true),
-            ("P", state.attachment, false),
+        ];
+        let (rotation_rad, mut bodies) = match self.screw_jack() {
+            Some((rocker, jack)) => {
+                let state = rocker.state(input)?;
+                let (screw, nut) = rocker.screw_and_nut(state.attachment);
+                points.extend([("B0", jack.actuator_mount_m, true), ("P", state.attachment, false)]);
+                (state.rotation_rad, vec![screw, nut])
+            }
+            None => (finite_angle(input)?, Vec::new()),
+        };
+        let flap = turn_about(h, rotation_rad);
+        points.extend([
             ("F1", flap * forward, false),
             ("F2", flap * aft, false),
             ("D", flap * self.spec.flap_mass.centre_of_mass_stowed_m, false),
-        ]
-        .into_iter()
-        .map(|(name, position, fixed)| NamedPoint { name, position, fixed })
-        .collect();
+        ]);
+        bodies.insert(FLAP, flap);
+        bodies.push(Isometry2::identity());
         Ok(MechanismPose {
-            deflection_rad: state.rotation_rad,
+            deflection_rad: rotation_rad,
             input,
-            bodies: vec![flap, screw, nut, Isometry2::identity()],
+            bodies,
             flap,
-            points,
+            points: points
+                .into_iter()
+                .map(|(name, position, fixed)| NamedPoint { name, position, fixed })
+                .collect(),
         })
     }
 
     fn kinetostatics(&self, input: f64, load: &LoadCase) -> Result<Kinetostatics> {
-        let state = self.drive.state(input)?;
         let h = self.synthesis.hinge_m;
-        let flap = turn_about(h, state.rotation_rad);
         let fraction = self.input_range().fraction(input).clamp(0.0, 1.0);
+        // The actuator's load by moments about H, the hinge's reaction, dψ/dq, and the
+        // actuator's own reactions, transmission and health.
+        let (rotation_rad, load_n, hinge_reaction, rate, drive_reactions, transmission, health, screw_torques) =
+            match self.screw_jack() {
+                Some((rocker, jack)) => {
+                    let state = rocker.state(input)?;
+                    let flap = turn_about(h, state.rotation_rad);
+                    let wrench = FlapWrench::new(&self.spec.flap_mass, &flap, load, fraction);
+                    let p = state.attachment;
+                    let u = (p - jack.actuator_mount_m).normalize();
+                    let force = -wrench.moment_about(h) / cross(p - h, u);
+                    let hinge_reaction: Vector2<f64> = -(u * force + wrench.force_n());
+                    (
+                        state.rotation_rad,
+                        force,
+                        hinge_reaction,
+                        // dψ/ds from the drive's triangle.
+                        state.rotation_per_stroke,
+                        vec![("B0".to_string(), force), ("P".to_string(), force)],
+                        state.transmission_angle_rad,
+                        PoseHealth {
+                            closure_residual_m: state.closure_residual_m,
+                            jacobian_condition_number: state.jacobian_condition_number,
+                            distance_to_toggle_rad: state.transmission_angle_rad,
+                        },
+                        Some(jack.screw.torques(force)),
+                    )
+                }
+                None => {
+                    // The rotary actuator turns the arms about H directly: no toggle, no
+                    // closure; its torque balances the applied moment about H.
+                    let rotation_rad = finite_angle(input)?;
+                    let flap = turn_about(h, rotation_rad);
+                    let wrench = FlapWrench::new(&self.spec.flap_mass, &flap, load, fraction);
+                    let right_angle = std::f64::consts::FRAC_PI_2;
+                    (
+                        rotation_rad,
+                        -wrench.moment_about(h),
+                        -wrench.force_n(),
+                        1.0,
+                        Vec::new(),
+                        right_angle,
+                        PoseHealth {
+                            closure_residual_m: 0.0,
+                            jacobian_condition_number: 1.0,
+                            distance_to_toggle_rad: right_angle,
+                        },
+                        None,
+                    )
+                }
+            };
+        // Virtual work, independently of the moments: Q dq + Σ f · dp + C dψ = 0.
+        let flap = turn_about(h, rotation_rad);
         let wrench = FlapWrench::new(&self.spec.flap_mass, &flap, load, fraction);
-        let p = state.attachment;
-        let u = (p - self.synthesis.actuator_mount_m).normalize();
-        let force = -wrench.moment_about(h) / cross(p - h, u);
-        let hinge_reaction: Vector2<f64> = -(u * force + wrench.force_n());
-        // Virtual work: F ds + Σ f · dp + C dψ = 0 with dψ/ds from the drive's triangle.
-        let rate = state.rotation_per_stroke;
         let velocity_of = |point: Point2<f64>| {
             let r = point - h;
             Vector2::new(-r.y, r.x) * rate
         };
-        let force_virtual_work = -wrench.power(velocity_of, rate);
+        let load_virtual_work = -wrench.power(velocity_of, rate);
+        // The truss members' axial forces (tension positive): at the hinge node they balance
+        // the flap's push, sum t_i u_i = R_H with u_i towards each member's wing end.
+        let [s1, s2] = self.synthesis.support_points_m;
+        let (u1, u2) = ((s1 - h).normalize(), (s2 - h).normalize());
+        let det = cross(u1, u2);
+        let (t1, t2) = (cross(hinge_reaction, u2) / det, cross(u1, hinge_reaction) / det);
+        let mut reactions = drive_reactions;
+        reactions.extend([
+            ("H".to_string(), hinge_reaction.norm()),
+            ("truss-aft".to_string(), t2),
+            ("truss-forward".to_string(), t1),
+        ]);
+        reactions.sort_by(|a, b| a.0.cmp(&b.0));
         Ok(Kinetostatics {
             input,
-            deflection_rad: state.rotation_rad,
-            actuator_load: force,
-            actuator_load_virtual_work: force_virtual_work,
-            reactions: {
-                // The truss members' axial forces (tension positive): at the hinge node they
-                // balance the flap's push, sum t_i u_i = R_H with u_i towards each member's
-                // wing end.
-                let [s1, s2] = self.synthesis.support_points_m;
-                let (u1, u2) = ((s1 - h).normalize(), (s2 - h).normalize());
-                let det = cross(u1, u2);
-                let (t1, t2) = (cross(hinge_reaction, u2) / det, cross(u1, hinge_reaction) / det);
-                vec![
-                    ("B0".into(), force),
-                    ("H".into(), hinge_reaction.norm()),
-                    ("P".into(), force),
-                    ("truss-aft".into(), t2),
-                    ("truss-forward".into(), t1),
-                ]
-            },
-            transmission_angle_rad: state.transmission_angle_rad,
-            health: PoseHealth {
-                closure_residual_m: state.closure_residual_m,
-                jacobian_condition_number: state.jacobian_condition_number,
-                distance_to_toggle_rad: state.transmission_angle_rad,
-            },
-            screw_torques: Some(self.synthesis.screw.torques(force)),
+            deflection_rad: rotation_rad,
+            actuator_load: load_n,
+            actuator_load_virtual_work: load_virtual_work,
+            reactions,
+            transmission_angle_rad: transmission,
+            health,
+            screw_torques,
         })
     }
 
@@ -489,16 +675,29 @@ impl FlapMechanism for DroppedHinge {
         let forward = self.spec.flap_attachments[0];
         let radius = (forward - h).norm();
         let start = (forward - h).y.atan2((forward - h).x);
-        DrawingNotes {
-            summary: format!(
-                "dropped hinge with screw jack; stroke {:.1} -> {:.1} mm",
-                s.stroke_m[0] * 1e3,
-                s.stroke_m[1] * 1e3
+        let (summary, dimensions) = match self.screw_jack() {
+            Some((_, jack)) => (
+                format!(
+                    "dropped hinge with screw jack; stroke {:.1} -> {:.1} mm",
+                    jack.stroke_m[0] * 1e3,
+                    jack.stroke_m[1] * 1e3
+                ),
+                vec![
+                    ("H-P".into(), h, jack.actuator_attachment_m),
+                    ("B0-P".into(), jack.actuator_mount_m, jack.actuator_attachment_m),
+                ],
             ),
-            dimensions: vec![
-                ("H-P".into(), h, s.actuator_attachment_m),
-                ("B0-P".into(), s.actuator_mount_m, s.actuator_attachment_m),
-            ],
+            None => (
+                format!(
+                    "dropped hinge with geared rotary actuator on the hinge; gear ratio {:.0}:1",
+                    self.actuator().shaft_angle_per_input()
+                ),
+                vec![("H-F1".into(), h, forward)],
+            ),
+        };
+        DrawingNotes {
+            summary,
+            dimensions,
             arcs: vec![(
                 "F1 about H".into(),
                 h,
@@ -518,11 +717,7 @@ impl FlapMechanism for DroppedHinge {
     }
 
     fn actuator(&self) -> Actuator {
-        Actuator::ScrewJack {
-            screw: self.synthesis.screw,
-            screw_length_m: self.synthesis.screw_length_m,
-            nominal_speed_mps: self.synthesis.nominal_speed_mps,
-        }
+        self.actuator
     }
 
     /// The support truss's two members (the arms are part of the flap's hinged structure).
@@ -548,7 +743,7 @@ impl FlapMechanism for DroppedHinge {
                 at.to_degrees()
             ));
         }
-        if !self.synthesis.actuator_clear {
+        if self.screw_jack().is_some_and(|(_, jack)| !jack.actuator_clear) {
             warnings.push("no default place of the screw jack kept clear of the wing, the structure and the flap at the sampled poses; give actuator_mount_m".into());
         }
         if !self.synthesis.placement_clear {

@@ -118,6 +118,18 @@ impl RockerDrive {
         largest_stroke / (a1 * a2 * smallest_sine)
     }
 
+    /// The smallest transmission angle (rad) at `samples` + 1 rotations evenly from 0 to
+    /// `rotation_rad` (0 where a sample fails: a toggle).
+    pub fn min_transmission_rad(&self, rotation_rad: f64, samples: usize) -> f64 {
+        (0..=samples)
+            .map(|k| {
+                let psi = rotation_rad * k as f64 / samples as f64;
+                self.state(self.stroke_at(psi))
+                    .map_or(0.0, |state| state.transmission_angle_rad)
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
     /// True when the body turns from 0 to `rotation_rad` without the screw passing through
     /// the pivot's line (a toggle): γ stays inside (0, π) with `margin_rad` to spare.
     pub fn clear_of_toggles(&self, rotation_rad: f64, margin_rad: f64) -> bool {

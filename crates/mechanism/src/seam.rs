@@ -100,6 +100,88 @@ pub enum Actuator {
         /// Nominal nut speed (m/s): with the lead, the drive shaft's speed.
         nominal_speed_mps: f64,
     },
+    /// A geared rotary actuator (`003_...` Fig. 6): the drive shaft turns `gear_ratio`
+    /// times the output; the input is the output's angle (rad).
+    Rotary {
+        /// Drive-shaft angle per output angle.
+        gear_ratio: f64,
+        /// The gearing's mechanical efficiency, in (0, 1].
+        efficiency: f64,
+        /// Nominal output speed (rad/s).
+        nominal_speed_radps: f64,
+    },
+}
+
+/// Torques on an actuator's drive shaft for one actuator load: the drive stage's view of
+/// every actuator type.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ShaftTorques {
+    /// Torque to deploy against the load (N m).
+    pub raise_torque_nm: f64,
+    /// Torque to retract with the load (N m); positive: the actuator must be driven to
+    /// retract (it holds its load by itself), negative: the load back-drives it.
+    pub lower_torque_nm: f64,
+}
+
+impl Actuator {
+    /// Drive-shaft angle per unit input (rad per m of stroke, or per rad of output).
+    pub fn shaft_angle_per_input(&self) -> f64 {
+        match self {
+            Actuator::ScrewJack { screw, .. } => 2.0 * std::f64::consts::PI / screw.lead_m,
+            Actuator::Rotary { gear_ratio, .. } => *gear_ratio,
+        }
+    }
+
+    /// Nominal input speed (m/s or rad/s).
+    pub fn nominal_input_speed(&self) -> f64 {
+        match self {
+            Actuator::ScrewJack { nominal_speed_mps, .. } => *nominal_speed_mps,
+            Actuator::Rotary {
+                nominal_speed_radps, ..
+            } => *nominal_speed_radps,
+        }
+    }
+
+    /// Nominal drive-shaft speed (rad/s).
+    pub fn shaft_speed_radps(&self) -> f64 {
+        self.nominal_input_speed() * self.shaft_angle_per_input()
+    }
+
+    /// The drive-shaft torques for actuator load `load` (N along the stroke, or N m about
+    /// the output; positive resisting deployment). A screw jack: thesis eqs. 3.6.9-10. A
+    /// geared rotary actuator of ratio N and efficiency η: power flows from the shaft when
+    /// the load resists the motion, T/(N η), and back from the load when it aids it,
+    /// T η / N, so deploying takes T/(N η) for T > 0 and retracting -T η / N.
+    pub fn shaft_torques(&self, load: f64) -> ShaftTorques {
+        match self {
+            Actuator::ScrewJack { screw, .. } => {
+                let torques = screw.torques(load);
+                ShaftTorques {
+                    raise_torque_nm: torques.raise_torque_nm,
+                    lower_torque_nm: torques.lower_torque_nm,
+                }
+            }
+            Actuator::Rotary {
+                gear_ratio, efficiency, ..
+            } => {
+                let through = |driving: f64| if driving > 0.0 { 1.0 / efficiency } else { *efficiency };
+                ShaftTorques {
+                    raise_torque_nm: load * through(load) / gear_ratio,
+                    lower_torque_nm: -load * through(-load) / gear_ratio,
+                }
+            }
+        }
+    }
+
+    /// True when the actuator holds any load by itself: a screw whose friction exceeds its
+    /// lead angle; a geared rotary actuator is taken as reversible (it needs a no-back
+    /// brake).
+    pub fn self_locking(&self) -> bool {
+        match self {
+            Actuator::ScrewJack { screw, .. } => screw.is_self_locking(),
+            Actuator::Rotary { .. } => false,
+        }
+    }
 }
 
 /// What a body is for: the interference check's pair policy, the drawings' styles and the

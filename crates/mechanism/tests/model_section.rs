@@ -3,9 +3,9 @@
 //! `003_...` 5.2 (take-off 15 deg, 0.5 %c gap, 3 %c overlap; landing 35 deg, 2 %c gap,
 //! 0 %c overlap).
 
-use flapwright_mechanism::dropped_hinge::DroppedHingeSpec;
+use flapwright_mechanism::dropped_hinge::{DroppedHingeActuator, DroppedHingeSpec};
 use flapwright_mechanism::four_bar::FourBarSpec;
-use flapwright_mechanism::{FlapMass, LinkHardware, PrecisionPosition, ScrewDrive, StationOutline};
+use flapwright_mechanism::{FlapMass, LinkHardware, PrecisionPosition, RotaryDrive, ScrewDrive, StationOutline};
 use flapwright_planes::FlapBehindWing;
 use nalgebra::Point2;
 
@@ -81,15 +81,29 @@ pub fn dropped_hinge_spec() -> DroppedHingeSpec {
             outline.flap_lower_point(0.15).unwrap(),
             outline.flap_lower_point(0.5).unwrap(),
         ],
-        actuator_attachment_fraction: 0.5,
-        actuator_mount: None,
-        actuator_standoff_m: 0.4,
+        actuator: DroppedHingeActuator::ScrewJack {
+            attachment_fraction: 0.5,
+            mount: None,
+            standoff_m: 0.4,
+            drive: drive(),
+        },
         support_points: None,
         flap_mass: flap_mass(),
-        screw_drive: drive(),
         min_transmission_angle_rad: 30f64.to_radians(),
         hardware: LinkHardware::for_flap_chord(0.8),
         outline,
+    }
+}
+
+/// The same dropped hinge driven by a geared rotary actuator on the hinge.
+pub fn rotary_dropped_hinge_spec() -> DroppedHingeSpec {
+    DroppedHingeSpec {
+        actuator: DroppedHingeActuator::Rotary(RotaryDrive {
+            turns: 30.0,
+            deployment_time_s: 20.0,
+            efficiency: 0.9,
+        }),
+        ..dropped_hinge_spec()
     }
 }
 

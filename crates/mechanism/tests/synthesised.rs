@@ -10,7 +10,7 @@ use nalgebra::{Isometry2, Point2};
 #[path = "model_section.rs"]
 mod model_section;
 
-use model_section::{dropped_hinge_spec, four_bar_spec};
+use model_section::{dropped_hinge_spec, four_bar_spec, rotary_dropped_hinge_spec};
 
 fn landing_load() -> LoadCase {
     LoadCase {
@@ -77,6 +77,7 @@ fn four_bar_meets_its_three_precision_positions() {
 fn statics_and_virtual_work_agree() {
     let kinds: Vec<Box<dyn FlapMechanism>> = vec![
         Box::new(DroppedHinge::synthesise(dropped_hinge_spec()).unwrap()),
+        Box::new(DroppedHinge::synthesise(rotary_dropped_hinge_spec()).unwrap()),
         Box::new(FourBar::synthesise(four_bar_spec()).unwrap()),
     ];
     // A flight condition's normal force at the quarter chord, C_N rising with deflection.
@@ -249,6 +250,50 @@ fn dropped_hinge_truss_forces_balance_the_whole_mechanism() {
     }
 }
 
+/// With a geared rotary actuator on the hinge the dropped hinge is the same hinge (the
+/// pole), its input the turn itself: stowed and landing met, no screw or nut; its torque
+/// and the truss forces hold the flap in force and in moment (the torque a couple on the
+/// flap, the truss forces at their wing ends), and the drive shaft turns `turns` times.
+#[test]
+fn rotary_dropped_hinge_turns_about_the_same_hinge_and_balances() {
+    let screw = DroppedHinge::synthesise(dropped_hinge_spec()).unwrap();
+    let rotary = DroppedHinge::synthesise(rotary_dropped_hinge_spec()).unwrap();
+    assert_eq!(screw.synthesis().hinge_m, rotary.synthesis().hinge_m);
+    let landing = rotary_dropped_hinge_spec().landing;
+    assert!(miss(&rotary, &PrecisionPosition::stowed()) < 1e-9);
+    assert!(miss(&rotary, &landing) < 1e-9);
+    let range = rotary.input_range();
+    assert_eq!(range.quantity, flapwright_mechanism::seam::InputQuantity::Angle);
+    assert!((range.deployed - landing.deflection_rad).abs() < 1e-15);
+    let actuator = rotary.actuator();
+    let shaft_turns = range.travel() * actuator.shaft_angle_per_input() / std::f64::consts::TAU;
+    assert!((shaft_turns - 30.0).abs() < 1e-9, "{shaft_turns}");
+    assert_eq!(rotary.bodies().len(), 2, "flap and support only");
+    let load = landing_load();
+    let mass = rotary_dropped_hinge_spec().flap_mass;
+    for input in range.samples(9) {
+        let pose = rotary.pose(input).unwrap();
+        assert!(pose.point("B0").is_none() && pose.point("P").is_none());
+        let loads = rotary.kinetostatics(input, &load).unwrap();
+        assert!(loads.screw_torques.is_none());
+        let reaction = |name: &str| loads.reactions.iter().find(|(n, _)| n == name).unwrap().1;
+        let point = |name: &str| pose.point(name).unwrap();
+        let (h, s1, s2, d) = (point("H"), point("S1"), point("S2"), point("D"));
+        let weight = mass.gravity_mps2 * mass.mass_kg;
+        let couple = -load.external_moment.at(range.fraction(input)) + loads.actuator_load;
+        let forces = [
+            (d, weight),
+            (s1, (s1 - h).normalize() * reaction("truss-forward")),
+            (s2, (s2 - h).normalize() * reaction("truss-aft")),
+        ];
+        let net: nalgebra::Vector2<f64> = forces.iter().map(|(_, f)| f).sum();
+        let moment: f64 = forces.iter().map(|(at, f)| at.coords.perp(f)).sum::<f64>() + couple;
+        let scale = loads.actuator_load.abs().max(1.0);
+        assert!(net.norm() < 1e-9 * scale, "net force {net}");
+        assert!(moment.abs() < 1e-9 * scale, "net moment {moment}");
+    }
+}
+
 /// A four-bar driven towards a toggle is reported with the input where it happens: the
 /// search's own pivots, given back with a minimum transmission angle above the loop's
 /// smallest, fail as a toggle at a named crank angle inside the deployment.
@@ -278,6 +323,7 @@ fn a_four_bar_driven_into_a_toggle_is_reported_with_its_input() {
 fn synthesised_kinds_keep_the_seams_promises() {
     let kinds: Vec<Box<dyn FlapMechanism>> = vec![
         Box::new(DroppedHinge::synthesise(dropped_hinge_spec()).unwrap()),
+        Box::new(DroppedHinge::synthesise(rotary_dropped_hinge_spec()).unwrap()),
         Box::new(FourBar::synthesise(four_bar_spec()).unwrap()),
     ];
     for mechanism in &kinds {

@@ -49,12 +49,12 @@ pub enum SizingWarning {
         /// Rod name.
         rod: String,
     },
-    /// The screw jack is not self-locking: the lowering torque is not positive, so the
-    /// load back-drives the screw and a brake is needed.
+    /// The actuator (a screw jack, or a geared rotary actuator) is not self-locking: the
+    /// lowering torque is not positive, so the load back-drives it and a brake is needed.
     NotSelfLocking {
         /// Station name.
         station: String,
-        /// Screw jack name.
+        /// Actuator name (`screw-jack`, `rotary-actuator`).
         screw_jack: String,
         /// Lowering torque given, N m (thesis `000` eq 3.6.10 sign).
         lower_torque_nm: f64,
@@ -92,7 +92,7 @@ impl std::fmt::Display for SizingWarning {
             Self::UnloadedRod { station, rod } => write!(f, "station {station}, rod {rod}: carries no load"),
             Self::NotSelfLocking { station, screw_jack, lower_torque_nm } => write!(
                 f,
-                "station {station}, screw jack {screw_jack}: not self-locking (lowering torque {lower_torque_nm:.3} N m: the load back-drives the screw)"
+                "station {station}, {screw_jack}: not self-locking (lowering torque {lower_torque_nm:.3} N m on the drive shaft: the load back-drives it)"
             ),
             Self::TorqueTubeExceedsEnvelope { station, required_outer_radius_m, allowed_outer_radius_m } => write!(
                 f,

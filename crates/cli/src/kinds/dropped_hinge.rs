@@ -3,11 +3,11 @@
 
 use std::sync::Arc;
 
-use flapwright_mechanism::{DroppedHinge, DroppedHingeSpec, FlapMechanism};
+use flapwright_mechanism::{DroppedHinge, DroppedHingeActuator, DroppedHingeSpec, FlapMechanism};
 use nalgebra::Point2;
 use serde::Deserialize;
 
-use super::{check_synthesised, KindScene, ScrewDriveScene, SynthesisContext};
+use super::{check_synthesised, ActuatorChoice, KindScene, RotaryDriveScene, ScrewDriveScene, SynthesisContext};
 use crate::scene::KeyChecker;
 
 /// `[station.mechanism]` with `kind = "dropped-hinge"` (station frame, m).
@@ -35,9 +35,16 @@ pub struct DroppedHingeScene {
     /// Smallest transmission angle of the screw over the deployment, deg.
     #[serde(default = "default_transmission")]
     pub min_transmission_angle_deg: f64,
+    /// The actuator: `"screw-jack"` (default) or `"rotary"` (a geared rotary actuator on
+    /// the hinge).
+    #[serde(default)]
+    pub actuator: ActuatorChoice,
     /// The screw jack's thread and the shared drive.
     #[serde(default)]
     pub screw: ScrewDriveScene,
+    /// The rotary actuator's gearing and the shared drive.
+    #[serde(default)]
+    pub rotary: RotaryDriveScene,
 }
 
 pub(super) fn default_attachments() -> [f64; 2] {
@@ -91,7 +98,14 @@ impl KindScene for DroppedHingeScene {
         );
         if let Some(mount) = &self.actuator_mount_m {
             checker.point_within(&format!("{path}.actuator_mount_m"), mount);
+            if self.actuator == ActuatorChoice::Rotary {
+                checker.fail(
+                    &format!("{path}.actuator_mount_m"),
+                    "places a screw jack's mount, and actuator = \"rotary\" puts a geared rotary actuator on the hinge: remove it, or use actuator = \"screw-jack\"".into(),
+                );
+            }
         }
+        self.rotary.check(checker, path);
         for (k, support) in self.support_points_m.iter().flatten().enumerate() {
             checker.point_within(&format!("{path}.support_points_m[{k}]"), support);
         }
@@ -101,7 +115,8 @@ impl KindScene for DroppedHingeScene {
         None
     }
 
-    /// Two arms, screw, jack body and nut move; two truss members are fixed.
+    /// Two arms, screw, jack body and nut move (a rotary actuator: the arms); two truss
+    /// members are fixed.
     fn moving_parts(&self) -> usize {
         7
     }
@@ -121,12 +136,17 @@ impl KindScene for DroppedHingeScene {
             landing: flap.landing,
             takeoff: Some(flap.takeoff),
             flap_attachments,
-            actuator_attachment_fraction: self.actuator_attachment_fraction,
-            actuator_mount: self.actuator_mount_m.map(point),
-            actuator_standoff_m: 0.5 * flap.flap_chord_m,
+            actuator: match self.actuator {
+                ActuatorChoice::ScrewJack => DroppedHingeActuator::ScrewJack {
+                    attachment_fraction: self.actuator_attachment_fraction,
+                    mount: self.actuator_mount_m.map(point),
+                    standoff_m: 0.5 * flap.flap_chord_m,
+                    drive: self.screw.drive(),
+                },
+                ActuatorChoice::Rotary => DroppedHingeActuator::Rotary(self.rotary.drive()),
+            },
             support_points: self.support_points_m.map(|[a, b]| [point(a), point(b)]),
             flap_mass: flap.mass,
-            screw_drive: self.screw.drive(),
             min_transmission_angle_rad: self.min_transmission_angle_deg.to_radians(),
             hardware: flap.hardware,
             outline: flap.outline.clone(),
@@ -137,6 +157,6 @@ impl KindScene for DroppedHingeScene {
     }
 
     fn geometry_keys(&self) -> &'static str {
-        "the flap's landing setting, attachment_chord_fractions, actuator_attachment_fraction and actuator_mount_m"
+        "the flap's landing setting, attachment_chord_fractions, actuator, actuator_attachment_fraction and actuator_mount_m"
     }
 }

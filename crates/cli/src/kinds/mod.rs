@@ -175,6 +175,69 @@ impl ScrewDriveScene {
     }
 }
 
+/// `actuator = "..."` of a kind that may take either (`003_...` Fig. 6).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ActuatorChoice {
+    /// A screw jack (linear actuator): `screw = { ... }`.
+    #[default]
+    ScrewJack,
+    /// A geared rotary actuator: `rotary = { ... }`.
+    Rotary,
+}
+
+/// `rotary = { ... }`: a geared rotary actuator's gearing and the drive it shares with
+/// every station on one torque tube (its gear ratio is the shaft's turns over its output's
+/// travel, as a screw's lead is its stroke over the turns).
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct RotaryDriveScene {
+    /// Drive-shaft turns over the deployment: the same at every station of one drive.
+    pub turns: f64,
+    /// Deployment time at the nominal drive speed, s.
+    pub deployment_time_s: f64,
+    /// The gearing's mechanical efficiency.
+    pub efficiency: f64,
+}
+
+impl Default for RotaryDriveScene {
+    /// The screw drive's 40 turns in 20 s, so that screw jacks and rotary actuators share
+    /// a torque tube by default; 0.9 for a compound planetary gearbox (ASSUMPTION: 003
+    /// gives no value; such gearboxes are quoted at 0.85-0.95).
+    fn default() -> Self {
+        Self {
+            turns: 40.0,
+            deployment_time_s: 20.0,
+            efficiency: 0.9,
+        }
+    }
+}
+
+/// A gearbox's efficiency.
+const GEAR_EFFICIENCY: (f64, f64) = (0.1, 1.0);
+
+impl RotaryDriveScene {
+    /// Checks the keys under `{path}.rotary`.
+    pub fn check(&self, checker: &mut dyn KeyChecker, path: &str) {
+        for (key, value, (min, max)) in [
+            ("turns", self.turns, SCREW_TURNS),
+            ("deployment_time_s", self.deployment_time_s, DEPLOYMENT_TIME_S),
+            ("efficiency", self.efficiency, GEAR_EFFICIENCY),
+        ] {
+            checker.in_range(&format!("{path}.rotary.{key}"), value, min, max, false);
+        }
+    }
+
+    /// The drive as the mechanism crate takes it.
+    pub fn drive(&self) -> flapwright_mechanism::RotaryDrive {
+        flapwright_mechanism::RotaryDrive {
+            turns: self.turns,
+            deployment_time_s: self.deployment_time_s,
+            efficiency: self.efficiency,
+        }
+    }
+}
+
 /// The keys every kind synthesised from the settings has: flap mass and centre of mass,
 /// minimum transmission angle, the screw drive.
 fn check_synthesised(

@@ -1,6 +1,7 @@
 //! Mechanism stage: synthesise each station's mechanism and sweep it under every load case.
 
 use anyhow::Result;
+use std::f64::consts::TAU;
 use std::sync::Arc;
 
 use flapwright_mechanism::seam::{Actuator, InputQuantity, InputRange};
@@ -12,6 +13,7 @@ use flapwright_planes::FlapBehindWing;
 
 use crate::kinds::SynthesisContext;
 use crate::pipeline::flap_position::{self, FlapPositionReport};
+
 use crate::pipeline::stations::PlacedStation;
 use crate::scene::{Problem, Scene, SceneError};
 
@@ -185,34 +187,36 @@ pub const MAX_CONDITION_NUMBER: f64 = 1e8;
 pub const MIN_DISTANCE_TO_TOGGLE_DEG: f64 = 1.0;
 
 /// One torque tube turns every actuator together, so the stations' deployments must run
-/// in step: for screw jacks, every screw turns at one speed (nut speed / lead equal) and
-/// the same number of turns over the deployment (stroke / lead equal), so that every
-/// station is at the same fraction of its stroke at every shaft angle, as the whole-wing
-/// stages assume (the drive fraction of `flapwright_mechanism::seam`).
+/// in step: every drive shaft turns at one speed (for a screw jack nut speed / lead, for a
+/// rotary actuator output speed x gear ratio) and the same number of turns over the
+/// deployment, so that every station is at the same fraction of its input at every shaft
+/// angle, as the whole-wing stages assume (the drive fraction of
+/// `flapwright_mechanism::seam`).
 fn one_drive_speed(mechanisms: &[StationRecord]) -> Vec<Problem> {
     let screw = |m: &StationRecord| {
-        let Actuator::ScrewJack {
-            screw,
-            nominal_speed_mps,
-            ..
-        } = m.mechanism.actuator();
-        let turns = m.mechanism.input_range().travel().abs() / screw.lead_m;
-        (nominal_speed_mps / screw.lead_m, turns)
+        let actuator = m.mechanism.actuator();
+        let turns = m.mechanism.input_range().travel().abs() * actuator.shaft_angle_per_input() / TAU;
+        let what = match actuator {
+            Actuator::ScrewJack { .. } => "its screw turns {} rev/s at its nominal nut speed",
+            Actuator::Rotary { .. } => "its rotary actuator's drive shaft turns {} rev/s at its nominal speed",
+        };
+        (actuator.shaft_speed_radps() / TAU, turns, what)
     };
     let Some(first) = mechanisms.first() else {
         return Vec::new();
     };
-    let (first_speed, first_turns) = screw(first);
+    let (first_speed, first_turns, _) = screw(first);
     let differ = |a: f64, b: f64| (a - b).abs() > 1e-6 * b.abs();
     let mut problems = Vec::new();
     for m in &mechanisms[1..] {
-        let (speed, turns) = screw(m);
+        let (speed, turns, what) = screw(m);
         let path = format!("station[{}].mechanism", m.index);
         if differ(speed, first_speed) {
             problems.push(Problem::new(
                 path.clone(),
                 format!(
-                    "its screw turns {speed:.4} rev/s at its nominal nut speed, station {}'s {first_speed:.4} rev/s; one torque tube drives every screw at one speed: make nut_speed_mps / screw_lead_m equal",
+                    "{}, station {}'s {first_speed:.4} rev/s; one torque tube drives every screw at one speed: make nut_speed_mps / screw_lead_m equal (synthesised kinds: screw.turns / screw.deployment_time_s)",
+                    what.replace("{}", &format!("{speed:.4}")),
                     first.station
                 ),
             ));
@@ -221,7 +225,7 @@ fn one_drive_speed(mechanisms: &[StationRecord]) -> Vec<Problem> {
             problems.push(Problem::new(
                 path,
                 format!(
-                    "its screw turns {turns:.3} times over the deployment, station {}'s {first_turns:.3}; one torque tube turns every screw together, so the stations would not finish together: make the nut stroke / screw_lead_m equal",
+                    "its screw turns {turns:.3} times over the deployment, station {}'s {first_turns:.3}; one torque tube turns every screw together, so the stations would not finish together: make the nut stroke / screw_lead_m equal (synthesised kinds: screw.turns)",
                     first.station
                 ),
             ));

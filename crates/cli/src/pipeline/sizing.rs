@@ -60,10 +60,8 @@ pub fn size_all(
     let mut jacks: Vec<Option<ScrewJackSizing>> = Vec::new();
     let mut notes = Vec::new();
     for (mechanism, report) in mechanisms.iter().zip(&reports) {
-        // Sizing is written per actuator type; a new type is a new arm here.
-        let Actuator::ScrewJack {
-            screw, screw_length_m, ..
-        } = mechanism.mechanism.actuator();
+        // Sizing is written per actuator type, never per kind.
+        let actuator = mechanism.mechanism.actuator();
         let samples: Vec<&DeploymentSample> = report
             .iter()
             .flat_map(|r| r.load_cases.iter())
@@ -78,8 +76,8 @@ pub fn size_all(
             continue;
         }
         let forces: Vec<f64> = samples.iter().map(|s| s.actuator_load).collect();
-        // The track's actuator is a screw jack: every sample has its torques.
-        let torques: Vec<_> = samples.iter().filter_map(|s| s.screw_torques_nm).collect();
+        // The drive shaft's torques at every sample.
+        let torques: Vec<_> = forces.iter().map(|&f| actuator.shaft_torques(f)).collect();
         let max_raise = torques
             .iter()
             .map(|t| t.raise_torque_nm)
@@ -90,25 +88,34 @@ pub fn size_all(
             .fold(f64::NEG_INFINITY, f64::max);
         // The smallest lowering torque decides self-locking over the whole deployment.
         let min_lower = torques.iter().map(|t| t.lower_torque_nm).fold(f64::INFINITY, f64::min);
+        let name = match actuator {
+            Actuator::ScrewJack { .. } => "screw-jack",
+            Actuator::Rotary { .. } => "rotary-actuator",
+        };
         let jack = size_screw_jack(
             &ScrewJackInput {
                 station: mechanism.station.clone(),
-                name: "screw-jack".into(),
+                name: name.into(),
                 max_raise_torque_nm: max_raise,
                 max_lower_torque_nm: max_lower,
                 min_lower_torque_nm: min_lower,
-                thread_self_locking: screw.is_self_locking(),
+                thread_self_locking: actuator.self_locking(),
             },
             safety_factor,
         )?;
         jacks.push(Some(jack));
-        // F_input > 0 pushes the nut away from B0: the screw is in compression.
-        let axial: Vec<f64> = forces.iter().map(|f| -f * safety_factor).collect();
-        let (tension, compression) = axial_envelope_n(&axial)?;
-        let mut rod = RodInput::new(mechanism.station.clone(), "screw", screw_length_m, tension, compression);
-        rod.end_fixity_factor = scene.sizing.screw_end_fixity_factor;
-        rod.max_outer_radius_m = Some(screw.mean_radius_m);
-        rods.push(size_rod(&rod, &screw_material)?);
+        if let Actuator::ScrewJack {
+            screw, screw_length_m, ..
+        } = actuator
+        {
+            // F_input > 0 pushes the nut away from B0: the screw is in compression.
+            let axial: Vec<f64> = forces.iter().map(|f| -f * safety_factor).collect();
+            let (tension, compression) = axial_envelope_n(&axial)?;
+            let mut rod = RodInput::new(mechanism.station.clone(), "screw", screw_length_m, tension, compression);
+            rod.end_fixity_factor = scene.sizing.screw_end_fixity_factor;
+            rod.max_outer_radius_m = Some(screw.mean_radius_m);
+            rods.push(size_rod(&rod, &screw_material)?);
+        }
         // Two-force members from their axial forces (tension positive) in every sample.
         for member in mechanism.mechanism.members() {
             let axial: Vec<f64> = samples
@@ -168,13 +175,8 @@ pub fn size_all(
             SectionShape::Solid
         };
         tubes = size_torque_tubes(&inputs, scene.sizing.gearbox_efficiency, shape, &tube_material)?;
-        // All screws turn together: drive speed = nut speed / lead turns per second.
-        let Actuator::ScrewJack {
-            screw,
-            nominal_speed_mps,
-            ..
-        } = mechanisms[order[0].0].mechanism.actuator();
-        let angular_speed = 2.0 * std::f64::consts::PI * nominal_speed_mps / screw.lead_m;
+        // All actuators' drive shafts turn together, at the first one's speed.
+        let angular_speed = mechanisms[order[0].0].mechanism.actuator().shaft_speed_radps();
         let ordered_torques: Vec<f64> = order.iter().map(|&(i, _)| motor_torque(i)).collect();
         let work = deployment_work(scene, mechanisms, &reports, &order)?;
         drive = Some(drive_demand(
@@ -189,7 +191,8 @@ pub fn size_all(
 }
 
 /// Work per deployment for each load case: the raising torque of every station on the
-/// drive line integrated over its screw's rotation (2 pi per lead of nut travel), divided
+/// drive line integrated over its drive shaft's rotation (2 pi per lead of nut travel, or
+/// the gear ratio per radian of a rotary actuator's output), divided
 /// by the gearbox efficiency. A load case counts only where every station's sweep reached
 /// the end (a partial integral would understate it).
 fn deployment_work(
@@ -210,17 +213,17 @@ fn deployment_work(
                 complete = false;
                 break;
             };
-            let Actuator::ScrewJack { screw, .. } = mechanisms[i].mechanism.actuator();
-            let lead = screw.lead_m;
+            let actuator = mechanisms[i].mechanism.actuator();
+            let per_input = actuator.shaft_angle_per_input();
             let angles: Vec<f64> = sweep
                 .samples
                 .iter()
-                .map(|s| 2.0 * std::f64::consts::PI * (s.input - sweep.samples[0].input) / lead)
+                .map(|s| per_input * (s.input - sweep.samples[0].input))
                 .collect();
             let torques: Vec<f64> = sweep
                 .samples
                 .iter()
-                .map(|s| s.screw_torques_nm.map_or(0.0, |t| t.raise_torque_nm))
+                .map(|s| actuator.shaft_torques(s.actuator_load).raise_torque_nm)
                 .collect();
             total += deployment_work_j(&angles, &torques)?;
         }

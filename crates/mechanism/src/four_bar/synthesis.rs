@@ -269,14 +269,7 @@ impl FourBar {
                 ),
             )
         })?;
-        let drive_min = (0..=LOOP_SAMPLES)
-            .map(|k| {
-                let phi = travel * k as f64 / LOOP_SAMPLES as f64;
-                drive
-                    .state(drive.stroke_at(phi))
-                    .map_or(0.0, |s| s.transmission_angle_rad)
-            })
-            .fold(f64::INFINITY, f64::min);
+        let drive_min = drive.min_transmission_rad(travel, LOOP_SAMPLES);
         if !drive.clear_of_toggles(travel, 1e-3) || drive_min < spec.min_transmission_angle_rad {
             return Err(failure(
                 SynthesisDefect::Toggle,

@@ -14,7 +14,7 @@ use nalgebra::{Isometry2, Point2, Point3, Translation2, UnitComplex};
 
 use super::StationMechanism3d;
 use crate::error::{Error, Result};
-use crate::seam::{Actuator, FlapMechanism, JointEnd, JointGeometry, MechanismPose};
+use crate::seam::{FlapMechanism, JointEnd, JointGeometry, MechanismPose};
 
 /// Samples of the deployment used for the joint limits and velocity limits.
 const LIMIT_SAMPLES: usize = 129;
@@ -114,9 +114,10 @@ impl StationTree {
         }
         let placed = |links: &[TreeLink], end: JointEnd| match end {
             JointEnd::Ground => Some((station_link.clone(), None, Isometry2::identity())),
+            // A fixed body stands where it is stowed: its link is a parent like the ground.
             JointEnd::Body(b) => links
                 .iter()
-                .find(|l| l.body == b && l.joint_type != TreeJointType::Fixed)
+                .find(|l| l.body == b)
                 .map(|l| (l.name.clone(), Some(b), l.frame)),
         };
         loop {
@@ -222,7 +223,7 @@ impl StationTree {
             .iter()
             .map(|&q| Ok(self.joint_values(&mechanism.pose(q)?)))
             .collect::<Result<Vec<_>>>()?;
-        let Actuator::ScrewJack { nominal_speed_mps, .. } = mechanism.actuator();
+        let nominal_speed = mechanism.actuator().nominal_input_speed();
         let step = range.travel().abs() / (LIMIT_SAMPLES - 1) as f64;
         Ok((0..self.movable().count())
             .map(|k| {
@@ -232,7 +233,7 @@ impl StationTree {
                 let upper = column.iter().copied().fold(f64::NEG_INFINITY, f64::max) + 0.5 * largest_step;
                 (
                     (lower.min(0.0), upper.max(0.0)),
-                    largest_step / step * nominal_speed_mps.abs(),
+                    largest_step / step * nominal_speed.abs(),
                 )
             })
             .collect())

@@ -409,3 +409,30 @@ fn rotary_dropped_hinges_are_designed_and_sized() {
         assert!(gap_miss.abs() <= allowed && overlap_miss.abs() <= allowed, "{name}");
     }
 }
+
+/// One torque tube turns every actuator together: with a tube, a rotary actuator whose
+/// shaft turns fewer times over the deployment than the screws is refused at its station,
+/// in the rotary actuator's words.
+#[test]
+fn a_rotary_actuator_out_of_step_with_the_screws_is_refused() {
+    let text = scene_text()
+        .replacen(
+            "kind = \"dropped-hinge\"\n",
+            "kind = \"dropped-hinge\"\nactuator = \"rotary\"\nrotary = { turns = 30 }\n",
+            1,
+        )
+        .replacen(
+            "[[station]]",
+            "[structure.torque_tube]\nchord_fraction = 0.7\ndepth_below_chord_fraction = 0.02\nradius_m = 0.03\n\n[[station]]",
+            1,
+        );
+    let (_dir, output) = design(&text);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("station[2].mechanism")
+            && stderr.contains("rotary actuator's drive shaft turns")
+            && stderr.contains("times over the deployment"),
+        "{stderr}"
+    );
+}

@@ -215,7 +215,7 @@ fn one_drive_speed(mechanisms: &[StationRecord]) -> Vec<Problem> {
             problems.push(Problem::new(
                 path.clone(),
                 format!(
-                    "{}, station {}'s {first_speed:.4} rev/s; one torque tube drives every screw at one speed: make nut_speed_mps / screw_lead_m equal (synthesised kinds: screw.turns / screw.deployment_time_s)",
+                    "{}, station {}'s {first_speed:.4} rev/s; one torque tube drives every screw at one speed: make nut_speed_mps / screw_lead_m equal (synthesised kinds: the same turns / deployment_time_s in screw or rotary)",
                     what.replace("{}", &format!("{speed:.4}")),
                     first.station
                 ),
@@ -225,7 +225,7 @@ fn one_drive_speed(mechanisms: &[StationRecord]) -> Vec<Problem> {
             problems.push(Problem::new(
                 path,
                 format!(
-                    "its screw turns {turns:.3} times over the deployment, station {}'s {first_turns:.3}; one torque tube turns every screw together, so the stations would not finish together: make the nut stroke / screw_lead_m equal (synthesised kinds: screw.turns)",
+                    "its screw turns {turns:.3} times over the deployment, station {}'s {first_turns:.3}; one torque tube turns every screw together, so the stations would not finish together: make the nut stroke / screw_lead_m equal (synthesised kinds: the same turns in screw or rotary)",
                     first.station
                 ),
             ));

@@ -32,19 +32,33 @@ fn scene_text() -> String {
 fn synthesised_kinds_meet_their_precision_positions_through_the_pipeline() {
     let (_dir, report) = designed(&scene_text());
     let stations = report["stations"].as_array().unwrap();
-    // The two-force members are sized: the rockers and the truss members, with a mass.
+    // Every member is sized, with a mass in the totals: the rockers and the truss members
+    // as rods, the cranks and the arms for bending.
     let rods = report["sizing"]["rods"].as_array().unwrap();
-    for (station, member) in [
-        ("ib-inner", "rocker"),
-        ("ob-outer", "truss-forward"),
-        ("ob-outer", "truss-aft"),
+    for (station, member, bends) in [
+        ("ib-inner", "rocker", false),
+        ("ib-inner", "crank", true),
+        ("ob-outer", "truss-forward", false),
+        ("ob-outer", "truss-aft", false),
+        ("ob-outer", "arm-forward", true),
+        ("ob-outer", "arm-aft", true),
     ] {
         let rod = rods
             .iter()
             .find(|r| r["station"] == station && r["name"] == member)
             .unwrap_or_else(|| panic!("{station}.{member} is sized"));
         assert!(rod["mass_kg"].as_f64().unwrap() > 0.0);
+        assert_eq!(rod["governing"] == "bending", bends, "{rod}");
+        assert_eq!(rod["bending_radius_m"].is_f64(), bends, "{rod}");
     }
+    let rod_mass: f64 = rods.iter().map(|r| r["mass_kg"].as_f64().unwrap()).sum();
+    let total = report["sizing"]["totals"]["mass_kg"].as_f64().unwrap();
+    assert!(total >= rod_mass - 1e-9, "{total} < {rod_mass}");
+    // Each sample gives every member's axial force and bending moment; the reactions are
+    // the joints' only.
+    let sample = &stations[0]["mechanism"]["load_cases"][0]["samples"][1];
+    assert!(sample["member_loads"]["crank"]["bending_moment_nm"].as_f64().unwrap() > 0.0);
+    assert!(sample["reactions_n"].get("rocker").is_none(), "{sample}");
     // The acceptance: every pair of the transport scene clears, the rigid flaps moving by
     // the motion fitted to their stations and the take-off slot sealed.
     assert_eq!(report["interference"]["passes"], true, "{}", report["warnings"]);
@@ -435,4 +449,23 @@ fn a_rotary_actuator_out_of_step_with_the_screws_is_refused() {
             && stderr.contains("times over the deployment"),
         "{stderr}"
     );
+}
+
+/// A weak link material makes the sized bars thicker than the solids the check used: the
+/// report warns at each such member, naming it, the radius it needs and the one it has.
+#[test]
+fn members_thicker_than_their_solids_are_warned() {
+    let text = scene_text()
+        + "\n[[materials]]\nname = \"weak\"\ndensity_kg_m3 = 2700.0\nallowable_tensile_pa = 2e7\nallowable_shear_pa = 1e7\nyoungs_modulus_pa = 7e10\n\n[sizing]\nlink_material = \"weak\"\n";
+    let (_dir, report) = designed(&text);
+    let warnings = report["sizing"]["warnings"].as_array().unwrap();
+    for (station, member) in [("ib-inner", "crank"), ("ob-outer", "arm-aft")] {
+        let warning = warnings
+            .iter()
+            .find(|w| w["kind"] == "rod_exceeds_envelope" && w["station"] == station && w["rod"] == member)
+            .unwrap_or_else(|| panic!("{station}.{member} is warned: {warnings:?}"));
+        assert!(
+            warning["required_outer_radius_m"].as_f64().unwrap() > warning["allowed_outer_radius_m"].as_f64().unwrap()
+        );
+    }
 }

@@ -10,7 +10,7 @@ use serde::Serialize;
 use crate::error::{Error, Result};
 use crate::kinetostatics::LoadCase;
 use crate::screw_jack::ScrewTorques;
-use crate::seam::FlapMechanism;
+use crate::seam::{FlapMechanism, MemberLoad};
 
 /// One sample of a deployment: a row of the report's `samples[]`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -36,6 +36,10 @@ pub struct DeploymentSample {
     /// Raise and lower torque of a screw-jack actuator (absent for others).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub screw_torques_nm: Option<ScrewTorques>,
+    /// Axial force (N, tension positive) and largest bending moment (N m) of each member
+    /// the kind sizes, by member name (absent for a kind that declares none).
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub member_loads: BTreeMap<String, MemberLoad>,
     /// Gap and overlap of the flap behind the main wing here: filled by the caller that
     /// knows the wing section (absent without one).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -105,6 +109,7 @@ pub fn sweep_deployment(mechanism: &dyn FlapMechanism, samples: usize, load: &Lo
                 jacobian_condition_number: loads.health.jacobian_condition_number,
                 distance_to_toggle_deg: loads.health.distance_to_toggle_rad.to_degrees(),
                 screw_torques_nm: loads.screw_torques,
+                member_loads: loads.members.into_iter().collect(),
                 flap_position: None,
             }),
             Err(reason) => {

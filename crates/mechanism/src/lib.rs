@@ -78,6 +78,7 @@ pub mod flap_load;
 pub mod four_bar;
 mod kinetostatics;
 pub mod landing_gear;
+mod members;
 pub mod outline;
 pub mod placement;
 pub mod planar;

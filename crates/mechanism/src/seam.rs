@@ -30,6 +30,7 @@ use serde::Serialize;
 
 use crate::error::Result;
 use crate::kinetostatics::LoadCase;
+pub use crate::members::{Member, MemberLoad, MemberLoading};
 use crate::screw_jack::{ScrewJack, ScrewTorques};
 
 /// What the actuator moves.
@@ -388,20 +389,6 @@ pub struct Joint {
     pub touching_solids: Vec<(String, String)>,
 }
 
-/// A link that carries load only along the line of its two pins (a two-force member,
-/// `003_...` 4.1: "rods ... loaded in axial direction only"): sized for strength and Euler
-/// buckling from its axial force, which the kind's kinetostatics report among the
-/// reactions under the member's name, tension positive.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct TwoForceMember {
-    /// The member's solid name (and its axial force's key in the reactions).
-    pub name: String,
-    /// Pin-to-pin length (m).
-    pub length_m: f64,
-    /// Radius of the solid that stands for it (m): the room the station leaves.
-    pub radius_m: f64,
-}
-
 impl Joint {
     /// A joint named `name` between `ends`, whose `touching` solid pairs (end 0's, end 1's)
     /// are checked to stay joined.
@@ -498,6 +485,8 @@ pub struct Kinetostatics {
     pub health: PoseHealth,
     /// Raise and lower torque of a screw-jack actuator for this load (None for others).
     pub screw_torques: Option<ScrewTorques>,
+    /// The internal loads of each member of [`FlapMechanism::members`], by member name.
+    pub members: Vec<(String, MemberLoad)>,
 }
 
 /// A mechanism kind, synthesised for one station: everything the other stages use.
@@ -548,8 +537,9 @@ pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
     /// Conditions worth a designer's look that do not stop the design, in words.
     fn warnings(&self) -> Vec<String>;
 
-    /// The two-force members to size (their axial forces are among the reactions).
-    fn members(&self) -> Vec<TwoForceMember> {
+    /// The members to size: links, arms and struts (their loads at each pose are in
+    /// [`Kinetostatics::members`]).
+    fn members(&self) -> Vec<Member> {
         Vec::new()
     }
 }

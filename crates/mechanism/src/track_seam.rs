@@ -356,6 +356,7 @@ impl FlapMechanism for CircularArcTrack {
                 distance_to_toggle_rad: pose.diagnostics.distance_to_toggle_rad,
             },
             screw_torques: Some(forces.screw),
+            members: Vec::new(),
         })
     }
 

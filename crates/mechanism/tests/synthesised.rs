@@ -3,7 +3,7 @@
 
 use flapwright_mechanism::dropped_hinge::DroppedHinge;
 use flapwright_mechanism::four_bar::FourBar;
-use flapwright_mechanism::seam::FlapMechanism;
+use flapwright_mechanism::seam::{FlapMechanism, MemberLoad, MemberLoading};
 use flapwright_mechanism::{Error, ExternalMoment, FlapNormalForce, LoadCase, PrecisionPosition, SynthesisDefect};
 use nalgebra::{Isometry2, Point2};
 
@@ -22,6 +22,16 @@ fn landing_load() -> LoadCase {
         include_inertia: false,
         flap_normal_force: None,
     }
+}
+
+/// A member's loads at a pose, by name.
+fn member_load(loads: &flapwright_mechanism::seam::Kinetostatics, name: &str) -> MemberLoad {
+    loads
+        .members
+        .iter()
+        .find(|(n, _)| n == name)
+        .unwrap_or_else(|| panic!("no member {name}"))
+        .1
 }
 
 /// Where the mechanism puts the flap attachments at a setting's deflection, against the
@@ -200,6 +210,12 @@ proptest::proptest! {
                 for input in four_bar.input_range().samples(16) {
                     let loads = four_bar.kinetostatics(input, &landing_load()).unwrap();
                     proptest::prop_assert!(loads.actuator_load.is_finite() && loads.transmission_angle_rad.is_finite());
+                    for (name, member) in &loads.members {
+                        proptest::prop_assert!(
+                            member.axial_n.is_finite() && member.bending_moment_nm.is_finite(),
+                            "{}: {:?}", name, member
+                        );
+                    }
                     let relative = (loads.actuator_load - loads.actuator_load_virtual_work).abs()
                         / loads.actuator_load.abs().max(1.0);
                     proptest::prop_assert!(relative < 1e-8, "{}", relative);
@@ -224,6 +240,7 @@ fn dropped_hinge_truss_forces_balance_the_whole_mechanism() {
         let pose = hinge.pose(input).unwrap();
         let loads = hinge.kinetostatics(input, &load).unwrap();
         let reaction = |name: &str| loads.reactions.iter().find(|(n, _)| n == name).unwrap().1;
+        let axial = |name: &str| member_load(&loads, name).axial_n;
         let point = |name: &str| pose.point(name).unwrap();
         let (h, s1, s2, b0, p, d) = (
             point("H"),
@@ -238,8 +255,8 @@ fn dropped_hinge_truss_forces_balance_the_whole_mechanism() {
         let u = (p - b0).normalize();
         let forces = [
             (d, weight),
-            (s1, (s1 - h).normalize() * reaction("truss-forward")),
-            (s2, (s2 - h).normalize() * reaction("truss-aft")),
+            (s1, (s1 - h).normalize() * axial("truss-forward")),
+            (s2, (s2 - h).normalize() * axial("truss-aft")),
             (b0, u * reaction("B0")),
         ];
         let net: nalgebra::Vector2<f64> = forces.iter().map(|(_, f)| f).sum();
@@ -276,15 +293,15 @@ fn rotary_dropped_hinge_turns_about_the_same_hinge_and_balances() {
         assert!(pose.point("B0").is_none() && pose.point("P").is_none());
         let loads = rotary.kinetostatics(input, &load).unwrap();
         assert!(loads.screw_torques.is_none());
-        let reaction = |name: &str| loads.reactions.iter().find(|(n, _)| n == name).unwrap().1;
+        let axial = |name: &str| member_load(&loads, name).axial_n;
         let point = |name: &str| pose.point(name).unwrap();
         let (h, s1, s2, d) = (point("H"), point("S1"), point("S2"), point("D"));
         let weight = mass.gravity_mps2 * mass.mass_kg;
         let couple = -load.external_moment.at(range.fraction(input)) + loads.actuator_load;
         let forces = [
             (d, weight),
-            (s1, (s1 - h).normalize() * reaction("truss-forward")),
-            (s2, (s2 - h).normalize() * reaction("truss-aft")),
+            (s1, (s1 - h).normalize() * axial("truss-forward")),
+            (s2, (s2 - h).normalize() * axial("truss-aft")),
         ];
         let net: nalgebra::Vector2<f64> = forces.iter().map(|(_, f)| f).sum();
         let moment: f64 = forces.iter().map(|(at, f)| at.coords.perp(f)).sum::<f64>() + couple;
@@ -329,5 +346,74 @@ fn synthesised_kinds_keep_the_seams_promises() {
     for mechanism in &kinds {
         crate::seam::speed_bounds_hold(mechanism.as_ref(), 0.25);
         crate::seam::joints_name_existing(mechanism.as_ref());
+    }
+}
+
+/// The four-bar's crank bends as a beam pinned at O1 and A1 under the screw's push at C on
+/// the line between them: only the push's component square to the crank bends it, so the
+/// largest moment is F_n a (L - a) / L at C (a = |C - O1|, L = |A1 - O1|), or F_n |C - O1|
+/// at O1 when C sits on a horn beyond O1. This uses the screw force and the geometry only;
+/// the kind's own figure comes from the pin force at A1 and the method of sections.
+#[test]
+fn the_four_bar_crank_bends_under_the_screws_push() {
+    let four_bar = FourBar::synthesise(four_bar_spec()).unwrap();
+    let declared = four_bar.members();
+    let crank = declared.iter().find(|m| m.name == "crank").unwrap();
+    assert_eq!(crank.loading, MemberLoading::Bending);
+    assert_eq!(
+        declared.iter().find(|m| m.name == "rocker").unwrap().loading,
+        MemberLoading::TwoForce
+    );
+    let load = landing_load();
+    let mut largest = 0.0_f64;
+    for input in four_bar.input_range().samples(9) {
+        let pose = four_bar.pose(input).unwrap();
+        let loads = four_bar.kinetostatics(input, &load).unwrap();
+        let point = |name: &str| pose.point(name).unwrap();
+        let (o1, a1, c, b0) = (point("O1"), point("A1"), point("C"), point("B0"));
+        let along = (a1 - o1).normalize();
+        assert!((c - o1).perp(&along).abs() < 1e-12, "C lies on the crank's line");
+        let push = (c - b0).normalize() * loads.actuator_load;
+        let square = push.perp(&along).abs();
+        let (a, l) = ((c - o1).dot(&along), (a1 - o1).norm());
+        let expected = if a < 0.0 { square * -a } else { square * a * (l - a) / l };
+        let moment = member_load(&loads, "crank").bending_moment_nm;
+        assert!(
+            (moment - expected).abs() < 1e-9 * expected.max(1.0),
+            "{moment} against {expected}"
+        );
+        largest = largest.max(moment);
+    }
+    assert!(largest > 1.0, "the crank is loaded: {largest} N m");
+}
+
+/// The rotary actuator's torque reaches the flap through the two arms cantilevered from
+/// the hub: their root moments add up to it (the arms' largest moments are at their roots,
+/// each carrying one tip force), whatever the split between the attachments.
+#[test]
+fn the_rotary_actuators_torque_is_the_sum_of_the_arms_root_moments() {
+    let rotary = DroppedHinge::synthesise(rotary_dropped_hinge_spec()).unwrap();
+    let names: Vec<_> = rotary.members().iter().map(|m| (m.name.clone(), m.loading)).collect();
+    assert!(
+        names.contains(&("arm-forward".into(), MemberLoading::Bending)),
+        "{names:?}"
+    );
+    assert!(
+        names.contains(&("truss-aft".into(), MemberLoading::TwoForce)),
+        "{names:?}"
+    );
+    let load = landing_load();
+    for input in rotary.input_range().samples(9) {
+        let loads = rotary.kinetostatics(input, &load).unwrap();
+        let (forward, aft) = (
+            member_load(&loads, "arm-forward").bending_moment_nm,
+            member_load(&loads, "arm-aft").bending_moment_nm,
+        );
+        let torque = loads.actuator_load.abs();
+        let nearest = [forward + aft, (forward - aft).abs()]
+            .iter()
+            .map(|m| (m - torque).abs())
+            .fold(f64::INFINITY, f64::min);
+        assert!(nearest < 1e-9 * torque.max(1.0), "{forward} and {aft} against {torque}");
     }
 }

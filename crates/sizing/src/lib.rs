@@ -34,8 +34,10 @@
 //!
 //! # Limitations
 //!
-//! - Rods carry axial load only; no bending, no stress concentration, no fatigue
-//!   spectrum (use a fatigue allowable in the [`Material`] as `003_...` 5.1 does).
+//! - Rods carry axial load; members that bend are sized for the peak combined stress of
+//!   round sections (axial plus amplified bending, [`bending_radius_m`]); no shear, no
+//!   stress concentration, no fatigue spectrum (use a fatigue allowable in the
+//!   [`Material`] as `003_...` 5.1 does).
 //! - Spanwise distribution for more than two stations treats the flap as pinned
 //!   segments between stations (as the `003_...` multi-body model does), not as a
 //!   continuous beam.
@@ -82,8 +84,8 @@ pub use loads::{
 pub use material::Material;
 pub use report::{SizingReport, SizingTotals};
 pub use rod::{
-    axial_envelope_n, buckling_radius_m, euler_critical_load_n, size_rod, strength_radius_m, GoverningCase, RodInput,
-    RodSizing,
+    axial_envelope_n, bending_radius_m, buckling_radius_m, euler_critical_load_n, size_rod, strength_radius_m,
+    BendingLoad, GoverningCase, RodInput, RodSizing,
 };
 pub use screw_jack::{motor_torque_nm, size_screw_jack, ScrewJackInput, ScrewJackSizing};
 pub use section::SectionShape;

@@ -1,4 +1,6 @@
-//! Rods (two-force members) sized for tension, compression and Euler buckling.
+//! Rods (two-force members) sized for tension, compression and Euler buckling, and
+//! members that bend as well (a crank turned from between its pins, an arm cantilevered
+//! from a hinge) sized for the combined stress.
 
 use serde::Serialize;
 
@@ -32,6 +34,18 @@ pub struct RodInput {
     pub shape: SectionShape,
     /// Largest outer radius the station leaves room for, m (None: unlimited).
     pub max_outer_radius_m: Option<f64>,
+    /// Bending loads, for a member that bends (empty for a two-force member): each an
+    /// axial force with the bending moment at the same pose, design loads.
+    pub bending: Vec<BendingLoad>,
+}
+
+/// One pose's design loads on a member that bends.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct BendingLoad {
+    /// Axial force, N, tension positive.
+    pub axial_n: f64,
+    /// Bending moment magnitude, N m (>= 0).
+    pub bending_moment_nm: f64,
 }
 
 impl RodInput {
@@ -52,6 +66,7 @@ impl RodInput {
             end_fixity_factor: 1.0,
             shape: SectionShape::Solid,
             max_outer_radius_m: None,
+            bending: Vec::new(),
         }
     }
 }
@@ -66,6 +81,8 @@ pub enum GoverningCase {
     Compression,
     /// Euler buckling, P_c <= pi^2 E I / (K L)^2.
     Buckling,
+    /// Axial force and bending moment together ([`bending_radius_m`]).
+    Bending,
     /// No load: radius zero (a warning is raised).
     Unloaded,
 }
@@ -89,6 +106,9 @@ pub struct RodSizing {
     pub compression_radius_m: f64,
     /// Radius for Euler buckling alone, m.
     pub buckling_radius_m: f64,
+    /// Radius for axial force and bending together, m (members that bend only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bending_radius_m: Option<f64>,
     /// Euler critical load of the sized rod, N.
     pub critical_load_n: f64,
     /// Mass = A L rho, kg.
@@ -160,6 +180,90 @@ pub fn buckling_radius_m(
     )
 }
 
+/// Outer radius at which every load's combined stress reaches at most the allowable:
+/// σ = |N| / A + M / (Z (1 - P_c / P_cr)) <= σ_allow, with Z = I / r the section modulus,
+/// P_c = max(-N, 0) the compression and P_cr the Euler load of the member (K L): the
+/// bending stress amplified by the beam-column factor 1 / (1 - P_c / P_cr) (Timoshenko &
+/// Gere, *Theory of Elastic Stability*, 1.11), since compression adds the member's own
+/// deflection to the moment's lever. σ falls monotonically with r above the Euler radius
+/// of P_c, so bisection from the largest single-requirement radius finds it, m.
+///
+/// # Errors
+/// [`Error::OutOfRange`] for a non-finite axial force, a negative or non-finite moment,
+/// L, K, E or σ_allow not positive, or a bad shape.
+///
+/// # Examples
+/// ```
+/// use flapwright_sizing::{bending_radius_m, BendingLoad, SectionShape};
+/// // 100 N m on a solid round bar at 500 MPa: Z = π r^3 / 4 = M / σ, r = 6.339 mm.
+/// let load = BendingLoad { axial_n: 0.0, bending_moment_nm: 100.0 };
+/// let r = bending_radius_m(&[load], 0.3, 1.0, 200e9, 500e6, SectionShape::Solid)?;
+/// assert!((r - (4.0 * 100.0 / (std::f64::consts::PI * 500e6)).cbrt()).abs() < 1e-12);
+/// # Ok::<(), flapwright_sizing::Error>(())
+/// ```
+pub fn bending_radius_m(
+    loads: &[BendingLoad],
+    length_m: f64,
+    end_fixity_factor: f64,
+    youngs_modulus_pa: f64,
+    allowable_pa: f64,
+    shape: SectionShape,
+) -> Result<f64> {
+    positive("length_m", length_m)?;
+    positive("end_fixity_factor", end_fixity_factor)?;
+    positive("youngs_modulus_pa", youngs_modulus_pa)?;
+    positive("allowable_pa", allowable_pa)?;
+    shape.validate()?;
+    let mut radius = 0.0_f64;
+    for (i, load) in loads.iter().enumerate() {
+        let axial = crate::check::finite(format!("bending[{i}].axial_n"), load.axial_n)?;
+        let moment = non_negative(format!("bending[{i}].bending_moment_nm"), load.bending_moment_nm)?;
+        let compression = (-axial).max(0.0);
+        let stress = |r: f64| {
+            let euler = euler_critical_load_n(
+                youngs_modulus_pa,
+                shape.second_moment_m4(r),
+                end_fixity_factor,
+                length_m,
+            )
+            .unwrap_or(0.0);
+            let amplification = 1.0 - compression / euler;
+            if amplification <= 0.0 {
+                return f64::INFINITY;
+            }
+            axial.abs() / shape.area_m2(r) + moment * r / (shape.second_moment_m4(r) * amplification)
+        };
+        // Each requirement alone is met at its own radius; together they need more.
+        let bending_alone = (4.0 * moment / (PI * shape.inertia_factor() * allowable_pa)).cbrt();
+        let mut low = strength_radius_m(axial.abs(), allowable_pa, shape)?
+            .max(buckling_radius_m(
+                compression,
+                length_m,
+                end_fixity_factor,
+                youngs_modulus_pa,
+                shape,
+            )?)
+            .max(bending_alone);
+        if low == 0.0 {
+            continue;
+        }
+        let mut high = 2.0 * low;
+        while stress(high) > allowable_pa {
+            (low, high) = (high, 2.0 * high);
+        }
+        while high - low > 1e-13 * high {
+            let mid = 0.5 * (low + high);
+            if stress(mid) > allowable_pa {
+                low = mid;
+            } else {
+                high = mid;
+            }
+        }
+        radius = radius.max(high);
+    }
+    Ok(radius)
+}
+
 /// Largest tension and compression (magnitudes, N) of an axial-force history (N,
 /// tension positive), e.g. a link force over the deployment.
 ///
@@ -202,12 +306,25 @@ pub fn size_rod(rod: &RodInput, material: &Material) -> Result<RodSizing> {
     let tension_radius_m = strength_radius_m(tension_n, sigma, rod.shape)?;
     let compression_radius_m = strength_radius_m(compression_n, sigma, rod.shape)?;
     let buckling_radius_m = buckling_radius_m(compression_n, length_m, fixity, e, rod.shape)?;
+    let bending_radius_m = if rod.bending.is_empty() {
+        None
+    } else {
+        for (i, load) in rod.bending.iter().enumerate() {
+            crate::check::finite(field(&format!("bending[{i}].axial_n")), load.axial_n)?;
+            non_negative(
+                field(&format!("bending[{i}].bending_moment_nm")),
+                load.bending_moment_nm,
+            )?;
+        }
+        Some(bending_radius_m(&rod.bending, length_m, fixity, e, sigma, rod.shape)?)
+    };
     let mut governing = GoverningCase::Unloaded;
     let mut radius_m = 0.0;
     for (case, r) in [
         (GoverningCase::Tension, tension_radius_m),
         (GoverningCase::Compression, compression_radius_m),
         (GoverningCase::Buckling, buckling_radius_m),
+        (GoverningCase::Bending, bending_radius_m.unwrap_or(0.0)),
     ] {
         if r > radius_m {
             (governing, radius_m) = (case, r);
@@ -260,6 +377,7 @@ pub fn size_rod(rod: &RodInput, material: &Material) -> Result<RodSizing> {
         tension_radius_m,
         compression_radius_m,
         buckling_radius_m,
+        bending_radius_m,
         critical_load_n: euler_critical_load_n(e, second_moment, fixity, length_m)?,
         mass_kg: rod.shape.area_m2(radius_m) * length_m * material.density_kg_m3,
         warnings,

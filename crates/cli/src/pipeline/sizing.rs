@@ -1,12 +1,13 @@
 //! Sizing stage: screw jacks (motor torque, self-locking), screws as rods (strength and
-//! Euler buckling), the torque-tube line between the stations, drive power and masses.
+//! Euler buckling), each kind's members (rods, or beams where they bend), the torque-tube
+//! line between the stations, drive power and masses.
 
 use anyhow::{Context, Result};
-use flapwright_mechanism::seam::Actuator;
+use flapwright_mechanism::seam::{Actuator, MemberLoad, MemberLoading};
 use flapwright_mechanism::DeploymentSample;
 use flapwright_sizing::{
-    axial_envelope_n, deployment_work_j, drive_demand, size_rod, size_screw_jack, size_torque_tubes, DeploymentWork,
-    Material, RodInput, ScrewJackInput, ScrewJackSizing, SectionShape, SizingReport, TorqueTubeInput,
+    axial_envelope_n, deployment_work_j, drive_demand, size_rod, size_screw_jack, size_torque_tubes, BendingLoad,
+    DeploymentWork, Material, RodInput, ScrewJackInput, ScrewJackSizing, SectionShape, SizingReport, TorqueTubeInput,
 };
 use nalgebra::{Point3, Vector3};
 
@@ -116,16 +117,17 @@ pub fn size_all(
             rod.max_outer_radius_m = Some(screw.mean_radius_m);
             rods.push(size_rod(&rod, &screw_material)?);
         }
-        // Two-force members from their axial forces (tension positive) in every sample.
+        // Members from their loads (axial tension positive) in every sample: two-force
+        // members as rods, the others for axial force and bending together.
         for member in mechanism.mechanism.members() {
-            let axial: Vec<f64> = samples
+            let loads: Vec<&MemberLoad> = samples
                 .iter()
-                .filter_map(|s| s.reactions_n.get(&member.name))
-                .map(|f| f * safety_factor)
+                .filter_map(|s| s.member_loads.get(&member.name))
                 .collect();
-            if axial.is_empty() {
+            if loads.is_empty() {
                 continue;
             }
+            let axial: Vec<f64> = loads.iter().map(|l| l.axial_n * safety_factor).collect();
             let (tension, compression) = axial_envelope_n(&axial)?;
             let mut rod = RodInput::new(
                 mechanism.station.clone(),
@@ -135,6 +137,15 @@ pub fn size_all(
                 compression,
             );
             rod.max_outer_radius_m = Some(member.radius_m);
+            if member.loading == MemberLoading::Bending {
+                rod.bending = loads
+                    .iter()
+                    .map(|l| BendingLoad {
+                        axial_n: l.axial_n * safety_factor,
+                        bending_moment_nm: l.bending_moment_nm * safety_factor,
+                    })
+                    .collect();
+            }
             rods.push(size_rod(&rod, &link_material)?);
         }
     }

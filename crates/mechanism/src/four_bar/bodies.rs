@@ -17,6 +17,16 @@ const SCREW: usize = 3;
 const NUT: usize = 4;
 const SUPPORT: usize = 5;
 
+/// Where the crank O1-A1 starts: at the screw's attachment `c` when it sits on a horn
+/// beyond the pivot `o1`, else at the pivot (any pose, m).
+pub(super) fn crank_start(o1: Point2<f64>, a1: Point2<f64>, c: Point2<f64>) -> Point2<f64> {
+    if (c - o1).dot(&(a1 - o1)) < 0.0 {
+        c
+    } else {
+        o1
+    }
+}
+
 /// The bodies and joints. The crank turns at most at the drive's bound; the rocker and the
 /// flap at most |v_A1| / (length x sin μ) with μ the certified smallest transmission angle
 /// (the loop's Cramer solve divides by coupler x rocker x sin μ).
@@ -50,8 +60,7 @@ pub(super) fn bodies_and_joints(
         pivot: ("C", "crank"),
     }
     .build();
-    // The crank runs from the screw's attachment when it sits on a horn beyond O1.
-    let crank_start = if (c - o1).dot(&(a1 - o1)) < 0.0 { c } else { o1 };
+    let crank_start = crank_start(o1, a1, c);
     let mut bodies = vec![
         Body {
             name: "flap".into(),

@@ -45,7 +45,7 @@ use crate::rocker_drive::{cross, turn_about, RockerDrive};
 use crate::screw_jack::{ScrewDrive, ScrewJack};
 use crate::seam::{
     Actuator, Body, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, Kinetostatics, MechanismPose,
-    NamedPoint, PoseHealth, TwoForceMember,
+    Member, MemberLoad, MemberLoading, NamedPoint, PoseHealth,
 };
 
 const KIND: &str = "four-bar";
@@ -340,8 +340,6 @@ impl FlapMechanism for FourBar {
                 ("C".into(), force),
                 ("O1".into(), crank_ground.norm()),
                 ("O2".into(), rocker_force),
-                // The rocker's axial force, tension positive (f pushes the flap away from O2).
-                ("rocker".into(), -rocker_force),
             ],
             transmission_angle_rad: pose.transmission.min(state.transmission_angle_rad),
             health: PoseHealth {
@@ -350,6 +348,20 @@ impl FlapMechanism for FourBar {
                 distance_to_toggle_rad: pose.transmission.min(state.transmission_angle_rad),
             },
             screw_torques: Some(self.synthesis.screw.torques(force)),
+            members: vec![
+                // Three forces on the crank: the flap's pin, the screw, the ground at O1.
+                (
+                    "crank".into(),
+                    MemberLoad::of_straight_member(
+                        bodies::crank_start(l.o1, pose.a1, c),
+                        pose.a1,
+                        &[(pose.a1, -pin_a1), (c, u * force), (l.o1, crank_ground)],
+                        0.0,
+                    ),
+                ),
+                // The rocker's axial force, tension positive (f pushes the flap away from O2).
+                ("rocker".into(), MemberLoad::axial(-rocker_force)),
+            ],
         })
     }
 
@@ -395,13 +407,26 @@ impl FlapMechanism for FourBar {
         }
     }
 
-    /// The rocker (the crank carries the screw as well: three forces, not sized here).
-    fn members(&self) -> Vec<TwoForceMember> {
-        vec![TwoForceMember {
-            name: "rocker".into(),
-            length_m: self.loop_.rocker,
-            radius_m: self.spec.hardware.link_radius_m,
-        }]
+    /// The rocker, a two-force member, and the crank, which the screw turns from between
+    /// its pins (or from a horn beyond O1): three forces, so it bends.
+    fn members(&self) -> Vec<Member> {
+        let radius_m = self.spec.hardware.link_radius_m;
+        vec![
+            Member {
+                name: "crank".into(),
+                length_m: (self.loop_.a1
+                    - bodies::crank_start(self.loop_.o1, self.loop_.a1, self.synthesis.actuator_attachment_m))
+                .norm(),
+                radius_m,
+                loading: MemberLoading::Bending,
+            },
+            Member {
+                name: "rocker".into(),
+                length_m: self.loop_.rocker,
+                radius_m,
+                loading: MemberLoading::TwoForce,
+            },
+        ]
     }
 
     fn warnings(&self) -> Vec<String> {

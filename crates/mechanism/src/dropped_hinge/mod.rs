@@ -27,15 +27,23 @@ use crate::error::{Error, Result, SynthesisDefect};
 use crate::flap_load::{FlapMass, FlapWrench, LinkHardware};
 use crate::kinetostatics::LoadCase;
 use crate::outline::{inside, StationOutline};
-use crate::placement::{place_screw_jack, strut_top, turning_flap, JackSize, ScrewJackChoice};
+use crate::placement::{strut_top, turning_flap, ScrewJackChoice};
 use crate::precision::{pole, PrecisionPosition};
-use crate::rocker_drive::{cross, turn_about, RockerDrive, ScrewJackParts};
+use crate::rocker_drive::{cross, turn_about, RockerDrive};
 use crate::rotary_actuator::RotaryDrive;
-use crate::screw_jack::{ScrewDrive, ScrewJack};
+use crate::screw_jack::ScrewDrive;
 use crate::seam::{
-    Actuator, Body, BodyRole, BodySolid, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, JointEnd,
-    JointGeometry, Kinetostatics, MechanismPose, NamedPoint, PoseHealth, SpeedBound, TwoForceMember,
+    Actuator, Body, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, Kinetostatics, MechanismPose,
+    Member, NamedPoint, PoseHealth,
 };
+
+mod bodies;
+mod members;
+mod screw_jack;
+
+use bodies::{bodies_and_joints, FLAP};
+use screw_jack::screw_jack_layout;
+pub use screw_jack::DroppedHingeScrewJack;
 
 const KIND: &str = "dropped-hinge";
 
@@ -117,28 +125,6 @@ pub struct DroppedHingeSynthesis {
     pub flap_through_lip_at_rad: Option<f64>,
 }
 
-/// The screw jack of a dropped hinge, as synthesis laid it out.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct DroppedHingeScrewJack {
-    /// The screw's mount B0 (m).
-    pub actuator_mount_m: Point2<f64>,
-    /// False when no default place of the screw jack kept clear of the wing, the structure
-    /// and the flap at the sampled poses (the interference check says where).
-    pub actuator_clear: bool,
-    /// The screw's attachment P on the forward arm, stowed (m).
-    pub actuator_attachment_m: Point2<f64>,
-    /// Stroke |P - B0| stowed and at landing (m).
-    pub stroke_m: [f64; 2],
-    /// Smallest transmission angle of the drive over the deployment (rad, sampled).
-    pub min_transmission_angle_rad: f64,
-    /// The screw chosen from the drive: lead, radius, friction.
-    pub screw: ScrewJack,
-    /// Screw length (m): the longest stroke and the nut.
-    pub screw_length_m: f64,
-    /// Nominal nut speed (m/s).
-    pub nominal_speed_mps: f64,
-}
-
 /// A dropped hinge synthesised for one station.
 #[derive(Debug, Clone)]
 pub struct DroppedHinge {
@@ -157,17 +143,6 @@ enum Drive {
     Screw(RockerDrive),
     /// The rotary actuator's output angle is the turn.
     Rotary,
-}
-
-const FLAP: usize = 0;
-const SCREW: usize = 1;
-const NUT: usize = 2;
-/// The support's index after the flap and, with a screw jack, the screw and the nut.
-fn support_index(drive: &Drive) -> usize {
-    match drive {
-        Drive::Screw(_) => 3,
-        Drive::Rotary => 1,
-    }
 }
 
 /// Samples of the transmission-angle check over the deployment.
@@ -334,139 +309,6 @@ impl DroppedHinge {
     }
 }
 
-/// The screw jack's place (mount B0, attachment P), its drive's triangle, and the screw
-/// chosen from the drive. Errors when B0, H and P lie on one line or the transmission angle
-/// falls below the minimum (toggle).
-fn screw_jack_layout(
-    spec: &DroppedHingeSpec,
-    hinge: Point2<f64>,
-    choice: &ScrewJackChoice,
-    screw_drive: &ScrewDrive,
-    margin: f64,
-) -> Result<(RockerDrive, DroppedHingeScrewJack)> {
-    let turn = spec.landing.deflection_rad;
-    let hw = spec.hardware;
-    let size = JackSize::new(&hw, screw_drive.mean_radius_m);
-    let flap_at = |psi: f64| Some(turn_about(hinge, psi));
-    let (attachment, mount, actuator_clear) =
-        place_screw_jack(hinge, turn, choice, &size, margin, &spec.outline, &flap_at);
-    let drive = RockerDrive::try_new(hinge, mount, attachment).map_err(|_| {
-        failure(
-            SynthesisDefect::Toggle,
-            format!(
-                "the screw mount {}, the hinge {} and the screw's attachment {} lie on one line",
-                mm(mount),
-                mm(hinge),
-                mm(attachment)
-            ),
-        )
-    })?;
-    let min_transmission = drive.min_transmission_rad(turn, TRANSMISSION_SAMPLES);
-    if !drive.clear_of_toggles(turn, 1e-3) || min_transmission < spec.min_transmission_angle_rad {
-        return Err(failure(
-            SynthesisDefect::Toggle,
-            format!(
-                "the screw's transmission angle falls to {:.1} deg (minimum {:.1} deg); move the actuator mount or its attachment",
-                min_transmission.to_degrees(),
-                spec.min_transmission_angle_rad.to_degrees()
-            ),
-        ));
-    }
-    let stroke_m = [drive.stroke_at(0.0), drive.stroke_at(turn)];
-    let (screw, nominal_speed_mps) = screw_drive.screw_for(stroke_m[1] - stroke_m[0]);
-    // Long enough to carry the nut at the longest stroke, no longer: a screw's free end
-    // beyond the nut would sweep into the flap.
-    let screw_length_m = stroke_m[0].max(stroke_m[1]) + hw.nut_radius_m;
-    let layout = DroppedHingeScrewJack {
-        actuator_mount_m: mount,
-        actuator_clear,
-        actuator_attachment_m: attachment,
-        stroke_m,
-        min_transmission_angle_rad: min_transmission,
-        screw,
-        screw_length_m,
-        nominal_speed_mps,
-    };
-    Ok((drive, layout))
-}
-
-fn bodies_and_joints(
-    spec: &DroppedHingeSpec,
-    synthesis: &DroppedHingeSynthesis,
-    drive: &Drive,
-) -> (Vec<Body>, Vec<Joint>) {
-    let hw = &spec.hardware;
-    let h = synthesis.hinge_m;
-    let [forward, aft] = spec.flap_attachments;
-    let turn = spec.landing.deflection_rad;
-    let capsule = |name: &str, from, to| BodySolid::capsule(name, from, to, hw.link_radius_m);
-    let mut flap_solids = vec![capsule("arm-forward", h, forward), capsule("arm-aft", h, aft)];
-    let mut support_solids = vec![
-        capsule("truss-forward", h, synthesis.support_points_m[0]),
-        capsule("truss-aft", h, synthesis.support_points_m[1]),
-    ];
-    let mut hinge_contacts = vec![("truss-forward", "arm-forward"), ("truss-aft", "arm-aft")];
-    let support = support_index(drive);
-    let mut actuator_bodies = Vec::new();
-    let mut actuator_joints = Vec::new();
-    let angular_per_input = match (drive, &synthesis.screw_jack) {
-        (Drive::Screw(rocker), Some(jack)) => {
-            // The screw takes hold of the forward arm, or of a horn below the hinge.
-            let p = jack.actuator_attachment_m;
-            let on_horn = (p - forward).dot(&(h - forward)) > (h - forward).norm_squared();
-            let holder = if on_horn { "horn" } else { "arm-forward" };
-            if on_horn {
-                flap_solids.push(capsule("horn", h, p));
-            }
-            (actuator_bodies, actuator_joints) = ScrewJackParts {
-                drive: rocker,
-                rotation_rad: turn,
-                screw_length_m: jack.screw_length_m,
-                screw_radius_m: jack.screw.mean_radius_m + 0.25 * jack.screw.lead_m,
-                hardware: hw,
-                indices: [FLAP, SCREW, NUT],
-                pivot: ("P", holder),
-            }
-            .build();
-            // Per metre of stroke (RockerDrive::rotation_rate_bound).
-            rocker.rotation_rate_bound(turn)
-        }
-        _ => {
-            // The geared rotary actuator's housing on the hinge, fixed to the truss; its
-            // output turns the arms by the input angle itself.
-            support_solids.push(BodySolid::capsule("rotary-actuator", h, h, hw.jack_body_radius_m));
-            hinge_contacts.extend([("rotary-actuator", "arm-forward"), ("rotary-actuator", "arm-aft")]);
-            1.0
-        }
-    };
-    let mut bodies = vec![Body {
-        name: "flap".into(),
-        role: BodyRole::Flap,
-        solids: flap_solids,
-        speed_bound: SpeedBound {
-            reference: h,
-            linear_per_input: 0.0,
-            angular_per_input,
-        },
-    }];
-    bodies.extend(actuator_bodies);
-    bodies.push(Body {
-        name: "support".into(),
-        role: BodyRole::Support,
-        solids: support_solids,
-        speed_bound: SpeedBound::FIXED,
-    });
-    let mut joints = vec![Joint::new(
-        "H",
-        "the flap's hinge on the support truss",
-        JointGeometry::Revolute { at: h },
-        [JointEnd::Body(support), JointEnd::Body(FLAP)],
-        &hinge_contacts,
-    )];
-    joints.extend(actuator_joints);
-    (bodies, joints)
-}
-
 impl DroppedHinge {
     /// The screw jack's drive triangle and layout, when a screw jack drives the hinge.
     fn screw_jack(&self) -> Option<(&RockerDrive, &DroppedHingeScrewJack)> {
@@ -587,55 +429,66 @@ impl FlapMechanism for DroppedHinge {
         let fraction = self.input_range().fraction(input).clamp(0.0, 1.0);
         // The actuator's load by moments about H, the hinge's reaction, dψ/dq, and the
         // actuator's own reactions, transmission and health.
-        let (rotation_rad, load_n, hinge_reaction, rate, drive_reactions, transmission, health, screw_torques) =
-            match self.screw_jack() {
-                Some((rocker, jack)) => {
-                    let state = rocker.state(input)?;
-                    let flap = turn_about(h, state.rotation_rad);
-                    let wrench = FlapWrench::new(&self.spec.flap_mass, &flap, load, fraction);
-                    let p = state.attachment;
-                    let u = (p - jack.actuator_mount_m).normalize();
-                    let force = -wrench.moment_about(h) / cross(p - h, u);
-                    let hinge_reaction: Vector2<f64> = -(u * force + wrench.force_n());
-                    (
-                        state.rotation_rad,
-                        force,
-                        hinge_reaction,
-                        // dψ/ds from the drive's triangle.
-                        state.rotation_per_stroke,
-                        vec![("B0".to_string(), force), ("P".to_string(), force)],
-                        state.transmission_angle_rad,
-                        PoseHealth {
-                            closure_residual_m: state.closure_residual_m,
-                            jacobian_condition_number: state.jacobian_condition_number,
-                            distance_to_toggle_rad: state.transmission_angle_rad,
-                        },
-                        Some(jack.screw.torques(force)),
-                    )
-                }
-                None => {
-                    // The rotary actuator turns the arms about H directly: no toggle, no
-                    // closure; its torque balances the applied moment about H.
-                    let rotation_rad = finite_angle(input)?;
-                    let flap = turn_about(h, rotation_rad);
-                    let wrench = FlapWrench::new(&self.spec.flap_mass, &flap, load, fraction);
-                    let right_angle = std::f64::consts::FRAC_PI_2;
-                    (
-                        rotation_rad,
-                        -wrench.moment_about(h),
-                        -wrench.force_n(),
-                        1.0,
-                        Vec::new(),
-                        right_angle,
-                        PoseHealth {
-                            closure_residual_m: 0.0,
-                            jacobian_condition_number: 1.0,
-                            distance_to_toggle_rad: right_angle,
-                        },
-                        None,
-                    )
-                }
-            };
+        let (
+            rotation_rad,
+            load_n,
+            hinge_reaction,
+            rate,
+            drive_reactions,
+            transmission,
+            health,
+            screw_torques,
+            screw_push,
+        ) = match self.screw_jack() {
+            Some((rocker, jack)) => {
+                let state = rocker.state(input)?;
+                let flap = turn_about(h, state.rotation_rad);
+                let wrench = FlapWrench::new(&self.spec.flap_mass, &flap, load, fraction);
+                let p = state.attachment;
+                let u = (p - jack.actuator_mount_m).normalize();
+                let force = -wrench.moment_about(h) / cross(p - h, u);
+                let hinge_reaction: Vector2<f64> = -(u * force + wrench.force_n());
+                (
+                    state.rotation_rad,
+                    force,
+                    hinge_reaction,
+                    // dψ/ds from the drive's triangle.
+                    state.rotation_per_stroke,
+                    vec![("B0".to_string(), force), ("P".to_string(), force)],
+                    state.transmission_angle_rad,
+                    PoseHealth {
+                        closure_residual_m: state.closure_residual_m,
+                        jacobian_condition_number: state.jacobian_condition_number,
+                        distance_to_toggle_rad: state.transmission_angle_rad,
+                    },
+                    Some(jack.screw.torques(force)),
+                    Some((p, u * force)),
+                )
+            }
+            None => {
+                // The rotary actuator turns the arms about H directly: no toggle, no
+                // closure; its torque balances the applied moment about H.
+                let rotation_rad = finite_angle(input)?;
+                let flap = turn_about(h, rotation_rad);
+                let wrench = FlapWrench::new(&self.spec.flap_mass, &flap, load, fraction);
+                let right_angle = std::f64::consts::FRAC_PI_2;
+                (
+                    rotation_rad,
+                    -wrench.moment_about(h),
+                    -wrench.force_n(),
+                    1.0,
+                    Vec::new(),
+                    right_angle,
+                    PoseHealth {
+                        closure_residual_m: 0.0,
+                        jacobian_condition_number: 1.0,
+                        distance_to_toggle_rad: right_angle,
+                    },
+                    None,
+                    None,
+                )
+            }
+        };
         // Virtual work, independently of the moments: Q dq + Σ f · dp + C dψ = 0.
         let flap = turn_about(h, rotation_rad);
         let wrench = FlapWrench::new(&self.spec.flap_mass, &flap, load, fraction);
@@ -644,18 +497,8 @@ impl FlapMechanism for DroppedHinge {
             Vector2::new(-r.y, r.x) * rate
         };
         let load_virtual_work = -wrench.power(velocity_of, rate);
-        // The truss members' axial forces (tension positive): at the hinge node they balance
-        // the flap's push, sum t_i u_i = R_H with u_i towards each member's wing end.
-        let [s1, s2] = self.synthesis.support_points_m;
-        let (u1, u2) = ((s1 - h).normalize(), (s2 - h).normalize());
-        let det = cross(u1, u2);
-        let (t1, t2) = (cross(hinge_reaction, u2) / det, cross(u1, hinge_reaction) / det);
         let mut reactions = drive_reactions;
-        reactions.extend([
-            ("H".to_string(), hinge_reaction.norm()),
-            ("truss-aft".to_string(), t2),
-            ("truss-forward".to_string(), t1),
-        ]);
+        reactions.push(("H".to_string(), hinge_reaction.norm()));
         reactions.sort_by(|a, b| a.0.cmp(&b.0));
         Ok(Kinetostatics {
             input,
@@ -666,6 +509,7 @@ impl FlapMechanism for DroppedHinge {
             transmission_angle_rad: transmission,
             health,
             screw_torques,
+            members: members::member_loads(self, &flap, &wrench, screw_push, hinge_reaction),
         })
     }
 
@@ -720,18 +564,10 @@ impl FlapMechanism for DroppedHinge {
         self.actuator
     }
 
-    /// The support truss's two members (the arms are part of the flap's hinged structure).
-    fn members(&self) -> Vec<TwoForceMember> {
-        let h = self.synthesis.hinge_m;
-        ["truss-forward", "truss-aft"]
-            .iter()
-            .zip(self.synthesis.support_points_m)
-            .map(|(name, end)| TwoForceMember {
-                name: name.to_string(),
-                length_m: (end - h).norm(),
-                radius_m: self.spec.hardware.link_radius_m,
-            })
-            .collect()
+    /// The support truss's two members, pinned at both ends, and the hinged structure's
+    /// arms (and horn), cantilevered from the hinge: see [`members`].
+    fn members(&self) -> Vec<Member> {
+        members::members(self)
     }
 
     fn warnings(&self) -> Vec<String> {

@@ -469,3 +469,58 @@ fn members_thicker_than_their_solids_are_warned() {
         );
     }
 }
+
+/// The outboard flap on link-tracks (`kind = "link-track"`, nothing else changed): both
+/// stations are synthesised through the three settings exactly, their rotary actuators and
+/// links are sized, the interference check passes, and the URDF reads back in urdf-rs
+/// within the URDF rules, the carriage's slot cut from the tree.
+#[test]
+fn link_tracks_are_synthesised_checked_and_exported() {
+    let text = scene_text().replace("kind = \"dropped-hinge\"", "kind = \"link-track\"");
+    let (dir, report) = designed(&text);
+    assert_eq!(report["interference"]["passes"], true, "{}", report["warnings"]);
+    let stations = report["stations"].as_array().unwrap();
+    for station in &stations[2..] {
+        assert_eq!(station["mechanism"]["kind"], "link-track");
+        assert_eq!(station["mechanism"]["input"]["quantity"], "angle");
+        let synthesis = &station["mechanism"]["details"]["synthesis"];
+        assert!(synthesis["precision_miss_m"].as_f64().unwrap() < 1e-9, "{synthesis}");
+        for setting in station["flap_position"]["settings"].as_array().unwrap() {
+            if setting["setting"] == "stowed" {
+                continue;
+            }
+            let (gap_miss, overlap_miss, allowed) = setting_misses(station, setting);
+            assert!(
+                gap_miss.abs() <= allowed && overlap_miss.abs() <= allowed,
+                "{} {}: gap misses by {gap_miss} %c, overlap by {overlap_miss} %c",
+                station["name"],
+                setting["setting"]
+            );
+        }
+        let name = station["name"].as_str().unwrap();
+        let rods = report["sizing"]["rods"].as_array().unwrap();
+        let link = rods
+            .iter()
+            .find(|r| r["station"] == name && r["name"] == "link")
+            .unwrap();
+        assert_eq!(link["governing"], "bending", "{link}");
+        let jacks = report["sizing"]["screw_jacks"].as_array().unwrap();
+        assert!(jacks
+            .iter()
+            .any(|j| j["station"] == name && j["name"] == "rotary-actuator"));
+    }
+    let urdf = report["files"]["urdf"]["file"].as_str().unwrap();
+    let xml = std::fs::read_to_string(dir.path().join("out").join(urdf)).unwrap();
+    let robot = urdf_rs::read_from_string(&xml).expect("urdf-rs reads the file back");
+    assert!(flapwright_mechanism::urdf::check_rules(&robot).is_empty());
+    assert!(
+        robot.links.iter().any(|l| l.name == "ob-inner_link"),
+        "the link is a URDF link"
+    );
+    let cuts = report["files"]["urdf"]["cut_joints"].as_array().unwrap();
+    assert!(
+        cuts.iter()
+            .any(|c| c["station"] == "ob-inner" && c["joint"] == "C" && c["kind"] == "pin-in-straight-slot"),
+        "{cuts:?}"
+    );
+}

@@ -191,6 +191,17 @@ impl StationOutline {
         Some(Point2::new(x, lo - at.depth_fraction * chord))
     }
 
+    /// The lowest y of the stowed wing and flap sections (m): what a mechanism's depth below
+    /// the section is measured from.
+    pub fn section_bottom(&self) -> f64 {
+        self.wing
+            .iter()
+            .chain(&self.flap)
+            .flatten()
+            .map(|p| p.y)
+            .fold(f64::INFINITY, f64::min)
+    }
+
     /// The local clean chord: wing nose to stowed flap trailing edge (m).
     pub fn chord_m(&self) -> Option<f64> {
         let (_, nose) = extent_x(&self.wing)?;

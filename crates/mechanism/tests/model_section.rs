@@ -5,6 +5,7 @@
 
 use flapwright_mechanism::dropped_hinge::{DroppedHingeActuator, DroppedHingeSpec};
 use flapwright_mechanism::four_bar::FourBarSpec;
+use flapwright_mechanism::link_track::LinkTrackSpec;
 use flapwright_mechanism::{FlapMass, LinkHardware, PrecisionPosition, RotaryDrive, ScrewDrive, StationOutline};
 use flapwright_planes::FlapBehindWing;
 use nalgebra::Point2;
@@ -122,6 +123,26 @@ pub fn four_bar_spec() -> FourBarSpec {
         actuator_standoff_m: 0.4,
         flap_mass: flap_mass(),
         screw_drive: drive(),
+        hardware: LinkHardware::for_flap_chord(0.8),
+        outline,
+    }
+}
+
+pub fn link_track_spec() -> LinkTrackSpec {
+    let outline = outline();
+    let (takeoff, landing) = settings(&outline);
+    LinkTrackSpec {
+        takeoff,
+        landing,
+        link_pivot: None,
+        track_slope_rad: None,
+        min_transmission_angle_rad: 30f64.to_radians(),
+        flap_mass: flap_mass(),
+        rotary: RotaryDrive {
+            turns: 30.0,
+            deployment_time_s: 20.0,
+            efficiency: 0.9,
+        },
         hardware: LinkHardware::for_flap_chord(0.8),
         outline,
     }

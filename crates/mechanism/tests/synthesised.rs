@@ -3,6 +3,7 @@
 
 use flapwright_mechanism::dropped_hinge::DroppedHinge;
 use flapwright_mechanism::four_bar::FourBar;
+use flapwright_mechanism::link_track::LinkTrack;
 use flapwright_mechanism::seam::{FlapMechanism, MemberLoad, MemberLoading};
 use flapwright_mechanism::{Error, ExternalMoment, FlapNormalForce, LoadCase, PrecisionPosition, SynthesisDefect};
 use nalgebra::{Isometry2, Point2};
@@ -10,7 +11,7 @@ use nalgebra::{Isometry2, Point2};
 #[path = "model_section.rs"]
 mod model_section;
 
-use model_section::{dropped_hinge_spec, four_bar_spec, rotary_dropped_hinge_spec};
+use model_section::{dropped_hinge_spec, four_bar_spec, link_track_spec, rotary_dropped_hinge_spec};
 
 fn landing_load() -> LoadCase {
     LoadCase {
@@ -89,6 +90,7 @@ fn statics_and_virtual_work_agree() {
         Box::new(DroppedHinge::synthesise(dropped_hinge_spec()).unwrap()),
         Box::new(DroppedHinge::synthesise(rotary_dropped_hinge_spec()).unwrap()),
         Box::new(FourBar::synthesise(four_bar_spec()).unwrap()),
+        Box::new(LinkTrack::synthesise(link_track_spec()).unwrap()),
     ];
     // A flight condition's normal force at the quarter chord, C_N rising with deflection.
     let flight = LoadCase {
@@ -342,6 +344,7 @@ fn synthesised_kinds_keep_the_seams_promises() {
         Box::new(DroppedHinge::synthesise(dropped_hinge_spec()).unwrap()),
         Box::new(DroppedHinge::synthesise(rotary_dropped_hinge_spec()).unwrap()),
         Box::new(FourBar::synthesise(four_bar_spec()).unwrap()),
+        Box::new(LinkTrack::synthesise(link_track_spec()).unwrap()),
     ];
     for mechanism in &kinds {
         crate::seam::speed_bounds_hold(mechanism.as_ref(), 0.25);
@@ -415,5 +418,67 @@ fn the_rotary_actuators_torque_is_the_sum_of_the_arms_root_moments() {
             .map(|m| (m - torque).abs())
             .fold(f64::INFINITY, f64::min);
         assert!(nearest < 1e-9 * torque.max(1.0), "{forward} and {aft} against {torque}");
+    }
+}
+
+/// The link-track meets its three precision positions at the link's pivot and the
+/// carriage; its carriage runs on a straight line; statics and virtual work agree; the
+/// transmission angle stays above the minimum.
+#[test]
+fn link_track_meets_its_three_precision_positions() {
+    let link_track = LinkTrack::synthesise(link_track_spec()).unwrap();
+    let spec = link_track_spec();
+    for position in [PrecisionPosition::stowed(), spec.takeoff, spec.landing] {
+        let m = miss(&link_track, &position);
+        assert!(m < 1e-9, "{}: {m}", position.name);
+    }
+    let synthesis = link_track.synthesis();
+    assert!(synthesis.precision_miss_m < 1e-9);
+    assert!(synthesis.search.feasible > 0, "{:?}", synthesis.search);
+    let d = synthesis.track_direction;
+    let c0 = synthesis.carriage_m;
+    let load = landing_load();
+    for input in link_track.input_range().samples(17) {
+        let pose = link_track.pose(input).unwrap();
+        let c = pose.point("C").unwrap();
+        assert!((c - c0).perp(&d).abs() < 1e-9, "the carriage leaves its track");
+        let loads = link_track.kinetostatics(input, &load).unwrap();
+        let relative =
+            (loads.actuator_load - loads.actuator_load_virtual_work).abs() / loads.actuator_load.abs().max(1.0);
+        assert!(relative < 1e-8, "{relative}");
+        assert!(loads.transmission_angle_rad >= 30f64.to_radians() - 1e-9);
+        let link = member_load(&loads, "link");
+        assert!(link.bending_moment_nm.is_finite() && link.bending_moment_nm > 0.0);
+    }
+    assert!(synthesis.certified_min_transmission_angle_rad > 0.0);
+    assert!(synthesis.certified_min_transmission_angle_rad <= synthesis.min_transmission_angle_rad);
+}
+
+/// The link-track's free choices given back reproduce the searched mechanism; a fixed pivot
+/// inside the wing is refused with its defect, and one the flap's settings cannot use is a
+/// typed failure, never a panic.
+#[test]
+fn link_track_choices_given_back_or_refused() {
+    let found = LinkTrack::synthesise(link_track_spec()).unwrap();
+    let s = found.synthesis();
+    let mut spec = link_track_spec();
+    spec.link_pivot = Some(s.link_pivot_m);
+    spec.track_slope_rad = Some(s.track_slope_rad);
+    let again = LinkTrack::synthesise(spec).unwrap();
+    assert!((again.synthesis().carriage_m - s.carriage_m).norm() < 1e-9);
+    assert!((again.synthesis().link_flap_pivot_m - s.link_flap_pivot_m).norm() < 1e-9);
+    let mut inside = link_track_spec();
+    inside.link_pivot = Some(Point2::new(1.0, 0.1));
+    match LinkTrack::synthesise(inside) {
+        Err(Error::Synthesis { defect, .. }) => assert_eq!(defect, SynthesisDefect::PivotOutsideRegion),
+        other => panic!("{other:?}"),
+    }
+    for slope_deg in [-10.0, 0.0, 20.0, 45.0, 80.0] {
+        let mut spec = link_track_spec();
+        spec.track_slope_rad = Some(f64::to_radians(slope_deg));
+        match LinkTrack::synthesise(spec) {
+            Ok(link_track) => assert!(link_track.synthesis().precision_miss_m < 1e-9),
+            Err(error) => assert!(matches!(error, Error::Synthesis { .. }), "{error}"),
+        }
     }
 }

@@ -71,7 +71,7 @@ impl KindScene for DroppedHingeScene {
             self.flap_mass_kg,
             self.flap_centre_of_mass_m.as_ref(),
             self.min_transmission_angle_deg,
-            &self.screw,
+            Some(&self.screw),
         );
         for (k, fraction) in self.attachment_chord_fractions.iter().enumerate() {
             checker.in_range(

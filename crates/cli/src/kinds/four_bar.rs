@@ -50,7 +50,7 @@ impl KindScene for FourBarScene {
             self.flap_mass_kg,
             self.flap_centre_of_mass_m.as_ref(),
             self.min_transmission_angle_deg,
-            &self.screw,
+            Some(&self.screw),
         );
         for (key, pivot) in [
             ("forward_pivot_m", &self.forward_pivot_m),

@@ -7,6 +7,7 @@
 mod circular_arc_track;
 mod dropped_hinge;
 mod four_bar;
+mod link_track;
 
 use std::sync::Arc;
 
@@ -16,6 +17,7 @@ use serde::Deserialize;
 pub use circular_arc_track::CircularArcTrackScene;
 pub use dropped_hinge::DroppedHingeScene;
 pub use four_bar::FourBarScene;
+pub use link_track::LinkTrackScene;
 
 use crate::scene::limits::{FLAP_MASS_KG, SCREW_FRICTION, SCREW_MEAN_RADIUS_M};
 use crate::scene::KeyChecker;
@@ -239,14 +241,14 @@ impl RotaryDriveScene {
 }
 
 /// The keys every kind synthesised from the settings has: flap mass and centre of mass,
-/// minimum transmission angle, the screw drive.
+/// minimum transmission angle, and the screw drive of a kind that has one.
 fn check_synthesised(
     checker: &mut dyn KeyChecker,
     path: &str,
     mass_kg: f64,
     centre: Option<&[f64; 2]>,
     min_transmission_angle_deg: f64,
-    screw: &ScrewDriveScene,
+    screw: Option<&ScrewDriveScene>,
 ) {
     let (mass_lo, mass_hi) = FLAP_MASS_KG;
     checker.in_range(&format!("{path}.flap_mass_kg"), mass_kg, mass_lo, mass_hi, false);
@@ -261,7 +263,9 @@ fn check_synthesised(
         hi,
         false,
     );
-    screw.check(checker, path);
+    if let Some(screw) = screw {
+        screw.check(checker, path);
+    }
 }
 
 /// What the rest of Flapwright asks of a kind's scene table.
@@ -302,11 +306,13 @@ pub enum MechanismScene {
     DroppedHinge(DroppedHingeScene),
     /// Four-bar with screw jack on the crank, from the three settings (`003_...`).
     FourBar(FourBarScene),
+    /// Link-track with a rotary actuator, from the three settings (`003_...`).
+    LinkTrack(LinkTrackScene),
 }
 
 impl MechanismScene {
     /// The `kind` values, as written in the scene.
-    pub const KINDS: &'static [&'static str] = &["circular-arc-track", "dropped-hinge", "four-bar"];
+    pub const KINDS: &'static [&'static str] = &["circular-arc-track", "dropped-hinge", "four-bar", "link-track"];
 
     /// The kind behind the variant: everything else reaches the kind through it.
     pub fn kind(&self) -> &dyn KindScene {
@@ -314,6 +320,7 @@ impl MechanismScene {
             Self::CircularArcTrack(m) => m,
             Self::DroppedHinge(m) => m,
             Self::FourBar(m) => m,
+            Self::LinkTrack(m) => m,
         }
     }
 }
@@ -344,6 +351,7 @@ impl<'de> Deserialize<'de> for MechanismScene {
             "circular-arc-track" => variant::<_, D::Error>(table).map(Self::CircularArcTrack),
             "dropped-hinge" => variant::<_, D::Error>(table).map(Self::DroppedHinge),
             "four-bar" => variant::<_, D::Error>(table).map(Self::FourBar),
+            "link-track" => variant::<_, D::Error>(table).map(Self::LinkTrack),
             other => Err(D::Error::custom(crate::scene::parse::nested_error_at(
                 "kind",
                 &format!(

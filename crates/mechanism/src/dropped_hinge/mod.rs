@@ -565,7 +565,7 @@ impl FlapMechanism for DroppedHinge {
     }
 
     /// The support truss's two members, pinned at both ends, and the hinged structure's
-    /// arms (and horn), cantilevered from the hinge: see [`members`].
+    /// arms (and horn), cantilevered from the hinge (see the `members` module).
     fn members(&self) -> Vec<Member> {
         members::members(self)
     }

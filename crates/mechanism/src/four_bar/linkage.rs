@@ -86,9 +86,3 @@ impl Loop {
         (rocker, flap)
     }
 }
-
-/// Signed angle (rad) that turns `from - centre` onto `to - centre`.
-pub(super) fn turn_angle(centre: Point2<f64>, from: Point2<f64>, to: Point2<f64>) -> f64 {
-    let (a, b) = (from - centre, to - centre);
-    cross(a, b).atan2(a.dot(&b))
-}

@@ -34,7 +34,8 @@ mod linkage;
 mod search;
 mod synthesis;
 
-use linkage::{turn_angle, Loop};
+use crate::rocker_drive::turn_angle;
+use linkage::Loop;
 
 use crate::error::{Error, Result, SynthesisDefect};
 use crate::flap_load::{FlapMass, FlapWrench, LinkHardware};

@@ -5,12 +5,13 @@
 
 use nalgebra::Point2;
 
-use super::linkage::{turn_angle, Loop};
+use super::linkage::Loop;
 use super::{failure, mm, FourBarSearch, FourBarSpec, LOOP_SAMPLES};
 use crate::error::{Error, SynthesisDefect};
 use crate::outline::{inside, segment_meets, vertical_span};
 use crate::precision::{circle_centre, PrecisionPosition};
 use crate::rocker_drive::cross;
+use crate::rocker_drive::turn_angle;
 
 /// Grid of moving-pivot candidates: columns along the flap chord, rows below it.
 const GRID_COLUMNS: usize = 14;

@@ -4,7 +4,7 @@
 use nalgebra::{Isometry2, Point2};
 
 use super::bodies::bodies_and_joints;
-use super::linkage::{turn_angle, Loop, LoopPose};
+use super::linkage::{Loop, LoopPose};
 use super::search::{candidate, candidates, check_pair, search_failure, Candidate};
 use super::{
     failure, mm, FollowStation, FourBar, FourBarSearch, FourBarSpec, FourBarSynthesis, CLEAR_FINALISTS, FINALISTS,
@@ -12,6 +12,7 @@ use super::{
 };
 use crate::error::{Error, Result, SynthesisDefect};
 use crate::placement::{place_screw_jack, strut_top, JackSize, ScrewJackChoice, PLACEMENT_SAMPLES};
+use crate::rocker_drive::turn_angle;
 use crate::rocker_drive::RockerDrive;
 use crate::seam::FlapMechanism;
 
@@ -67,14 +68,7 @@ impl FourBar {
             None => grid,
         };
         let fixed_pair = spec.forward_pivot.is_some() && spec.aft_pivot.is_some();
-        let section_bottom = spec
-            .outline
-            .wing
-            .iter()
-            .chain(&spec.outline.flap)
-            .flatten()
-            .map(|p| p.y)
-            .fold(f64::INFINITY, f64::min);
+        let section_bottom = spec.outline.section_bottom();
         let mut feasible: Vec<(f64, f64, Loop)> = Vec::new();
         let mut last_defect = None;
         for first in &forward {
@@ -158,15 +152,7 @@ impl FourBar {
     /// Depth of every solid of the mechanism over the deployment below the stowed section's
     /// lowest point (m).
     pub(super) fn whole_depth(&self) -> Result<f64> {
-        let section_bottom = self
-            .spec
-            .outline
-            .wing
-            .iter()
-            .chain(&self.spec.outline.flap)
-            .flatten()
-            .map(|p| p.y)
-            .fold(f64::INFINITY, f64::min);
+        let section_bottom = self.spec.outline.section_bottom();
         let mut lowest = f64::INFINITY;
         for input in self.input_range().samples(PLACEMENT_SAMPLES + 1) {
             let pose = FlapMechanism::pose(self, input)?;

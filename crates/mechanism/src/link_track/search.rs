@@ -1,0 +1,290 @@
+//! The link-track's synthesis from three precision positions, and the search over its free
+//! choices.
+//!
+//! - **The carriage on a straight track.** For a track direction d, the carriage point C
+//!   of the flap whose three positions lie on one line along d solves two linear equations:
+//!   (T_i C - C) x d = 0 for take-off and landing, i.e. ((R_i - I)^T m) · C = -m · t_i with
+//!   m = (d_y, -d_x). The free choice is the track's slope.
+//! - **The link.** For a fixed pivot O, the flap point A whose three positions lie on a
+//!   circle about O solves two linear equations: |T_i A - O|² = |A - O|², i.e.
+//!   2 (R_i^T (t_i - O) + O) · A = |O|² - |t_i - O|². The free choice is O.
+//!
+//! The search takes track directions round the circle and fixed pivots on a grid below the
+//! wing, keeps the pairs whose carriage and link pivot sit on brackets under
+//! the flap, reach the settings in order, stay above the minimum transmission angle, keep
+//! the flap off the wing's trailing edge and the links out of the sections, and picks the
+//! shallowest. Every rejection is counted ([`LinkTrackSearch`]).
+
+use nalgebra::{Matrix2, Point2, Unit, Vector2};
+
+use super::linkage::Loop;
+use super::{LinkTrackSearch, LinkTrackSpec};
+use crate::error::SynthesisDefect;
+use crate::outline::{inside, segment_meets, vertical_span};
+use crate::precision::PrecisionPosition;
+use crate::rocker_drive::turn_angle;
+
+/// Loop samples of the feasibility check over the deployment.
+pub(super) const LOOP_SAMPLES: usize = 48;
+/// Track directions tried: every 5 deg round the circle (the carriage's three positions
+/// decide which way it runs; a flap that mostly turns puts the collinear points low
+/// under it, running forward, or inside it, running steeply down aft).
+const SLOPES: usize = 72;
+/// Fixed-pivot grid: columns and rows.
+const PIVOT_COLUMNS: usize = 12;
+const PIVOT_ROWS: usize = 8;
+/// Deepest bracket under the flap, fraction of its chord.
+const MAX_BRACKET_DEPTH: f64 = 1.0;
+/// Largest link rotation (rad).
+const MAX_LINK_ROTATION_RAD: f64 = 150.0 * std::f64::consts::PI / 180.0;
+
+/// A feasible loop and what it measures.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Found {
+    pub(super) loop_: Loop,
+    /// Link rotation to take-off and landing (rad).
+    pub(super) turns: [f64; 2],
+    /// Sampled smallest transmission angle (rad).
+    pub(super) min_transmission: f64,
+    /// Depth of the lowest pivot, track end or pin path below the stowed section (m).
+    pub(super) depth: f64,
+}
+
+/// The point whose three positions under `positions` lie on one line along `d`.
+pub(super) fn carriage_point(positions: &[PrecisionPosition; 2], d: Vector2<f64>) -> Option<Point2<f64>> {
+    let m = Vector2::new(d.y, -d.x);
+    let mut rows = Matrix2::zeros();
+    let mut rhs = Vector2::zeros();
+    for (k, position) in positions.iter().enumerate() {
+        let r = position.flap.rotation.to_rotation_matrix().into_inner() - Matrix2::identity();
+        let row = r.transpose() * m;
+        rows[(k, 0)] = row.x;
+        rows[(k, 1)] = row.y;
+        rhs[k] = -m.dot(&position.flap.translation.vector);
+    }
+    solve(rows, rhs)
+}
+
+/// The point whose three positions under `positions` lie on one circle about `o`.
+pub(super) fn link_point(positions: &[PrecisionPosition; 2], o: Point2<f64>) -> Option<Point2<f64>> {
+    let mut rows = Matrix2::zeros();
+    let mut rhs = Vector2::zeros();
+    for (k, position) in positions.iter().enumerate() {
+        let r = position.flap.rotation.to_rotation_matrix().into_inner();
+        let t = position.flap.translation.vector;
+        let row = (r.transpose() * (t - o.coords) + o.coords) * 2.0;
+        rows[(k, 0)] = row.x;
+        rows[(k, 1)] = row.y;
+        rhs[k] = o.coords.norm_squared() - (t - o.coords).norm_squared();
+    }
+    solve(rows, rhs)
+}
+
+fn solve(rows: Matrix2<f64>, rhs: Vector2<f64>) -> Option<Point2<f64>> {
+    let scale = rows.abs().max();
+    if scale.is_nan() || scale <= 0.0 || rows.determinant().abs() <= 1e-12 * scale * scale {
+        return None;
+    }
+    let p = rows.try_inverse()? * rhs;
+    p.iter().all(|v| v.is_finite()).then(|| Point2::from(p))
+}
+
+/// True when `p` hangs below the stowed flap on a bracket: within the flap's chord, between
+/// 2 % and [`MAX_BRACKET_DEPTH`] of its chord below its lower surface.
+fn on_bracket(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool {
+    vertical_span(&spec.outline.flap, p.x).is_some_and(|(lo, _)| {
+        let depth = lo - p.y;
+        depth >= 0.02 * flap_chord && depth <= MAX_BRACKET_DEPTH * flap_chord
+    })
+}
+
+/// True when the carriage pin `p` can sit on the stowed flap: on a bracket under it, or
+/// inside its section on a fitting at least 2 % of the chord below the upper surface (the
+/// track then enters the flap through a slot in its lower skin, as the tracks of many
+/// transport flaps do).
+fn carriage_place(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool {
+    vertical_span(&spec.outline.flap, p.x)
+        .is_some_and(|(lo, hi)| p.y <= hi - 0.02 * flap_chord && lo - p.y <= MAX_BRACKET_DEPTH * flap_chord)
+}
+
+/// Carriage candidates: (track direction, carriage point) for each slope whose carriage
+/// sits on a bracket and runs aft to take-off and further to landing.
+pub(super) fn carriages(
+    spec: &LinkTrackSpec,
+    search: &mut LinkTrackSearch,
+    flap_chord: f64,
+) -> Vec<(Unit<Vector2<f64>>, Point2<f64>)> {
+    let positions = [spec.takeoff, spec.landing];
+    let slopes: Vec<f64> = match spec.track_slope_rad {
+        Some(slope) => vec![slope],
+        None => (0..SLOPES)
+            .map(|k| (-180.0 + 360.0 * k as f64 / SLOPES as f64).to_radians())
+            .collect(),
+    };
+    let mut found = Vec::new();
+    for slope in slopes {
+        search.slopes += 1;
+        let d = super::track_direction(slope);
+        let Some(c) = carriage_point(&positions, d.into_inner()) else {
+            search.no_line += 1;
+            continue;
+        };
+        if !carriage_place(spec, c, flap_chord) {
+            search.carriage_off_bracket += 1;
+            continue;
+        }
+        let travel = positions.map(|p| d.dot(&(p.flap * c - c)));
+        if !(travel[0] > 0.0 && travel[1] > travel[0]) {
+            search.order_defect += 1;
+            continue;
+        }
+        found.push((d, c));
+    }
+    found
+}
+
+/// Fixed-pivot candidates with their link points: the given pivot, or a grid below the
+/// wing from the cove lip to a flap chord ahead of it, 5 % to 60 % of the flap chord below
+/// the lower surface; each link point on a bracket under the flap.
+pub(super) fn links(
+    spec: &LinkTrackSpec,
+    search: &mut LinkTrackSearch,
+    flap_chord: f64,
+) -> Vec<(Point2<f64>, Point2<f64>)> {
+    let positions = [spec.takeoff, spec.landing];
+    let outline = &spec.outline;
+    let pivots: Vec<Point2<f64>> = match spec.link_pivot {
+        Some(o) => vec![o],
+        None => {
+            let Some(lip) = outline.cove_lower_lip_x() else {
+                return Vec::new();
+            };
+            let mut grid = Vec::new();
+            for i in 0..PIVOT_COLUMNS {
+                let x = lip + flap_chord * (-0.3 + 1.3 * i as f64 / (PIVOT_COLUMNS - 1) as f64);
+                let Some(bottom) = outline.lower_envelope(x) else {
+                    continue;
+                };
+                for j in 0..PIVOT_ROWS {
+                    grid.push(Point2::new(
+                        x,
+                        bottom - flap_chord * (0.05 + 0.55 * j as f64 / (PIVOT_ROWS - 1) as f64),
+                    ));
+                }
+            }
+            grid
+        }
+    };
+    let mut found = Vec::new();
+    for o in pivots {
+        search.pivots += 1;
+        if inside(&outline.wing, o) || outline.lower_envelope(o.x).is_some_and(|y| o.y >= y) {
+            search.pivot_outside_region += 1;
+            continue;
+        }
+        match link_point(&positions, o) {
+            Some(a) if on_bracket(spec, a, flap_chord) => found.push((o, a)),
+            Some(_) => search.pivot_outside_region += 1,
+            None => search.no_line += 1,
+        }
+    }
+    found
+}
+
+/// The loop of a link and a carriage if it moves the flap through the settings in order,
+/// above the minimum transmission angle, clear of the trailing edge and the sections.
+pub(super) fn check(
+    spec: &LinkTrackSpec,
+    (o, a): (Point2<f64>, Point2<f64>),
+    (d, c): (Unit<Vector2<f64>>, Point2<f64>),
+    section_bottom: f64,
+    margin: f64,
+) -> Result<Found, (SynthesisDefect, String)> {
+    let loop_ = Loop::new(o, a, c, d).ok_or((
+        SynthesisDefect::Toggle,
+        "the flap's line from the link to the carriage stands square to the track when stowed".to_string(),
+    ))?;
+    let turns = [spec.takeoff, spec.landing].map(|p| turn_angle(o, a, p.flap * a));
+    let ordered =
+        turns[0] * turns[1] > 0.0 && turns[0].abs() < turns[1].abs() && turns[1].abs() <= MAX_LINK_ROTATION_RAD;
+    if !ordered {
+        return Err((
+            SynthesisDefect::BranchOrOrder,
+            format!(
+                "the link turns {:.1} deg to take-off and {:.1} deg to landing: the settings are not reached in order",
+                turns[0].to_degrees(),
+                turns[1].to_degrees()
+            ),
+        ));
+    }
+    // Both settings on the stowed branch: the loop must put the carriage where they do.
+    for (position, turn) in [spec.takeoff, spec.landing].iter().zip(turns) {
+        let pose = loop_.at(turn).ok_or((
+            SynthesisDefect::NoRealSolution,
+            "the loop cannot close at a setting".to_string(),
+        ))?;
+        if (pose.c - position.flap * c).norm() > 1e-6 * loop_.span {
+            return Err((
+                SynthesisDefect::BranchOrOrder,
+                "the loop reaches a setting on the other branch".into(),
+            ));
+        }
+        if segment_meets(&spec.outline.wing, o, pose.a) {
+            return Err((
+                SynthesisDefect::PivotOutsideRegion,
+                "the link cuts the wing section".into(),
+            ));
+        }
+    }
+    let lip_tolerance = 1e-6 * spec.outline.chord_m().unwrap_or(1.0);
+    let sense = spec.landing.deflection_rad.signum();
+    let (mut min_transmission, mut previous, mut lowest) = (f64::INFINITY, 0.0, o.y);
+    for k in 0..=LOOP_SAMPLES {
+        let phi = turns[1] * k as f64 / LOOP_SAMPLES as f64;
+        let pose = loop_.at(phi).ok_or((
+            SynthesisDefect::NoRealSolution,
+            format!("the loop cannot close at {:.1} deg of link", phi.to_degrees()),
+        ))?;
+        min_transmission = min_transmission.min(pose.transmission);
+        if min_transmission < spec.min_transmission_angle_rad {
+            return Err((
+                SynthesisDefect::Toggle,
+                format!(
+                    "the transmission angle falls to {:.1} deg at {:.1} deg of link (minimum {:.1} deg)",
+                    pose.transmission.to_degrees(),
+                    phi.to_degrees(),
+                    spec.min_transmission_angle_rad.to_degrees()
+                ),
+            ));
+        }
+        if spec.outline.flap_near_lip(&pose.flap, lip_tolerance) {
+            return Err((
+                SynthesisDefect::PivotOutsideRegion,
+                format!(
+                    "the flap passes through or within {:.1} mm of the wing's trailing edge at {:.1} deg of link",
+                    1e3 * spec.outline.lip_clearance_m,
+                    phi.to_degrees()
+                ),
+            ));
+        }
+        if inside(&spec.outline.flap, pose.flap.inverse() * o) {
+            return Err((
+                SynthesisDefect::PivotOutsideRegion,
+                "the flap passes over the link's fixed pivot".into(),
+            ));
+        }
+        let (_, _, flap_rate) = loop_.rates(&pose);
+        let deflection = pose.flap.rotation.angle();
+        if flap_rate * turns[1].signum() * sense <= 0.0 || (k > 0 && (deflection - previous) * sense < 0.0) {
+            return Err((SynthesisDefect::BranchOrOrder, "the flap turns back part way".into()));
+        }
+        previous = deflection;
+        lowest = lowest.min(pose.a.y).min(pose.c.y);
+    }
+    Ok(Found {
+        loop_,
+        turns,
+        min_transmission,
+        depth: (section_bottom - lowest + margin).max(0.0),
+    })
+}

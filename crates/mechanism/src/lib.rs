@@ -74,6 +74,7 @@ mod angle;
 mod deployment;
 pub mod dropped_hinge;
 mod error;
+mod feasibility;
 pub mod flap_load;
 pub mod four_bar;
 mod kinetostatics;

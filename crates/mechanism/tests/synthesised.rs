@@ -482,3 +482,30 @@ fn link_track_choices_given_back_or_refused() {
         }
     }
 }
+
+/// The link-track's certified smallest transmission angle holds between the synthesis's
+/// 48 samples: 4001 evenly spaced poses never fall below it, and its sampled figure is
+/// what those poses find to within the sampling.
+#[test]
+fn link_track_certified_transmission_holds_between_samples() {
+    let link_track = LinkTrack::synthesise(link_track_spec()).unwrap();
+    let s = link_track.synthesis();
+    let load = landing_load();
+    let dense = link_track
+        .input_range()
+        .samples(4001)
+        .into_iter()
+        .map(|input| link_track.kinetostatics(input, &load).unwrap().transmission_angle_rad)
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        dense >= s.certified_min_transmission_angle_rad,
+        "{dense} < {}",
+        s.certified_min_transmission_angle_rad
+    );
+    assert!(dense <= s.min_transmission_angle_rad + 1e-12);
+    assert!(
+        s.min_transmission_angle_rad - dense < 0.01,
+        "{dense} against {}",
+        s.min_transmission_angle_rad
+    );
+}

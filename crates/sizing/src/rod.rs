@@ -183,10 +183,11 @@ pub fn buckling_radius_m(
 /// Outer radius at which every load's combined stress reaches at most the allowable:
 /// σ = |N| / A + M / (Z (1 - P_c / P_cr)) <= σ_allow, with Z = I / r the section modulus,
 /// P_c = max(-N, 0) the compression and P_cr the Euler load of the member (K L): the
-/// bending stress amplified by the beam-column factor 1 / (1 - P_c / P_cr) (Timoshenko &
-/// Gere, *Theory of Elastic Stability*, 1.11), since compression adds the member's own
-/// deflection to the moment's lever. σ falls monotonically with r above the Euler radius
-/// of P_c, so bisection from the largest single-requirement radius finds it, m.
+/// bending stress amplified by the approximate beam-column factor 1 / (1 - P_c / P_cr)
+/// (Timoshenko & Gere, *Theory of Elastic Stability*, chapter 1, beam-columns), since
+/// compression adds the member's own deflection to the moment's lever. σ falls
+/// monotonically with r above the Euler radius of P_c, so bisection from the largest
+/// single-requirement radius finds it, m.
 ///
 /// # Errors
 /// [`Error::OutOfRange`] for a non-finite axial force, a negative or non-finite moment,

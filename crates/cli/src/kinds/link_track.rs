@@ -32,9 +32,9 @@ pub struct LinkTrackScene {
     pub rotary: RotaryDriveScene,
 }
 
-/// Track slopes a scene may give, deg below aft (a track rising aft by 10 deg to one
-/// falling at 80 deg).
-const TRACK_SLOPE_DEG: (f64, f64) = (-10.0, 80.0);
+/// Track slopes a scene may give, deg below aft: any direction (the search goes round the
+/// circle, and a flap that mostly turns may want its carriage to run forward, at 130 deg).
+const TRACK_SLOPE_DEG: (f64, f64) = (-180.0, 180.0);
 
 impl KindScene for LinkTrackScene {
     fn check(&self, checker: &mut dyn KeyChecker, path: &str) {

@@ -222,27 +222,9 @@ impl FlapMechanism for FourBar {
     fn input_at_deflection(&self, deflection_rad: f64) -> Result<f64> {
         let travel = self.synthesis.crank_rotation_rad[1];
         let deflection = |phi: f64| self.loop_.at(phi).map_or(f64::NAN, |p| p.flap.rotation.angle());
-        let target = deflection_rad;
         let sense = self.spec.landing.deflection_rad.signum();
-        let (mut lo, mut hi) = (0.0, travel);
-        if (target - deflection(hi)) * sense >= 0.0 {
-            return Ok(self.drive.stroke_at(hi));
-        }
-        if (target - deflection(lo)) * sense <= 0.0 {
-            return Ok(self.drive.stroke_at(lo));
-        }
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if (deflection(mid) - target) * sense < 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-            if (hi - lo).abs() < 1e-15 {
-                break;
-            }
-        }
-        Ok(self.drive.stroke_at(0.5 * (lo + hi)))
+        let phi = crate::feasibility::parameter_at_deflection(travel, deflection, deflection_rad, sense);
+        Ok(self.drive.stroke_at(phi))
     }
 
     fn deflection_at_input(&self, input: f64) -> Result<f64> {

@@ -8,6 +8,7 @@ use nalgebra::Point2;
 use super::linkage::Loop;
 use super::{failure, mm, FourBarSearch, FourBarSpec, LOOP_SAMPLES};
 use crate::error::{Error, SynthesisDefect};
+use crate::feasibility::{check_deployment, DeploymentRules, LoopSample};
 use crate::outline::{inside, segment_meets, vertical_span};
 use crate::precision::{circle_centre, PrecisionPosition};
 use crate::rocker_drive::cross;
@@ -175,59 +176,23 @@ pub(super) fn check_pair(
             }
         }
     }
-    // A zero gap at a setting touches the lip to within rounding (1e-6 of the chord).
-    let lip_tolerance = 1e-6 * spec.outline.chord_m().unwrap_or(1.0);
-    let mut min_transmission = f64::INFINITY;
-    let mut previous = 0.0;
-    let sense = spec.landing.deflection_rad.signum();
-    for k in 0..=LOOP_SAMPLES {
+    let rules = DeploymentRules {
+        outline: &spec.outline,
+        min_transmission_rad: spec.min_transmission_angle_rad,
+        fixed_pivots: &[loop_.o1, loop_.o2],
+        deflection_sense: spec.landing.deflection_rad.signum(),
+        turn_sense: crank.turns[1].signum(),
+        driver: "crank",
+    };
+    let samples = (0..=LOOP_SAMPLES).map(|k| {
         let phi = crank.turns[1] * k as f64 / LOOP_SAMPLES as f64;
-        let Some(pose) = loop_.at(phi) else {
-            return Err((SynthesisDefect::NoRealSolution, "the loop cannot close part way".into()));
-        };
-        min_transmission = min_transmission.min(pose.transmission);
-        // The flap must keep its clearance from the wing's trailing edge between the settings.
-        if spec.outline.flap_near_lip(&pose.flap, lip_tolerance) {
-            return Err((
-                SynthesisDefect::PivotOutsideRegion,
-                format!(
-                    "the flap passes through or within {:.1} mm of the wing's trailing edge at {:.1} deg of crank",
-                    1e3 * spec.outline.lip_clearance_m,
-                    phi.to_degrees()
-                ),
-            ));
-        }
-        // The fixed pivots stay out of the moving flap.
-        let back = pose.flap.inverse();
-        if inside(&spec.outline.flap, back * loop_.o1) || inside(&spec.outline.flap, back * loop_.o2) {
-            return Err((
-                SynthesisDefect::PivotOutsideRegion,
-                format!(
-                    "the flap passes over a fixed pivot at {:.1} deg of crank",
-                    phi.to_degrees()
-                ),
-            ));
-        }
-        if min_transmission < spec.min_transmission_angle_rad {
-            return Err((
-                SynthesisDefect::Toggle,
-                format!(
-                    "the transmission angle falls to {:.1} deg at {:.1} deg of crank (minimum {:.1} deg)",
-                    pose.transmission.to_degrees(),
-                    phi.to_degrees(),
-                    spec.min_transmission_angle_rad.to_degrees()
-                ),
-            ));
-        }
-        let deflection = pose.flap.rotation.angle();
-        // The flap must turn forwards at every sample, the start included: a flap that
-        // first turns back reaches its stowed deflection twice.
-        let (_, flap_per_crank) = loop_.rates(&pose);
-        let forwards = flap_per_crank * crank.turns[1].signum() * sense > 0.0;
-        if !forwards || (k > 0 && (deflection - previous) * sense < 0.0) {
-            return Err((SynthesisDefect::BranchOrOrder, "the flap turns back part way".into()));
-        }
-        previous = deflection;
-    }
+        loop_.at(phi).map(|pose| LoopSample {
+            turn_rad: phi,
+            flap: pose.flap,
+            transmission_rad: pose.transmission,
+            flap_rate: loop_.rates(&pose).1,
+        })
+    });
+    let min_transmission = check_deployment(&rules, samples)?;
     Ok((loop_, min_transmission))
 }

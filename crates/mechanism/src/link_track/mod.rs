@@ -373,25 +373,12 @@ impl FlapMechanism for LinkTrack {
         let travel = self.input_range().deployed;
         let deflection = |input: f64| self.loop_pose(input).map_or(f64::NAN, |p| p.flap.rotation.angle());
         let sense = self.spec.landing.deflection_rad.signum();
-        if (deflection_rad - deflection(travel)) * sense >= 0.0 {
-            return Ok(travel);
-        }
-        if deflection_rad * sense <= 0.0 {
-            return Ok(0.0);
-        }
-        let (mut lo, mut hi) = (0.0, travel);
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if (deflection(mid) - deflection_rad) * sense < 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-            if hi - lo < 1e-15 {
-                break;
-            }
-        }
-        Ok(0.5 * (lo + hi))
+        Ok(crate::feasibility::parameter_at_deflection(
+            travel,
+            deflection,
+            deflection_rad,
+            sense,
+        ))
     }
 
     fn deflection_at_input(&self, input: f64) -> Result<f64> {

@@ -20,6 +20,7 @@ use nalgebra::{Matrix2, Point2, Unit, Vector2};
 use super::linkage::Loop;
 use super::{LinkTrackSearch, LinkTrackSpec};
 use crate::error::SynthesisDefect;
+use crate::feasibility::{check_deployment, DeploymentRules, LoopSample};
 use crate::outline::{inside, segment_meets, vertical_span};
 use crate::precision::PrecisionPosition;
 use crate::rocker_drive::turn_angle;
@@ -107,8 +108,8 @@ fn carriage_place(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool
         .is_some_and(|(lo, hi)| p.y <= hi - 0.02 * flap_chord && lo - p.y <= MAX_BRACKET_DEPTH * flap_chord)
 }
 
-/// Carriage candidates: (track direction, carriage point) for each slope whose carriage
-/// sits on a bracket and runs aft to take-off and further to landing.
+/// Carriage candidates: (track direction, carriage point) for each direction whose carriage
+/// can sit on the flap and runs along the track to take-off and further to landing.
 pub(super) fn carriages(
     spec: &LinkTrackSpec,
     search: &mut LinkTrackSearch,
@@ -236,51 +237,28 @@ pub(super) fn check(
             ));
         }
     }
-    let lip_tolerance = 1e-6 * spec.outline.chord_m().unwrap_or(1.0);
-    let sense = spec.landing.deflection_rad.signum();
-    let (mut min_transmission, mut previous, mut lowest) = (f64::INFINITY, 0.0, o.y);
-    for k in 0..=LOOP_SAMPLES {
+    let rules = DeploymentRules {
+        outline: &spec.outline,
+        min_transmission_rad: spec.min_transmission_angle_rad,
+        fixed_pivots: &[o],
+        deflection_sense: spec.landing.deflection_rad.signum(),
+        turn_sense: turns[1].signum(),
+        driver: "link",
+    };
+    let mut lowest = o.y;
+    let samples = (0..=LOOP_SAMPLES).map(|k| {
         let phi = turns[1] * k as f64 / LOOP_SAMPLES as f64;
-        let pose = loop_.at(phi).ok_or((
-            SynthesisDefect::NoRealSolution,
-            format!("the loop cannot close at {:.1} deg of link", phi.to_degrees()),
-        ))?;
-        min_transmission = min_transmission.min(pose.transmission);
-        if min_transmission < spec.min_transmission_angle_rad {
-            return Err((
-                SynthesisDefect::Toggle,
-                format!(
-                    "the transmission angle falls to {:.1} deg at {:.1} deg of link (minimum {:.1} deg)",
-                    pose.transmission.to_degrees(),
-                    phi.to_degrees(),
-                    spec.min_transmission_angle_rad.to_degrees()
-                ),
-            ));
-        }
-        if spec.outline.flap_near_lip(&pose.flap, lip_tolerance) {
-            return Err((
-                SynthesisDefect::PivotOutsideRegion,
-                format!(
-                    "the flap passes through or within {:.1} mm of the wing's trailing edge at {:.1} deg of link",
-                    1e3 * spec.outline.lip_clearance_m,
-                    phi.to_degrees()
-                ),
-            ));
-        }
-        if inside(&spec.outline.flap, pose.flap.inverse() * o) {
-            return Err((
-                SynthesisDefect::PivotOutsideRegion,
-                "the flap passes over the link's fixed pivot".into(),
-            ));
-        }
-        let (_, _, flap_rate) = loop_.rates(&pose);
-        let deflection = pose.flap.rotation.angle();
-        if flap_rate * turns[1].signum() * sense <= 0.0 || (k > 0 && (deflection - previous) * sense < 0.0) {
-            return Err((SynthesisDefect::BranchOrOrder, "the flap turns back part way".into()));
-        }
-        previous = deflection;
-        lowest = lowest.min(pose.a.y).min(pose.c.y);
-    }
+        loop_.at(phi).map(|pose| {
+            lowest = lowest.min(pose.a.y).min(pose.c.y);
+            LoopSample {
+                turn_rad: phi,
+                flap: pose.flap,
+                transmission_rad: pose.transmission,
+                flap_rate: loop_.rates(&pose).2,
+            }
+        })
+    });
+    let min_transmission = check_deployment(&rules, samples)?;
     Ok(Found {
         loop_,
         turns,

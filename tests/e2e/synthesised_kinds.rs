@@ -524,3 +524,48 @@ fn link_tracks_are_synthesised_checked_and_exported() {
         "{cuts:?}"
     );
 }
+
+/// The outboard flap on hooked-tracks (`kind = "hooked-track"`, nothing else changed): both
+/// stations meet landing exactly and report their take-off miss, the flap translates before
+/// it turns (the lead-in), the screw jacks are sized, the interference check runs, and the
+/// URDF reads back in urdf-rs within the URDF rules with the carriage on a prismatic joint
+/// and the roller's slot cut from the tree.
+#[test]
+fn hooked_tracks_are_synthesised_checked_and_exported() {
+    let text = scene_text().replace("kind = \"dropped-hinge\"", "kind = \"hooked-track\"");
+    let (dir, report) = designed(&text);
+    let stations = report["stations"].as_array().unwrap();
+    for station in &stations[2..] {
+        assert_eq!(station["mechanism"]["kind"], "hooked-track");
+        assert_eq!(station["mechanism"]["input"]["quantity"], "stroke");
+        let synthesis = &station["mechanism"]["details"]["synthesis"];
+        assert!(synthesis["precision_miss_m"].as_f64().unwrap() < 1e-9, "{synthesis}");
+        assert!(synthesis["takeoff_miss_m"].as_f64().unwrap().is_finite());
+        assert!(synthesis["lead_m"].as_f64().unwrap() > 0.0);
+        let landing = station["flap_position"]["settings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|s| s["setting"] == "landing")
+            .unwrap();
+        let (gap_miss, overlap_miss, allowed) = setting_misses(station, landing);
+        assert!(gap_miss.abs() <= allowed && overlap_miss.abs() <= allowed);
+        let name = station["name"].as_str().unwrap();
+        let jacks = report["sizing"]["screw_jacks"].as_array().unwrap();
+        assert!(jacks.iter().any(|j| j["station"] == name), "{jacks:?}");
+    }
+    let urdf = report["files"]["urdf"]["file"].as_str().unwrap();
+    let xml = std::fs::read_to_string(dir.path().join("out").join(urdf)).unwrap();
+    let robot = urdf_rs::read_from_string(&xml).expect("urdf-rs reads the file back");
+    assert!(flapwright_mechanism::urdf::check_rules(&robot).is_empty());
+    assert!(robot
+        .joints
+        .iter()
+        .any(|j| j.name == "ob-inner_rail" && j.joint_type == urdf_rs::JointType::Prismatic));
+    let cuts = report["files"]["urdf"]["cut_joints"].as_array().unwrap();
+    assert!(
+        cuts.iter()
+            .any(|c| c["station"] == "ob-inner" && c["joint"] == "G" && c["kind"] == "pin-in-straight-slot"),
+        "{cuts:?}"
+    );
+}

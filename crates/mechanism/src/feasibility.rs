@@ -34,6 +34,10 @@ pub(crate) struct DeploymentRules<'a> {
     pub turn_sense: f64,
     /// The driving link's name in messages ("crank", "link").
     pub driver: &'static str,
+    /// True for a kind that may hold the flap's deflection while it moves it (the
+    /// hooked-track's lead-in translates it): a zero rotation rate is then no defect, a
+    /// negative one still is.
+    pub may_dwell: bool,
 }
 
 /// The smallest transmission angle over `samples` (the stowed one first), or the first
@@ -84,7 +88,8 @@ pub(crate) fn check_deployment(
         // The flap must turn forwards at every sample, the start included: a flap that
         // first turns back reaches its stowed deflection twice.
         let deflection = sample.flap.rotation.angle();
-        let forwards = sample.flap_rate * rules.turn_sense * rules.deflection_sense > 0.0;
+        let rate = sample.flap_rate * rules.turn_sense * rules.deflection_sense;
+        let forwards = rate > 0.0 || (rules.may_dwell && rate == 0.0);
         if !forwards || (k > 0 && (deflection - previous) * rules.deflection_sense < 0.0) {
             return Err((SynthesisDefect::BranchOrOrder, "the flap turns back part way".into()));
         }
@@ -116,4 +121,23 @@ pub(crate) fn parameter_at_deflection(end: f64, deflection: impl Fn(f64) -> f64,
         }
     }
     0.5 * (lo + hi)
+}
+
+/// The flap chord of a synthesis's station, after checking its settings are finite: the
+/// first step of every kind synthesised from the flap settings. Errors: a setting that is
+/// not finite, or no flap section, as [`SynthesisDefect::MissingPositions`] with `detail`.
+pub(crate) fn settings_and_flap_chord(
+    positions: &[crate::precision::PrecisionPosition],
+    outline: &StationOutline,
+) -> Result<f64, (SynthesisDefect, String)> {
+    let finite = |p: &crate::precision::PrecisionPosition| {
+        p.deflection_rad.is_finite() && p.flap.translation.vector.iter().all(|v| v.is_finite())
+    };
+    if !positions.iter().all(finite) {
+        return Err((SynthesisDefect::MissingPositions, "a setting is not finite".into()));
+    }
+    outline.flap_chord().map(|(_, _, chord)| chord).ok_or((
+        SynthesisDefect::MissingPositions,
+        "the station has no flap section".into(),
+    ))
 }

@@ -233,6 +233,47 @@ impl StationOutline {
         }
     }
 
+    /// The rear spar's web in this plane, the aft-most tall structure section ahead of the
+    /// cove: its aft face x and the wing's lower and upper skin there (m). The trailing-edge
+    /// bay behind it is open (skins, ribs and the mechanism), so an actuator may sit on the
+    /// web (`003_...` Fig. 6). `None` without such a web.
+    pub fn rear_web(&self) -> Option<(f64, f64, f64)> {
+        let lip = self.cove_lower_lip_x()?;
+        self.structure
+            .iter()
+            .filter_map(|polygon| {
+                let (aft, fore) = extent_x(std::slice::from_ref(polygon))?;
+                let (lo, hi) = polygon.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                    (lo.min(p.y), hi.max(p.y))
+                });
+                (hi - lo >= 3.0 * (fore - aft) && aft > lip).then_some(aft)
+            })
+            .min_by(f64::total_cmp)
+            .and_then(|aft| vertical_span(&self.wing, aft).map(|(lo, hi)| (aft, lo, hi)))
+    }
+
+    /// True when the segment `a`-`b` may pass where it does through the wing section: every
+    /// sampled point inside the wing lies in the trailing-edge bay (ahead of the cove's
+    /// lower lip, at least `margin` below the upper skin), so the segment crosses only the
+    /// lower skin or the cove wall, never the upper skin or the shroud over the flap.
+    pub fn through_bay_only(&self, a: Point2<f64>, b: Point2<f64>, margin: f64) -> bool {
+        let Some(lip) = self.cove_lower_lip_x() else {
+            return false;
+        };
+        const SAMPLES: usize = 32;
+        (0..=SAMPLES).all(|k| {
+            let p = a + (b - a) * (k as f64 / SAMPLES as f64);
+            !inside(&self.wing, p)
+                || (p.x >= lip && vertical_span(&self.wing, p.x).is_some_and(|(_, hi)| p.y <= hi - margin))
+        })
+    }
+
+    /// How far `p` lies below the stowed wing's and flap's lower contour at its x (m;
+    /// negative above it); `None` beyond the sections' chord.
+    pub fn depth_below(&self, p: Point2<f64>) -> Option<f64> {
+        self.lower_envelope(p.x).map(|y| y - p.y)
+    }
+
     /// Where the wing's lower skin ends at the cove (m): the flap's leading edge x or the
     /// wing's aft end, whichever lies further forward. Supports fixed to the lower skin are
     /// placed ahead of it.

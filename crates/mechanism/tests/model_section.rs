@@ -5,6 +5,7 @@
 
 use flapwright_mechanism::dropped_hinge::{DroppedHingeActuator, DroppedHingeSpec};
 use flapwright_mechanism::four_bar::FourBarSpec;
+use flapwright_mechanism::hooked_track::HookedTrackSpec;
 use flapwright_mechanism::link_track::LinkTrackSpec;
 use flapwright_mechanism::{FlapMass, LinkHardware, PrecisionPosition, RotaryDrive, ScrewDrive, StationOutline};
 use flapwright_planes::FlapBehindWing;
@@ -143,6 +144,23 @@ pub fn link_track_spec() -> LinkTrackSpec {
             deployment_time_s: 20.0,
             efficiency: 0.9,
         },
+        hardware: LinkHardware::for_flap_chord(0.8),
+        outline,
+    }
+}
+
+pub fn hooked_track_spec() -> HookedTrackSpec {
+    let outline = outline();
+    let (takeoff, landing) = settings(&outline);
+    HookedTrackSpec {
+        takeoff,
+        landing,
+        forward_attachment: None,
+        aft_attachment: None,
+        lead_fraction: None,
+        min_transmission_angle_rad: 30f64.to_radians(),
+        flap_mass: flap_mass(),
+        screw_drive: drive(),
         hardware: LinkHardware::for_flap_chord(0.8),
         outline,
     }

@@ -7,6 +7,7 @@
 mod circular_arc_track;
 mod dropped_hinge;
 mod four_bar;
+mod hooked_track;
 mod link_track;
 
 use std::sync::Arc;
@@ -17,6 +18,7 @@ use serde::Deserialize;
 pub use circular_arc_track::CircularArcTrackScene;
 pub use dropped_hinge::DroppedHingeScene;
 pub use four_bar::FourBarScene;
+pub use hooked_track::HookedTrackScene;
 pub use link_track::LinkTrackScene;
 
 use crate::scene::limits::{FLAP_MASS_KG, SCREW_FRICTION, SCREW_MEAN_RADIUS_M};
@@ -308,11 +310,20 @@ pub enum MechanismScene {
     FourBar(FourBarScene),
     /// Link-track with a rotary actuator, from the three settings (`003_...`).
     LinkTrack(LinkTrackScene),
+    /// Hooked-track with a screw jack along its rail, from the stowed and landing settings
+    /// (`003_...`).
+    HookedTrack(HookedTrackScene),
 }
 
 impl MechanismScene {
     /// The `kind` values, as written in the scene.
-    pub const KINDS: &'static [&'static str] = &["circular-arc-track", "dropped-hinge", "four-bar", "link-track"];
+    pub const KINDS: &'static [&'static str] = &[
+        "circular-arc-track",
+        "dropped-hinge",
+        "four-bar",
+        "link-track",
+        "hooked-track",
+    ];
 
     /// The kind behind the variant: everything else reaches the kind through it.
     pub fn kind(&self) -> &dyn KindScene {
@@ -321,6 +332,7 @@ impl MechanismScene {
             Self::DroppedHinge(m) => m,
             Self::FourBar(m) => m,
             Self::LinkTrack(m) => m,
+            Self::HookedTrack(m) => m,
         }
     }
 }
@@ -352,6 +364,7 @@ impl<'de> Deserialize<'de> for MechanismScene {
             "dropped-hinge" => variant::<_, D::Error>(table).map(Self::DroppedHinge),
             "four-bar" => variant::<_, D::Error>(table).map(Self::FourBar),
             "link-track" => variant::<_, D::Error>(table).map(Self::LinkTrack),
+            "hooked-track" => variant::<_, D::Error>(table).map(Self::HookedTrack),
             other => Err(D::Error::custom(crate::scene::parse::nested_error_at(
                 "kind",
                 &format!(

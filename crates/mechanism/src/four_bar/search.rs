@@ -183,6 +183,7 @@ pub(super) fn check_pair(
         deflection_sense: spec.landing.deflection_rad.signum(),
         turn_sense: crank.turns[1].signum(),
         driver: "crank",
+        may_dwell: false,
     };
     let samples = (0..=LOOP_SAMPLES).map(|k| {
         let phi = crank.turns[1] * k as f64 / LOOP_SAMPLES as f64;

@@ -156,24 +156,8 @@ impl LinkTrack {
     /// ([`Error::Synthesis`]): no feasible pair, with the dominant defect and the counts;
     /// given choices that fail, with their defect.
     pub fn synthesise(spec: LinkTrackSpec) -> Result<Self> {
-        let positions = [spec.takeoff, spec.landing];
-        if positions
-            .iter()
-            .any(|p| !p.deflection_rad.is_finite() || !p.flap.translation.vector.iter().all(|v| v.is_finite()))
-        {
-            return Err(failure(
-                SynthesisDefect::MissingPositions,
-                "a setting is not finite".into(),
-            ));
-        }
-        let (_, _, flap_chord) = spec.outline.flap_chord().ok_or_else(|| {
-            failure(
-                SynthesisDefect::MissingPositions,
-                "the station has no flap section".into(),
-            )
-        })?;
-        let section_bottom = spec.outline.section_bottom();
-        let margin = spec.hardware.link_radius_m;
+        let flap_chord = crate::feasibility::settings_and_flap_chord(&[spec.takeoff, spec.landing], &spec.outline)
+            .map_err(|(defect, detail)| failure(defect, detail))?;
         let mut counts = LinkTrackSearch::default();
         let carriages = search::carriages(&spec, &mut counts, flap_chord);
         let links = search::links(&spec, &mut counts, flap_chord);
@@ -182,7 +166,7 @@ impl LinkTrack {
         for link in &links {
             for carriage in &carriages {
                 counts.pairs += 1;
-                match search::check(&spec, *link, *carriage, section_bottom, margin) {
+                match search::check(&spec, *link, *carriage) {
                     Ok(found) => {
                         counts.feasible += 1;
                         if best.is_none_or(|b| found.depth < b.depth) {

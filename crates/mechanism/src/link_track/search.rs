@@ -34,6 +34,8 @@ const SLOPES: usize = 72;
 /// Fixed-pivot grid: columns and rows.
 const PIVOT_COLUMNS: usize = 12;
 const PIVOT_ROWS: usize = 8;
+/// Fixed pivots tried up the rear spar's web.
+const WEB_ROWS: usize = 12;
 /// Deepest bracket under the flap, fraction of its chord.
 const MAX_BRACKET_DEPTH: f64 = 1.0;
 /// Largest link rotation (rad).
@@ -47,7 +49,8 @@ pub(super) struct Found {
     pub(super) turns: [f64; 2],
     /// Sampled smallest transmission angle (rad).
     pub(super) min_transmission: f64,
-    /// Depth of the lowest pivot, track end or pin path below the stowed section (m).
+    /// How far the actuator, the link pin and the carriage reach below the stowed
+    /// sections' lower contour over the deployment (m).
     pub(super) depth: f64,
 }
 
@@ -173,13 +176,23 @@ pub(super) fn links(
                     ));
                 }
             }
+            // On the rear spar's web (`003_...` Fig. 6), clear of it by the actuator.
+            if let Some((face, lo, hi)) = outline.rear_web() {
+                let x = face - spec.hardware.jack_body_radius_m - spec.hardware.link_radius_m;
+                let inset = spec.hardware.jack_body_radius_m + spec.hardware.link_radius_m;
+                for j in 0..WEB_ROWS {
+                    let y = lo + inset + (hi - lo - 2.0 * inset) * j as f64 / (WEB_ROWS - 1) as f64;
+                    grid.push(Point2::new(x, y));
+                }
+            }
             grid
         }
     };
     let mut found = Vec::new();
     for o in pivots {
         search.pivots += 1;
-        if inside(&outline.wing, o) || outline.lower_envelope(o.x).is_some_and(|y| o.y >= y) {
+        let below = !inside(&outline.wing, o) && outline.lower_envelope(o.x).is_none_or(|y| o.y < y);
+        if !(below || on_web(outline, o)) {
             search.pivot_outside_region += 1;
             continue;
         }
@@ -192,14 +205,20 @@ pub(super) fn links(
     found
 }
 
+/// True when the fixed pivot `o` sits in the trailing-edge bay behind the rear spar's web
+/// (inside the wing section, ahead of the cove).
+fn on_web(outline: &crate::outline::StationOutline, o: Point2<f64>) -> bool {
+    inside(&outline.wing, o)
+        && outline.rear_web().is_some_and(|(face, _, _)| o.x < face)
+        && outline.cove_lower_lip_x().is_some_and(|lip| o.x > lip)
+}
+
 /// The loop of a link and a carriage if it moves the flap through the settings in order,
 /// above the minimum transmission angle, clear of the trailing edge and the sections.
 pub(super) fn check(
     spec: &LinkTrackSpec,
     (o, a): (Point2<f64>, Point2<f64>),
     (d, c): (Unit<Vector2<f64>>, Point2<f64>),
-    section_bottom: f64,
-    margin: f64,
 ) -> Result<Found, (SynthesisDefect, String)> {
     let loop_ = Loop::new(o, a, c, d).ok_or((
         SynthesisDefect::Toggle,
@@ -218,6 +237,12 @@ pub(super) fn check(
             ),
         ));
     }
+    if on_web(&spec.outline, o) && !spec.outline.through_bay_only(o, a, spec.hardware.link_radius_m) {
+        return Err((
+            SynthesisDefect::PivotOutsideRegion,
+            "the link from the spar web crosses the upper skin or the shroud when stowed".into(),
+        ));
+    }
     // Both settings on the stowed branch: the loop must put the carriage where they do.
     for (position, turn) in [spec.takeoff, spec.landing].iter().zip(turns) {
         let pose = loop_.at(turn).ok_or((
@@ -230,7 +255,12 @@ pub(super) fn check(
                 "the loop reaches a setting on the other branch".into(),
             ));
         }
-        if segment_meets(&spec.outline.wing, o, pose.a) {
+        let link_clear = if on_web(&spec.outline, o) {
+            spec.outline.through_bay_only(o, pose.a, spec.hardware.link_radius_m)
+        } else {
+            !segment_meets(&spec.outline.wing, o, pose.a)
+        };
+        if !link_clear {
             return Err((
                 SynthesisDefect::PivotOutsideRegion,
                 "the link cuts the wing section".into(),
@@ -244,12 +274,19 @@ pub(super) fn check(
         deflection_sense: spec.landing.deflection_rad.signum(),
         turn_sense: turns[1].signum(),
         driver: "link",
+        may_dwell: false,
     };
-    let mut lowest = o.y;
+    // The fairing's depth: how far the actuator at O, the link pin and the carriage reach
+    // below the stowed sections' lower contour (as the fairing stage measures it).
+    let hw = &spec.hardware;
+    let below = |p: Point2<f64>, radius: f64| spec.outline.depth_below(p).map_or(0.0, |d| d + radius);
+    let mut depth = below(o, hw.jack_body_radius_m).max(0.0);
     let samples = (0..=LOOP_SAMPLES).map(|k| {
         let phi = turns[1] * k as f64 / LOOP_SAMPLES as f64;
         loop_.at(phi).map(|pose| {
-            lowest = lowest.min(pose.a.y).min(pose.c.y);
+            depth = depth
+                .max(below(pose.a, hw.link_radius_m))
+                .max(below(pose.c, hw.nut_radius_m));
             LoopSample {
                 turn_rad: phi,
                 flap: pose.flap,
@@ -263,6 +300,6 @@ pub(super) fn check(
         loop_,
         turns,
         min_transmission,
-        depth: (section_bottom - lowest + margin).max(0.0),
+        depth,
     })
 }

@@ -569,3 +569,58 @@ fn hooked_tracks_are_synthesised_checked_and_exported() {
         "{cuts:?}"
     );
 }
+
+/// `flapwright study` on one station of the transport wing with two kinds: one folder and
+/// report per kind, study.json with each kind's figures (finite fairing depth and length,
+/// actuator load, work; the landing setting met), the chart page, and a ranking of both.
+#[test]
+fn a_study_compares_kinds_at_a_station() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("transport.toml");
+    std::fs::write(&scene, scene_text()).unwrap();
+    let out = dir.path().join("study");
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_flapwright"))
+        .args([
+            "study",
+            scene.to_str().unwrap(),
+            "--kinds",
+            "hooked-track,link-track",
+            "--station",
+            "ob-outer",
+            "--out",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let study: Value = serde_json::from_str(&std::fs::read_to_string(out.join("study.json")).unwrap()).unwrap();
+    let kinds = study["kinds"].as_array().unwrap();
+    assert_eq!(kinds.len(), 2);
+    for kind in kinds {
+        assert!(out.join(kind["kind"].as_str().unwrap()).join("report.json").is_file());
+        let stations = kind["stations"].as_array().unwrap();
+        assert_eq!(stations.len(), 1, "{kind}");
+        let f = &stations[0];
+        assert_eq!(f["station"], "ob-outer");
+        for key in [
+            "fairing_depth_percent_flap_chord",
+            "fairing_length_percent_flap_chord",
+            "max_actuator_load",
+            "work_per_deployment_j",
+        ] {
+            assert!(f[key].as_f64().unwrap() > 0.0, "{key}: {f}");
+        }
+        let landing = f["setting_misses"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["setting"] == "landing")
+            .unwrap();
+        assert!(landing["gap_miss_percent_chord"].as_f64().unwrap().abs() < 0.5);
+        assert!(!f["gap_overlap"].as_array().unwrap().is_empty());
+    }
+    let ranking = study["ranking"].as_array().unwrap();
+    assert_eq!(ranking[0]["kinds"].as_array().unwrap().len(), 2);
+    let svg = std::fs::read_to_string(out.join("study-ob-outer.svg")).unwrap();
+    assert!(svg.contains("hooked-track") && svg.contains("link-track"));
+}

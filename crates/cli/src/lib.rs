@@ -9,6 +9,7 @@
 //! - [`report`]: the `report.json` schema (documented in the README).
 //! - [`junit`]: JUnit XML of the interference check, for CI.
 //! - [`output`]: writes into a temporary folder and moves it into place only on success.
+//! - [`study`]: the trade study of mechanism kinds at the scene's stations.
 //!
 //! Libraries below return typed errors; this crate alone decides wording and exit codes.
 
@@ -18,3 +19,4 @@ pub mod output;
 pub mod pipeline;
 pub mod report;
 pub mod scene;
+pub mod study;

@@ -64,6 +64,23 @@ enum Command {
         #[arg(long)]
         svg: bool,
     },
+    /// Compare mechanism kinds at the scene's stations (`003_...` Table 1, Fig. 17): each
+    /// kind designed in place of the stations' mechanisms, its figures in study.json, gap
+    /// and overlap charts per station, and a ranking.
+    Study {
+        /// Scene file (TOML). Without it, the embedded default scene.
+        scene: Option<PathBuf>,
+        /// Output folder (replaced atomically on success).
+        #[arg(long, default_value = "flapwright-study")]
+        out: PathBuf,
+        /// Kinds to compare, comma-separated (default: dropped-hinge, four-bar,
+        /// link-track, hooked-track).
+        #[arg(long, value_delimiter = ',')]
+        kinds: Vec<String>,
+        /// Study only these stations (and their flaps), comma-separated; default all.
+        #[arg(long, value_delimiter = ',')]
+        station: Vec<String>,
+    },
     /// Check clearances only: exit 0 when every clearance meets the scene's minimum, 1 when
     /// any pair interferes or comes closer, 2 for bad input.
     Check {
@@ -127,11 +144,21 @@ fn json_error(failure: &Failure) -> String {
 }
 
 fn run(cli: &Cli) -> Result<(), Failure> {
+    if let Some(Command::Study {
+        scene,
+        out,
+        kinds,
+        station,
+    }) = &cli.command
+    {
+        return study(cli, scene.as_deref(), out, kinds, station);
+    }
     let (scene_path, out, mode, junit) = match &cli.command {
         None => (None, PathBuf::from("flapwright-out"), Mode::Design, None),
         Some(Command::Design { scene, out }) => (scene.clone(), out.clone(), Mode::Design, None),
         Some(Command::Check { scene, out, junit }) => (scene.clone(), out.clone(), Mode::Check, junit.clone()),
         Some(Command::Export { scene, out, .. }) => (scene.clone(), out.clone(), Mode::Design, None),
+        Some(Command::Study { .. }) => unreachable!("handled above"),
     };
     let (text, scene_dir) = read_scene_text(scene_path.as_deref())?;
     let file_label = scene_path
@@ -271,6 +298,54 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 written.join("report.json").display()
             ),
         });
+    }
+    Ok(())
+}
+
+/// `flapwright study`: validates the scene as given, then designs each kind in place of its
+/// stations' mechanisms and prints the comparison.
+fn study(
+    cli: &Cli,
+    scene_path: Option<&Path>,
+    out: &Path,
+    kinds: &[String],
+    stations: &[String],
+) -> Result<(), Failure> {
+    use flapwright::kinds::MechanismScene;
+    let (text, scene_dir) = read_scene_text(scene_path)?;
+    let label = scene_path.map_or("(embedded default)".into(), |p| p.display().to_string());
+    let bad_input = |error: anyhow::Error| Failure {
+        code: EXIT_BAD_INPUT,
+        error,
+    };
+    Scene::from_file_text(&text, &label, scene_dir.as_deref())
+        .map_err(|e| bad_input(anyhow::Error::new(e).context(format!("invalid scene {label}"))))?;
+    let kinds: Vec<String> = if kinds.is_empty() {
+        flapwright::study::DEFAULT_KINDS.iter().map(|k| k.to_string()).collect()
+    } else {
+        kinds.to_vec()
+    };
+    if let Some(unknown) = kinds.iter().find(|k| !MechanismScene::KINDS.contains(&k.as_str())) {
+        return Err(bad_input(anyhow::anyhow!(
+            "--kinds {unknown}: unknown mechanism kind; one of {}",
+            MechanismScene::KINDS.join(", ")
+        )));
+    }
+    let staged = StagedDir::create(out, scene_path, cli.force)?;
+    let study = flapwright::study::run(&text, scene_dir.as_deref(), &label, &kinds, stations, &staged)?;
+    let (written, _) = staged
+        .commit()
+        .with_context(|| format!("moving results into {}", out.display()))?;
+    if cli.json {
+        println!("{}", serde_json::to_string(&study)?);
+    } else if !cli.quiet {
+        println!("{}", flapwright::study::table(&study));
+        println!(
+            "studied \"{}\": {} kind(s) -> {}",
+            study.scene,
+            study.kinds.len(),
+            written.display()
+        );
     }
     Ok(())
 }

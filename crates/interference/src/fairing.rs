@@ -1,6 +1,8 @@
 //! Fairing depth (thesis `000`, Ch. 5: the figure of merit): how far below the local lower
 //! surface of wing and stowed flap the mechanism reaches over the deployment, measured in
-//! the station plane.
+//! the station plane; and fairing length (`003_...` Table 1): the chordwise extent of what
+//! the fairing must cover, every mechanism point below the lower surface (beyond the
+//! sections' ends, below the surface's nearest end) over the deployment.
 
 use nalgebra::Point2;
 use serde::Serialize;
@@ -33,6 +35,11 @@ pub struct FairingDepth {
     pub at_parameter: f64,
     /// The deepest point, station frame (m).
     pub point_st: [f64; 2],
+    /// Chordwise extent of the mechanism below the lower surface over the deployment (m);
+    /// 0 when nothing protrudes.
+    pub length_m: f64,
+    /// The same in % of the local flap chord.
+    pub length_percent_flap_chord: f64,
 }
 
 /// Lowest y of the contour at `x` (edges of all `polygons` that span x), if any.
@@ -50,7 +57,25 @@ fn lower_surface_y(polygons: &[Vec<Point2<f64>>], x: f64) -> Option<f64> {
     lowest
 }
 
-/// Fairing depth over `parameters` (deployment parameters, e.g. drive fractions) of the
+/// The lower surface's y at `x`, or at the nearer end of the contour beyond its ends.
+fn lower_surface_or_end_y(polygons: &[Vec<Point2<f64>>], x: f64) -> Option<f64> {
+    lower_surface_y(polygons, x).or_else(|| {
+        let xs = polygons.iter().flatten().map(|p| p.x);
+        let (lo, hi) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
+        if lo > hi {
+            return None;
+        }
+        // Just inside the end, where a vertical meets an edge.
+        let end = if x < lo {
+            lo + 1e-9 * (hi - lo)
+        } else {
+            hi - 1e-9 * (hi - lo)
+        };
+        lower_surface_y(polygons, end)
+    })
+}
+
+/// Fairing depth and length over `parameters` (deployment parameters, e.g. drive fractions) of the
 /// capsules `at(t)` gives,
 /// against the lower contour of `contour` (wing and stowed flap sections, station frame).
 /// Each capsule is sampled at `points_per_capsule` points (>= 2). Errors: the first that
@@ -68,12 +93,21 @@ pub fn fairing_depth<E>(
         part: None,
         at_parameter: 0.0,
         point_st: [0.0, 0.0],
+        length_m: 0.0,
+        length_percent_flap_chord: 0.0,
     };
+    let mut extent = (f64::INFINITY, f64::NEG_INFINITY);
     let n = points_per_capsule.max(2);
     for &t in parameters {
         for capsule in at(t)? {
             for k in 0..n {
                 let p = capsule.from + (capsule.to - capsule.from) * (k as f64 / (n - 1) as f64);
+                if lower_surface_or_end_y(contour, p.x).is_some_and(|y| p.y - capsule.radius_m < y) {
+                    extent = (
+                        extent.0.min(p.x - capsule.radius_m),
+                        extent.1.max(p.x + capsule.radius_m),
+                    );
+                }
                 let Some(surface) = lower_surface_y(contour, p.x) else {
                     continue;
                 };
@@ -85,13 +119,18 @@ pub fn fairing_depth<E>(
                         part: Some(capsule.part.clone()),
                         at_parameter: t,
                         point_st: [p.x, p.y - capsule.radius_m],
+                        ..deepest
                     };
                 }
             }
         }
     }
+    if extent.1 > extent.0 {
+        deepest.length_m = extent.1 - extent.0;
+    }
     if flap_chord_m > 0.0 {
         deepest.depth_percent_flap_chord = 100.0 * deepest.depth_m / flap_chord_m;
+        deepest.length_percent_flap_chord = 100.0 * deepest.length_m / flap_chord_m;
     }
     Ok(deepest)
 }
@@ -134,6 +173,49 @@ mod tests {
         })
         .unwrap();
         assert_eq!(outside.depth_m, 0.0);
+    }
+
+    #[test]
+    fn length_spans_what_hangs_below_including_beyond_the_trailing_edge() {
+        // The plate from x = 0 to 1 at y in [0, 0.1]; a rod of radius 0.01 below it from
+        // x = 0.2 to x = 1.5 (past the plate's end, below its end's lower surface), and a
+        // ball above the plate that does not count: length 1.3 + 2 x 0.01.
+        let plate = vec![vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 0.0),
+            Point2::new(1.0, 0.1),
+            Point2::new(0.0, 0.1),
+        ]];
+        let fairing = fairing_depth(&plate, 0.5, &[0.0], 8, |_| {
+            Ok::<_, Infallible>(vec![
+                PlanarCapsule {
+                    part: "rod".into(),
+                    from: Point2::new(0.2, -0.05),
+                    to: Point2::new(1.5, -0.05),
+                    radius_m: 0.01,
+                },
+                PlanarCapsule {
+                    part: "ball".into(),
+                    from: Point2::new(-0.5, 0.5),
+                    to: Point2::new(-0.5, 0.5),
+                    radius_m: 0.01,
+                },
+            ])
+        })
+        .unwrap();
+        assert!((fairing.length_m - 1.32).abs() < 1e-12, "{}", fairing.length_m);
+        assert!((fairing.length_percent_flap_chord - 264.0).abs() < 1e-9);
+        // Nothing below: no length.
+        let none = fairing_depth(&plate, 0.5, &[0.0], 2, |_| {
+            Ok::<_, Infallible>(vec![PlanarCapsule {
+                part: "ball".into(),
+                from: Point2::new(0.5, 0.5),
+                to: Point2::new(0.5, 0.5),
+                radius_m: 0.01,
+            }])
+        })
+        .unwrap();
+        assert_eq!((none.length_m, none.depth_m), (0.0, 0.0));
     }
 
     #[test]

@@ -284,9 +284,11 @@ pub fn write_svgs(
             .as_ref()
             .map(|f| {
                 format!(
-                    ", fairing depth {:.0} mm ({:.1} % flap chord)",
+                    ", fairing depth {:.0} mm ({:.1} % flap chord), length {:.0} mm ({:.0} %)",
                     f.depth_m * 1e3,
-                    f.depth_percent_flap_chord
+                    f.depth_percent_flap_chord,
+                    f.length_m * 1e3,
+                    f.length_percent_flap_chord
                 )
             })
             .unwrap_or_default();

@@ -54,6 +54,8 @@ pub struct MechanismReport {
     pub kind: &'static str,
     /// The actuator input: stroke (m) or angle (rad), stowed and deployed.
     pub input: InputRange,
+    /// The actuator: its type and nominal speed.
+    pub actuator: flapwright_mechanism::seam::Actuator,
     /// The kind's own record: its dimensions and what synthesis computed.
     pub details: serde_json::Value,
     /// One deployment per load case.
@@ -405,6 +407,7 @@ pub fn sweep_station(
     Ok(MechanismReport {
         kind: seam.kind(),
         input,
+        actuator: seam.actuator(),
         details: seam.details(),
         load_cases: deployments,
         flap_load_share: mechanism

@@ -208,6 +208,8 @@ mod tests {
             part: Some("inner.screw".into()),
             at_parameter: 0.5,
             point_st: [0.0, -0.1],
+            length_m: 0.6,
+            length_percent_flap_chord: 120.0,
         }
     }
 

@@ -9,10 +9,9 @@
 //! positions lie on a circle about a chosen fixed pivot. The free choices, the track slope
 //! and the link's fixed pivot, are the designer's or searched for the shallowest mechanism.
 //!
-//! Where `003_...` puts the rotary actuator on the rear spar web, here it sits at the
-//! link's fixed pivot below the lower skin: a link from the spar web would run through the
-//! trailing-edge bay, which the station's solid wing section (without skin cut-outs) does
-//! not leave open.
+//! The rotary actuator sits at the link's fixed pivot, searched below the lower skin and up
+//! the rear spar's web (`003_...` Fig. 6); from the web the link crosses the trailing-edge
+//! bay and leaves it through the lower skin or the cove wall, never the upper skin.
 //!
 //! Pose in closed form (the `linkage` module). Statics: the track pushes the flap only square to
 //! itself (N n at C); moments of the flap about A give N = -M_A / ((C - A) · d), the flap's
@@ -114,7 +113,8 @@ pub struct LinkTrackSynthesis {
     pub min_transmission_angle_rad: f64,
     /// A certified lower bound on it between samples (rad).
     pub certified_min_transmission_angle_rad: f64,
-    /// Depth of the pivots' and pins' paths below the stowed section (m).
+    /// How far the actuator, the link pin and the carriage reach below the stowed
+    /// sections' lower contour over the deployment (m): the fairing's depth.
     pub depth_below_section_m: f64,
     /// Largest distance between the mechanism's flap and each precision position at A and
     /// C (m).

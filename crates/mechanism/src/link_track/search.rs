@@ -9,11 +9,12 @@
 //!   circle about O solves two linear equations: |T_i A - O|² = |A - O|², i.e.
 //!   2 (R_i^T (t_i - O) + O) · A = |O|² - |t_i - O|². The free choice is O.
 //!
-//! The search takes track directions round the circle and fixed pivots on a grid below the
-//! wing, keeps the pairs whose carriage and link pivot sit on brackets under
-//! the flap, reach the settings in order, stay above the minimum transmission angle, keep
-//! the flap off the wing's trailing edge and the links out of the sections, and picks the
-//! shallowest. Every rejection is counted ([`LinkTrackSearch`]).
+//! The search takes track directions round the circle and fixed pivots on a grid below
+//! the wing and up the rear spar's web, keeps the pairs whose carriage and link pivot sit
+//! on brackets under the flap, reach the settings in order, stay above the minimum
+//! transmission angle, keep the flap off the wing's trailing edge and the links out of the
+//! sections, and picks the shallowest (the fairing's depth as the fairing stage measures
+//! it). Every rejection is counted ([`LinkTrackSearch`]).
 
 use nalgebra::{Matrix2, Point2, Unit, Vector2};
 

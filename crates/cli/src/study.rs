@@ -230,15 +230,7 @@ pub fn run(
     let ranking = station_names
         .iter()
         .map(|station| {
-            let mut ranked: Vec<(&str, &StationFigures)> = outcomes
-                .iter()
-                .filter_map(|o| {
-                    o.stations
-                        .iter()
-                        .find(|f| &f.station == station)
-                        .map(|f| (o.kind.as_str(), f))
-                })
-                .collect();
+            let mut ranked = at_station(&outcomes, station);
             ranked.sort_by(|a, b| rank(a.1).partial_cmp(&rank(b.1)).unwrap_or(std::cmp::Ordering::Equal));
             StationRanking {
                 station: station.clone(),
@@ -397,10 +389,9 @@ fn station_figures(report: &Value, station: &Value) -> StationFigures {
     }
 }
 
-/// Gap and overlap against deflection for every kind at `station`, targets marked.
-fn charts(study: &Study, station: &str) -> Vec<Plot> {
-    let figures: Vec<(&str, &StationFigures)> = study
-        .kinds
+/// Each kind's figures at `station`, in the order of `outcomes`.
+fn at_station<'a>(outcomes: &'a [KindOutcome], station: &str) -> Vec<(&'a str, &'a StationFigures)> {
+    outcomes
         .iter()
         .filter_map(|o| {
             o.stations
@@ -408,7 +399,12 @@ fn charts(study: &Study, station: &str) -> Vec<Plot> {
                 .find(|f| f.station == station)
                 .map(|f| (o.kind.as_str(), f))
         })
-        .collect();
+        .collect()
+}
+
+/// Gap and overlap against deflection for every kind at `station`, targets marked.
+fn charts(study: &Study, station: &str) -> Vec<Plot> {
+    let figures = at_station(&study.kinds, station);
     let plot = |title: &str, column: usize| {
         let mut series: Vec<Series> = figures
             .iter()

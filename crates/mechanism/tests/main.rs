@@ -2,6 +2,7 @@
 
 mod common;
 mod finite_differences;
+mod hooked_track;
 mod landing_gear;
 mod planar;
 mod properties;

@@ -10,11 +10,11 @@ use flapwright_mechanism::{Error, ExternalMoment, FlapNormalForce, LoadCase, Pre
 use nalgebra::{Isometry2, Point2};
 
 #[path = "model_section.rs"]
-mod model_section;
+pub(crate) mod model_section;
 
 use model_section::{dropped_hinge_spec, four_bar_spec, hooked_track_spec, link_track_spec, rotary_dropped_hinge_spec};
 
-fn landing_load() -> LoadCase {
+pub(crate) fn landing_load() -> LoadCase {
     LoadCase {
         name: "landing".into(),
         external_moment: ExternalMoment::Linear {
@@ -38,7 +38,7 @@ fn member_load(loads: &flapwright_mechanism::seam::Kinetostatics, name: &str) ->
 
 /// Where the mechanism puts the flap attachments at a setting's deflection, against the
 /// setting's displacement: the largest distance (m).
-fn miss(mechanism: &dyn FlapMechanism, position: &PrecisionPosition) -> f64 {
+pub(crate) fn miss(mechanism: &dyn FlapMechanism, position: &PrecisionPosition) -> f64 {
     let pose = mechanism
         .pose(mechanism.input_at_deflection(position.deflection_rad).unwrap())
         .unwrap();
@@ -511,111 +511,4 @@ fn link_track_certified_transmission_holds_between_samples() {
         "{dense} against {}",
         s.min_transmission_angle_rad
     );
-}
-
-/// The hooked-track meets stowed and landing to 1e-9 m at its carriage and roller and
-/// reports the take-off miss it measures; the carriage stays on its rail; the flap only
-/// translates over the lead-in and turns forwards on the hook, whose roller stays on its
-/// circle; the transmission angle stays above the minimum.
-#[test]
-fn hooked_track_meets_stowed_and_landing_and_translates_before_it_turns() {
-    let spec = hooked_track_spec();
-    let track = HookedTrack::synthesise(spec.clone()).unwrap();
-    let s = track.synthesis();
-    for position in [PrecisionPosition::stowed(), spec.landing] {
-        let m = miss(&track, &position);
-        assert!(m < 1e-9, "{}: {m}", position.name);
-    }
-    assert!((miss(&track, &spec.takeoff) - s.takeoff_miss_m).abs() < 1e-9);
-    assert!(s.precision_miss_m < 1e-9 && s.search.feasible > 0, "{:?}", s.search);
-    assert!(s.lead_m > 0.0 && s.lead_m < s.stroke_m);
-    let (f0, g0, d) = (s.forward_attachment_m, s.aft_attachment_m, s.rail_direction);
-    let load = landing_load();
-    let mut previous = 0.0;
-    let mut inputs = track.input_range().samples(41);
-    inputs.extend([0.5 * s.lead_m, s.lead_m]);
-    inputs.sort_by(f64::total_cmp);
-    for input in inputs {
-        let pose = track.pose(input).unwrap();
-        let (f, g) = (pose.point("F").unwrap(), pose.point("G").unwrap());
-        assert!((f - f0).perp(&d).abs() < 1e-9, "the carriage leaves its rail");
-        assert!(
-            ((f - f0).dot(&d) - input).abs() < 1e-9,
-            "the stroke is the carriage's travel"
-        );
-        if input <= s.lead_m {
-            assert!(pose.deflection_rad.abs() < 1e-12, "the flap turns in the lead-in");
-            assert!((g - g0 - d * input).norm() < 1e-9);
-        } else {
-            assert!(((g - s.hook_centre_m).norm() - s.hook_radius_m).abs() < 1e-9);
-        }
-        let loads = track.kinetostatics(input, &load).unwrap();
-        assert!(loads.transmission_angle_rad >= 30f64.to_radians() - 1e-9);
-        assert!(loads.screw_torques.is_some());
-        assert!(pose.deflection_rad >= previous - 1e-12, "the flap turns back");
-        previous = pose.deflection_rad;
-    }
-    // Dense poses stay above the certified transmission bound.
-    let dense = track
-        .input_range()
-        .samples(4001)
-        .into_iter()
-        .map(|input| track.kinetostatics(input, &load).unwrap().transmission_angle_rad)
-        .fold(f64::INFINITY, f64::min);
-    assert!(dense >= s.certified_min_transmission_angle_rad && dense <= s.min_transmission_angle_rad + 1e-12);
-}
-
-/// The hooked-track's rotation rate from its velocity analysis against finite differences
-/// of its poses, on the hook and in the lead-in (where it is zero): the virtual work of a
-/// unit couple on a massless flap is -dθ/ds.
-#[test]
-fn hooked_track_rates_match_finite_differences() {
-    let mut massless = hooked_track_spec();
-    massless.flap_mass.mass_kg = 0.0;
-    let track = HookedTrack::synthesise(massless).unwrap();
-    let couple = LoadCase {
-        name: "couple".into(),
-        external_moment: ExternalMoment::Constant(-1.0),
-        include_inertia: false,
-        flap_normal_force: None,
-    };
-    let s = track.synthesis().clone();
-    let h = 1e-7;
-    for input in [
-        0.5 * s.lead_m,
-        s.lead_m + 0.1 * (s.stroke_m - s.lead_m),
-        0.5 * (s.lead_m + s.stroke_m),
-        0.95 * s.stroke_m,
-    ] {
-        let deflection = |q: f64| track.deflection_at_input(q).unwrap();
-        let numeric = (deflection(input + h) - deflection(input - h)) / (2.0 * h);
-        let loads = track.kinetostatics(input, &couple).unwrap();
-        assert!(
-            (-loads.actuator_load_virtual_work - numeric).abs() < 1e-6 * numeric.abs().max(1e-3),
-            "dθ/ds {numeric} vs {}",
-            -loads.actuator_load_virtual_work
-        );
-        assert!(
-            (loads.actuator_load - loads.actuator_load_virtual_work).abs() < 1e-9 * loads.actuator_load.abs().max(1.0)
-        );
-    }
-}
-
-/// The hooked-track's free choices given back reproduce the searched mechanism; a lead-in
-/// as long as the stroke has no hook and is a typed failure.
-#[test]
-fn hooked_track_choices_given_back_or_refused() {
-    let found = HookedTrack::synthesise(hooked_track_spec()).unwrap();
-    let s = found.synthesis();
-    let mut spec = hooked_track_spec();
-    spec.forward_attachment = Some(s.forward_attachment_m);
-    spec.aft_attachment = Some(s.aft_attachment_m);
-    spec.lead_fraction = Some(s.lead_m / s.stroke_m);
-    let again = HookedTrack::synthesise(spec.clone()).unwrap();
-    assert!((again.synthesis().hook_centre_m - s.hook_centre_m).norm() < 1e-9);
-    spec.lead_fraction = Some(1.0);
-    match HookedTrack::synthesise(spec) {
-        Err(Error::Synthesis { defect, .. }) => assert_eq!(defect, SynthesisDefect::NoRealSolution),
-        other => panic!("{other:?}"),
-    }
 }

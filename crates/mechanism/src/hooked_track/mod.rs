@@ -354,13 +354,7 @@ impl FlapMechanism for HookedTrack {
     /// holds its deflection over the lead-in and turns forwards on the hook, checked at
     /// synthesis).
     fn input_at_deflection(&self, deflection_rad: f64) -> Result<f64> {
-        let deflection = |input: f64| self.rail_pose(input).map_or(f64::NAN, |p| p.flap.rotation.angle());
-        Ok(crate::feasibility::parameter_at_deflection(
-            self.rail.stroke_m,
-            deflection,
-            deflection_rad,
-            self.spec.landing.deflection_rad.signum(),
-        ))
+        Ok(search::stroke_at_deflection(&self.spec, &self.rail, deflection_rad))
     }
 
     fn deflection_at_input(&self, input: f64) -> Result<f64> {

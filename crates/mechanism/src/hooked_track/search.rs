@@ -66,16 +66,22 @@ impl Found {
     }
 }
 
+/// The first stroke of `rail` where the flap reaches `deflection_rad`, by bisection (the
+/// flap holds its deflection over the lead-in and turns forwards on the hook).
+pub(super) fn stroke_at_deflection(spec: &HookedTrackSpec, rail: &Rail, deflection_rad: f64) -> f64 {
+    let deflection = |s: f64| rail.at(s).map_or(f64::NAN, |p| p.flap.rotation.angle());
+    parameter_at_deflection(
+        rail.stroke_m,
+        deflection,
+        deflection_rad,
+        spec.landing.deflection_rad.signum(),
+    )
+}
+
 /// The first stroke of `rail` where the flap reaches the take-off deflection, and the miss
 /// there at F and G.
 pub(super) fn takeoff(spec: &HookedTrackSpec, rail: &Rail) -> (f64, f64) {
-    let deflection = |s: f64| rail.at(s).map_or(f64::NAN, |p| p.flap.rotation.angle());
-    let stroke = parameter_at_deflection(
-        rail.stroke_m,
-        deflection,
-        spec.takeoff.deflection_rad,
-        spec.landing.deflection_rad.signum(),
-    );
+    let stroke = stroke_at_deflection(spec, rail, spec.takeoff.deflection_rad);
     let miss = rail.at(stroke).map_or(f64::INFINITY, |pose| {
         [rail.f, rail.g]
             .iter()

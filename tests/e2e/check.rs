@@ -28,13 +28,22 @@ fn default_scene_passes() {
     let interference = &report["interference"];
     assert_eq!(interference["passes"], true);
     for pair in interference["pairs"].as_array().unwrap() {
-        // Default tolerances: 1 mm, or 1 % of the clearance for parts far apart.
+        // Default tolerances: 1 mm, or 1 % of the clearance for parts far apart. A part
+        // pinned to the flap moves with it, but the certificate adds both parts' speed
+        // bounds (the flap's is its trailing edge's), so the 400 evaluations may run out
+        // before the 1 %: then the bound is what was reached, and it must still certify.
         let clearance = pair["min_clearance_m"].as_f64().unwrap();
+        let residual = pair["residual_bound_m"].as_f64().unwrap();
+        let budget_spent = pair["evaluations"] == 400;
         assert!(
-            pair["residual_bound_m"].as_f64().unwrap() <= f64::max(1e-3, 1e-2 * clearance) + 1e-12,
+            residual <= f64::max(1e-3, 1e-2 * clearance) + 1e-12 || (budget_spent && clearance - residual >= 0.003),
             "refined to the tolerance: {pair}"
         );
     }
+    // Pairs certified by their swept boxes are farther apart than required.
+    let apart = interference["certified_apart"].as_array().unwrap();
+    assert!(!apart.is_empty(), "the two stations' parts are a span apart");
+    assert!(apart.iter().all(|p| p["lower_bound_m"].as_f64().unwrap() > 0.003));
     // Joints are checked to stay joined, per station: nut and fitting at A on the screw,
     // the pins F and G in their tracks (the screw and its jack body are one rigid body).
     let joints = interference["declared_contacts"].as_array().unwrap();
@@ -58,9 +67,29 @@ fn default_scene_passes() {
         let named =
             |p: &serde_json::Value| (p["part_a"] == a && p["part_b"] == b) || (p["part_a"] == b && p["part_b"] == a);
         interference["pairs"].as_array().unwrap().iter().any(named)
+            || apart.iter().any(named)
             || joints.iter().any(named)
             || unchecked.iter().any(named)
     };
+    // Every pair left out is a same-station pair (the README says why), and JUnit counts
+    // each as skipped.
+    assert!(unchecked.iter().all(|p| p["reason"]
+        .as_str()
+        .unwrap()
+        .starts_with("same-station parts are stacked spanwise")));
+    assert!(junit.contains(&format!("skipped=\"{}\"", unchecked.len())), "{junit}");
+    // The skin is checked against every part, with the station's opening cut in it.
+    let swept = interference["pairs"].as_array().unwrap();
+    assert!(swept
+        .iter()
+        .any(|p| p["part_a"] == "inner.outer-track" && p["part_b"] == "wing"));
+    let openings = interference["openings"].as_array().unwrap();
+    assert_eq!(openings.len(), 2);
+    for opening in openings {
+        assert!(opening["skin_area_m2"].as_f64().unwrap() > 0.0, "{opening}");
+        assert!(opening["flap_area_m2"].as_f64().unwrap() > 0.0, "{opening}");
+        assert_eq!(opening["margin_m"], 0.006, "twice the required clearance");
+    }
     for station in ["inner", "outer"] {
         for part in [
             "screw",
@@ -151,6 +180,48 @@ fn torque_tube_in_the_screw_path_fails_and_junit_names_the_pair() {
 }
 
 #[test]
+fn tracks_standing_through_the_upper_skin_fail_and_strict_fails_on_skipped_pairs() {
+    // Issue 17's false pass: larger slots stand the tracks 61-165 mm above the upper skin
+    // (rear spar at 40 % chord, no torque tube); the check must name the tracks and the skin.
+    let mut scene = default_scene_text()
+        .replace("outer_slot_radius_m = 0.350", "outer_slot_radius_m = 0.55")
+        .replace("inner_slot_radius_m = 0.300", "inner_slot_radius_m = 0.50")
+        .replacen("chord_fraction = 0.64", "chord_fraction = 0.40", 1);
+    let tube = scene.find("[structure.torque_tube]").unwrap();
+    let station = scene.find("[[station]]").unwrap();
+    scene.replace_range(tube..station, "");
+    let (dir, output) = check(&scene);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "stderr:\n{stderr}");
+    for track in [
+        "inner.outer-track",
+        "inner.inner-track",
+        "outer.outer-track",
+        "outer.inner-track",
+    ] {
+        assert!(
+            stderr.contains(&format!("{track} and wing overlap")),
+            "{track}: {stderr}"
+        );
+    }
+    let junit = std::fs::read_to_string(dir.path().join("junit.xml")).unwrap();
+    assert!(junit
+        .split("<testcase")
+        .any(|case| case.contains("inner.outer-track vs wing") && case.contains("<failure")));
+
+    // --strict: the default scene passes its clearances but leaves same-station pairs out.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("scene.toml"), default_scene_text()).unwrap();
+    let output = run_flapwright(dir.path(), &["check", "scene.toml", "--strict"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("--strict") && stderr.contains("were not checked"),
+        "{stderr}"
+    );
+}
+
+#[test]
 fn bad_input_exits_2() {
     let (_dir, output) = check(&default_scene_text().replacen("radius_m = 0.020", "radius_m = -0.020", 1));
     assert_eq!(output.status.code(), Some(2));
@@ -184,12 +255,21 @@ fn a_second_flap_is_checked_against_the_first_and_against_the_other_stations() {
     let report: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.path().join("flapwright-check/report.json")).unwrap())
             .unwrap();
-    let pairs = report["interference"]["pairs"].as_array().unwrap();
+    let interference = &report["interference"];
+    let pairs: Vec<&serde_json::Value> = interference["pairs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .chain(interference["certified_apart"].as_array().unwrap())
+        .collect();
     let checked = |a: &str, b: &str| pairs.iter().any(|p| p["part_a"] == a && p["part_b"] == b);
     assert!(checked("flap", "outboard-flap"), "the flaps against each other");
     for part in ["outer.fitting-F", "outer.nut", "outer.outer-track"] {
         assert!(checked(part, "outboard-flap"), "{part} against the other flap");
-        assert!(!checked(part, "flap"), "{part} is on or pinned to its own flap");
     }
+    // Against its own flap: the fitting is the flap; the nut pinned to it and the track
+    // through it are checked against the flap with its slot cut.
+    assert!(!checked("outer.fitting-F", "flap"));
+    assert!(checked("outer.nut", "flap") && checked("outer.outer-track", "flap"));
     assert!(checked("outboard.screw", "outboard-flap") && checked("outboard.screw", "flap"));
 }

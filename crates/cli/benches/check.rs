@@ -1,5 +1,6 @@
 //! The default scene's interference check (`flapwright check`), end to end without the
-//! process start: geometry, meshing, planes, interference sweep, fairing depth.
+//! process start: geometry, meshing, planes, interference sweep, fairing depth; and the
+//! same wing with 2 and 16 stations spread along its flap, for how the check scales.
 
 use criterion::{criterion_main, Criterion};
 use flapwright::output::StagedDir;
@@ -31,9 +32,51 @@ fn default_scene_check(c: &mut Criterion) {
     group.finish();
 }
 
+/// The default scene with `count` copies of its inner station spread evenly along the
+/// flap between the two stations' places (axis offsets 0.35 to 1.90 m).
+fn with_stations(count: usize) -> String {
+    let text = DEFAULT_SCENE_TOML;
+    let first = text.find("[[station]]").expect("a station");
+    let second = first + 1 + text[first + 1..].find("[[station]]").expect("two stations");
+    let loads = text.find("[loads]").expect("loads after the stations");
+    let block = &text[first..second];
+    let stations: String = (0..count)
+        .map(|k| {
+            let offset = 0.35 + (1.90 - 0.35) * k as f64 / (count - 1) as f64;
+            block
+                .replace("name = \"inner\"", &format!("name = \"s{k}\""))
+                .replace("axis_offset_m = 0.35", &format!("axis_offset_m = {offset:.4}"))
+        })
+        .collect();
+    format!("{}{stations}{}", &text[..first], &text[loads..])
+}
+
+fn stations_scaling(c: &mut Criterion) {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let mut group = c.benchmark_group("check stations");
+    group.sample_size(10);
+    for count in [2, 16] {
+        let text = with_stations(count);
+        let scene = Scene::from_toml(&text, None).expect("scene with stations");
+        assert_eq!(scene.station.len(), count);
+        let inputs = Inputs {
+            scene: &scene,
+            scene_text: &text,
+            scene_dir: None,
+        };
+        group.bench_function(format!("{count} stations"), |b| {
+            b.iter(|| {
+                let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
+                design(&inputs, Mode::Check, &staged).expect("check runs")
+            })
+        });
+    }
+    group.finish();
+}
+
 #[allow(missing_docs)] // criterion_group! generates an undocumented function
 mod group {
-    criterion::criterion_group!(benches, super::default_scene_check);
+    criterion::criterion_group!(benches, super::default_scene_check, super::stations_scaling);
 }
 use group::benches;
 criterion_main!(benches);

@@ -58,14 +58,28 @@ pub fn describe_joint_failure(c: &ContactResult, joint_play_m: f64) -> String {
     )
 }
 
-/// One JUnit test case: passed, or failed with the kind of failure and its text.
-fn test_case(name: String, class: String, failure: Option<(&str, String)>) -> TestCase {
-    let status = match failure {
-        None => TestCaseStatus::success(),
-        Some((kind, message)) => {
+/// What became of one JUnit test case.
+enum Outcome {
+    Passed,
+    /// Failed: the kind of failure and its text.
+    Failed(&'static str, String),
+    /// Not checked, and why.
+    Skipped(String),
+}
+
+/// One JUnit test case.
+fn test_case(name: String, class: String, outcome: Outcome) -> TestCase {
+    let status = match outcome {
+        Outcome::Passed => TestCaseStatus::success(),
+        Outcome::Failed(kind, message) => {
             let mut status = TestCaseStatus::non_success(NonSuccessKind::Failure);
             status.set_message(message);
             status.set_type(kind);
+            status
+        }
+        Outcome::Skipped(reason) => {
+            let mut status = TestCaseStatus::skipped();
+            status.set_message(reason);
             status
         }
     };
@@ -79,20 +93,43 @@ pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> anyh
     let mut suite = TestSuite::new(format!("flapwright interference: {scene_name}"));
     for pair in &report.pairs {
         let c = &pair.clearance;
-        let failure = (!pair.passes).then(|| ("interference", describe_failure(c, report.required_clearance_m)));
+        let outcome = match pair.passes {
+            true => Outcome::Passed,
+            false => Outcome::Failed("interference", describe_failure(c, report.required_clearance_m)),
+        };
         suite.add_test_case(test_case(
             format!("{} vs {}", c.part_a, c.part_b),
             pair.station.clone().unwrap_or_else(|| "flap".into()),
-            failure,
+            outcome,
+        ));
+    }
+    // Pairs certified by their swept boxes alone pass, like swept pairs that clear.
+    for apart in &report.certified_apart {
+        suite.add_test_case(test_case(
+            format!("{} vs {}", apart.part_a, apart.part_b),
+            apart.station.clone().unwrap_or_else(|| "flap".into()),
+            Outcome::Passed,
         ));
     }
     for contact in &report.declared_contacts {
         let d = &contact.declared;
-        let failure = (!contact.passes).then(|| ("joint", describe_joint_failure(contact, report.joint_play_m)));
+        let outcome = match contact.passes {
+            true => Outcome::Passed,
+            false => Outcome::Failed("joint", describe_joint_failure(contact, report.joint_play_m)),
+        };
         suite.add_test_case(test_case(
             format!("{} joined to {}", d.part_a, d.part_b),
             d.station.clone(),
-            failure,
+            outcome,
+        ));
+    }
+    // Pairs the check leaves out are skipped cases, so CI counts them (`check --strict`
+    // fails on them).
+    for skipped in &report.unchecked_pairs {
+        suite.add_test_case(test_case(
+            format!("{} vs {}", skipped.part_a, skipped.part_b),
+            skipped.station.clone(),
+            Outcome::Skipped(skipped.reason.clone()),
         ));
     }
     let mut junit = Report::new("flapwright check");

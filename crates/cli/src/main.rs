@@ -89,9 +89,13 @@ enum Command {
         /// Output folder for report.json (replaced atomically on success).
         #[arg(long, default_value = "flapwright-check")]
         out: PathBuf,
-        /// Also write a JUnit XML file (one test case per station and part pair).
+        /// Also write a JUnit XML file (one test case per station and part pair; pairs the
+        /// check leaves out are skipped cases with the reason).
         #[arg(long)]
         junit: Option<PathBuf>,
+        /// Fail (exit 1) when any pair is left out of the check, whatever the reason.
+        #[arg(long)]
+        strict: bool,
     },
 }
 
@@ -156,7 +160,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
     let (scene_path, out, mode, junit) = match &cli.command {
         None => (None, PathBuf::from("flapwright-out"), Mode::Design, None),
         Some(Command::Design { scene, out }) => (scene.clone(), out.clone(), Mode::Design, None),
-        Some(Command::Check { scene, out, junit }) => (scene.clone(), out.clone(), Mode::Check, junit.clone()),
+        Some(Command::Check { scene, out, junit, .. }) => (scene.clone(), out.clone(), Mode::Check, junit.clone()),
         Some(Command::Export { scene, out, .. }) => (scene.clone(), out.clone(), Mode::Design, None),
         Some(Command::Study { .. }) => unreachable!("handled above"),
     };
@@ -266,11 +270,14 @@ fn run(cli: &Cli) -> Result<(), Failure> {
     if cli.json {
         println!("{}", serde_json::to_string(&outcome.summary)?);
     } else if !cli.quiet {
-        let verdict = match outcome.summary.interference_passes {
-            Some(true) => ", clearances met",
-            Some(false) => ", INTERFERENCE",
-            None => "",
+        let mut verdict = match outcome.summary.interference_passes {
+            Some(true) => ", clearances met".to_string(),
+            Some(false) => ", INTERFERENCE".to_string(),
+            None => String::new(),
         };
+        if let Some(unchecked @ 1..) = outcome.summary.unchecked_pairs {
+            verdict += &format!(" ({unchecked} pair(s) not checked: see unchecked_pairs in the report)");
+        }
         println!(
             "{} \"{}\": {} part(s), {} station(s), {} warning(s){verdict} -> {}",
             match (&cli.command, mode) {
@@ -298,6 +305,23 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 written.join("report.json").display()
             ),
         });
+    }
+    let strict = matches!(cli.command, Some(Command::Check { strict: true, .. }));
+    if let (true, Some(report)) = (strict, &outcome.report.interference) {
+        if let Some(first) = report.unchecked_pairs.first() {
+            return Err(Failure {
+                code: EXIT_FAILED,
+                error: anyhow::anyhow!(
+                    "--strict: {} pair(s) were not checked, for example {} vs {} at station {} ({}); see unchecked_pairs in {}",
+                    report.unchecked_pairs.len(),
+                    first.part_a,
+                    first.part_b,
+                    first.station,
+                    first.reason,
+                    written.join("report.json").display()
+                ),
+            });
+        }
     }
     Ok(())
 }

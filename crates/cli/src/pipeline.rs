@@ -46,6 +46,9 @@ pub struct Summary {
     pub warnings: usize,
     /// Every clearance met (absent when no interference check ran).
     pub interference_passes: Option<bool>,
+    /// Pairs the interference check left out, each with its reason in the report (absent
+    /// when no check ran).
+    pub unchecked_pairs: Option<usize>,
 }
 
 /// What a run produced.
@@ -251,6 +254,7 @@ pub fn design_with_progress(
         stations: report.stations.len(),
         warnings: report.warnings.len(),
         interference_passes: report.interference.as_ref().map(|i| i.passes),
+        unchecked_pairs: report.interference.as_ref().map(|i| i.unchecked_pairs.len()),
     };
     Ok(Outcome { report, summary })
 }

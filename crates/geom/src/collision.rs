@@ -40,6 +40,8 @@ pub struct CollisionShape {
     /// The surface as triangles in the local frame (primitives tessellated), sampled for
     /// penetration depth.
     surface: Arc<Vec<[DVec3; 3]>>,
+    /// False for an open surface ([`CollisionShape::from_surface`]): nothing is inside it.
+    solid: bool,
 }
 
 impl std::fmt::Debug for CollisionShape {
@@ -103,7 +105,11 @@ impl CollisionShape {
             (Vec::new(), Vec::new())
         };
         let surface = triangles(&vertices, &indices);
-        CollisionShape { shape, surface }
+        CollisionShape {
+            shape,
+            surface,
+            solid: true,
+        }
     }
 }
 
@@ -118,6 +124,25 @@ impl CollisionShape {
                 reason: format!("triangle mesh rejected: {e:?}"),
             })?;
         Ok(Self::from_shared(shape))
+    }
+
+    /// An open surface (a skin with openings cut in it): a sheet, not a solid. Clearance to
+    /// it is the distance to its triangles; a part crossing it touches it, and a part on
+    /// either side of it is clear of it (nothing is inside a sheet).
+    pub fn from_surface(mesh: &TriMesh) -> Result<CollisionShape> {
+        let vertices: Vec<DVec3> = mesh.vertices.iter().map(to_glam).collect();
+        let shape = SharedShape::trimesh(vertices, mesh.triangles.clone()).map_err(|e| Error::Collision {
+            reason: format!("triangle mesh rejected: {e:?}"),
+        })?;
+        Ok(CollisionShape {
+            solid: false,
+            ..Self::from_shared(shape)
+        })
+    }
+
+    /// True for a solid, false for an open surface ([`Self::from_surface`]).
+    pub fn is_solid(&self) -> bool {
+        self.solid
     }
 
     /// A sphere of `radius_m` centred at the local origin.
@@ -163,6 +188,16 @@ impl CollisionShape {
             .ok_or_else(|| Error::Collision {
                 reason: format!("convex hull of {} points is degenerate", points.len()),
             })
+    }
+
+    /// A box holding the shape placed at `pose` (aircraft frame): exact for primitives, the
+    /// mesh's own box turned with it for meshes (looser, never smaller).
+    pub fn compute_aabb(&self, pose: &Isometry3<f64>) -> crate::mesh::Aabb {
+        let aabb = self.shape.compute_aabb(&to_pose(pose));
+        crate::mesh::Aabb {
+            min: to_point(aabb.mins),
+            max: to_point(aabb.maxs),
+        }
     }
 
     /// True when `point_ac` is inside (or on) the shape placed at `pose`.
@@ -275,10 +310,11 @@ fn surface_ac(shape: &CollisionShape, pose: &Pose) -> Vec<[DVec3; 3]> {
 /// True when some point of `inner`'s surface lies inside `outer` (for a mesh, by its
 /// orientation). With the surfaces apart, one such point means `inner` is wholly inside.
 fn holds(outer: &CollisionShape, pose_outer: &Pose, inner: &CollisionShape, pose_inner: &Pose) -> bool {
-    inner
-        .surface
-        .first()
-        .is_some_and(|t| outer.shape.contains_point(pose_outer, pose_inner.transform_point(t[0])))
+    outer.solid
+        && inner
+            .surface
+            .first()
+            .is_some_and(|t| outer.shape.contains_point(pose_outer, pose_inner.transform_point(t[0])))
 }
 
 /// Clearance between shape `a` at `pose_a` and shape `b` at `pose_b` as solids: unlike
@@ -307,6 +343,11 @@ pub fn compute_clearance(
         return Ok(clear);
     }
     let deepest = |intruder: &CollisionShape, intruder_pose: &Pose, host: &CollisionShape, host_pose: &Pose| {
+        if !host.solid {
+            // Nothing reaches into a sheet; how deep the sheet reaches into the other
+            // part is measured the other way round.
+            return None;
+        }
         let exact_surface = intruder
             .shape
             .as_trimesh()

@@ -49,6 +49,34 @@ pub struct Aabb {
     pub max: Point3<f64>,
 }
 
+impl Aabb {
+    /// The box grown by `margin` (m) on every side.
+    pub fn inflated(&self, margin: f64) -> Aabb {
+        let grow = Vector3::repeat(margin);
+        Aabb {
+            min: self.min - grow,
+            max: self.max + grow,
+        }
+    }
+
+    /// The smallest box holding both.
+    pub fn merged(&self, other: &Aabb) -> Aabb {
+        Aabb {
+            min: self.min.inf(&other.min),
+            max: self.max.sup(&other.max),
+        }
+    }
+
+    /// Distance between the boxes (0 when they touch or overlap): a lower bound on the
+    /// distance between anything inside them.
+    pub fn distance(&self, other: &Aabb) -> f64 {
+        let gap = (other.min - self.max)
+            .sup(&(self.min - other.max))
+            .sup(&Vector3::zeros());
+        gap.norm()
+    }
+}
+
 impl TriMesh {
     /// Counts boundary, non-manifold, misoriented edges and degenerate triangles.
     /// Edges are identified by vertex index (vertices are not merged by position).
@@ -160,6 +188,52 @@ impl TriMesh {
             .extend(other.triangles.iter().map(|t| t.map(|i| i + offset)));
     }
 
+    /// Splits the surface by the plane through `point` with normal `normal`: the pieces on
+    /// the side `normal` points away from, then the pieces on the side it points to. Each
+    /// triangle is clipped on its own (its pieces fan-triangulated, winding kept), so the
+    /// pieces share no vertices; closed meshes come apart open. Clipping by hand rather than
+    /// with parry's `TriMesh::split`, which builds a BVH per piece and caps oriented meshes:
+    /// an opening cut by four planes needs neither.
+    pub fn split_by_plane(&self, point: &Point3<f64>, normal: &Vector3<f64>) -> [TriMesh; 2] {
+        let mut sides = [TriMesh::default(), TriMesh::default()];
+        let height = |p: &Point3<f64>| (p - point).dot(normal);
+        for triangle in &self.triangles {
+            let corners = triangle.map(|i| self.vertices[i as usize]);
+            let heights = corners.map(|p| height(&p));
+            for (side, keep) in [(0, -1.0), (1, 1.0)] {
+                // Sutherland-Hodgman against one half-space; points on the plane go to both.
+                let mut polygon: Vec<Point3<f64>> = Vec::with_capacity(4);
+                for i in 0..3 {
+                    let (p, q) = (corners[i], corners[(i + 1) % 3]);
+                    let (hp, hq) = (keep * heights[i], keep * heights[(i + 1) % 3]);
+                    if hp >= 0.0 {
+                        polygon.push(p);
+                    }
+                    if (hp > 0.0 && hq < 0.0) || (hp < 0.0 && hq > 0.0) {
+                        polygon.push(p + (q - p) * (hp / (hp - hq)));
+                    }
+                }
+                if polygon.len() >= 3 {
+                    let mesh = &mut sides[side];
+                    let first = mesh.vertices.len() as u32;
+                    mesh.vertices.extend_from_slice(&polygon);
+                    mesh.triangles
+                        .extend((1..polygon.len() as u32 - 1).map(|k| [first, first + k, first + k + 1]));
+                }
+            }
+        }
+        sides.map(|mut mesh| {
+            // Slivers of a triangle touching the plane at a corner or an edge.
+            let vertices = &mesh.vertices;
+            mesh.triangles.retain(|t| {
+                let [a, b, c] = t.map(|i| vertices[i as usize]);
+                let longest = (b - a).norm().max((c - b).norm()).max((a - c).norm());
+                (b - a).cross(&(c - a)).norm() > DEGENERATE_RELATIVE_TOL * longest * longest
+            });
+            mesh
+        })
+    }
+
     /// Reverses the winding of every triangle (turns normals inside out).
     pub fn flip_orientation(&mut self) {
         for t in &mut self.triangles {
@@ -189,6 +263,58 @@ mod tests {
         let mesh = tetrahedron();
         assert!(mesh.compute_topology_check().is_watertight());
         approx::assert_relative_eq!(mesh.compute_signed_volume(), 1.0 / 6.0, max_relative = 1e-14);
+    }
+
+    #[test]
+    fn a_split_keeps_every_bit_of_area_on_its_side() {
+        let mesh = tetrahedron();
+        let normal = Vector3::new(1.0, 0.3, -0.2).normalize();
+        let point = Point3::new(0.3, 0.2, 0.1);
+        let [below, above] = mesh.split_by_plane(&point, &normal);
+        approx::assert_relative_eq!(
+            below.compute_area() + above.compute_area(),
+            mesh.compute_area(),
+            max_relative = 1e-13
+        );
+        assert!(below.compute_area() > 0.1 && above.compute_area() > 0.1);
+        let side = |m: &TriMesh| {
+            m.vertices
+                .iter()
+                .map(|p| (p - point).dot(&normal))
+                .fold((f64::MAX, f64::MIN), |(lo, hi), h| (lo.min(h), hi.max(h)))
+        };
+        assert!(side(&below).1 <= 1e-15 && side(&above).0 >= -1e-15);
+        // Windings kept: every piece faces the way its triangle did.
+        for piece in [&below, &above] {
+            for (i, _) in piece.triangles.iter().enumerate() {
+                let n = piece.triangle_normal(i);
+                assert!((0..4).any(|j| (mesh.triangle_normal(j) - n).norm() < 1e-12), "{n}");
+            }
+        }
+        // A plane missing the mesh leaves it whole on one side.
+        let [below, above] = mesh.split_by_plane(&Point3::new(5.0, 0.0, 0.0), &Vector3::x());
+        assert_eq!((below.triangles.len(), above.triangles.len()), (4, 0));
+    }
+
+    #[test]
+    fn box_distance_is_the_gap_between_boxes() {
+        let unit = Aabb {
+            min: Point3::origin(),
+            max: Point3::new(1.0, 1.0, 1.0),
+        };
+        let moved = Aabb {
+            min: Point3::new(4.0, 5.0, 0.5),
+            max: Point3::new(6.0, 6.0, 0.7),
+        };
+        assert_eq!(unit.distance(&moved), 5.0);
+        assert_eq!(moved.distance(&unit), 5.0);
+        assert_eq!(unit.distance(&unit.inflated(-0.25)), 0.0);
+        approx::assert_relative_eq!(
+            unit.inflated(1.5).distance(&moved),
+            1.5f64.hypot(2.5),
+            max_relative = 1e-15
+        );
+        assert_eq!(unit.merged(&moved).max, Point3::new(6.0, 6.0, 1.0));
     }
 
     #[test]

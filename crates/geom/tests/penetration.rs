@@ -150,3 +150,41 @@ fn a_large_overlap_coarsens_the_grid_and_reports_it() {
     );
     assert!(compute_clearance(&big, &at(0.0, 0.0, 0.0), &big, &at(0.5, 0.0, 0.0), 0.0).is_err());
 }
+
+#[test]
+fn an_open_surface_holds_nothing_and_is_crossed_or_cleared() {
+    // A prism of circumradius 0.2 as a solid holds a small ball at its centre; as a sheet
+    // it does not, and the ball is 0.2 cos(pi/16) - 0.01 from its nearest face.
+    let mesh = prism(16, 0.2, 0.5);
+    let (solid, sheet) = (
+        CollisionShape::from_mesh(&mesh).unwrap(),
+        CollisionShape::from_surface(&mesh).unwrap(),
+    );
+    assert!(solid.is_solid() && !sheet.is_solid());
+    let ball = CollisionShape::ball(0.01).unwrap();
+    let origin = at(0.0, 0.0, 0.0);
+    let inside_solid = compute_clearance(&solid, &origin, &ball, &origin, 1e-3).unwrap();
+    assert_eq!(inside_solid.distance_m, 0.0);
+    let inside_sheet = compute_clearance(&sheet, &origin, &ball, &origin, 1e-3).unwrap();
+    assert_relative_eq!(
+        inside_sheet.distance_m,
+        0.2 * (PI / 16.0).cos() - 0.01,
+        max_relative = 1e-9
+    );
+    // A ball of radius 0.05 centred on the wall (x = 0.2 cos(pi/16) at the face's middle,
+    // z = 0): it crosses the sheet, which reaches 0.05 deep into it (its centre lies on
+    // the face).
+    let wall_x = 0.2 * (PI / 16.0).cos();
+    let big = CollisionShape::ball(0.05).unwrap();
+    let rotated = Isometry3::from_parts(
+        Translation3::new(0.0, 0.0, 0.0),
+        UnitQuaternion::from_axis_angle(&nalgebra::Vector3::y_axis(), PI / 16.0),
+    );
+    let crossing = compute_clearance(&sheet, &rotated, &big, &at(wall_x, 0.0, 0.0), 1e-3).unwrap();
+    assert_eq!(crossing.distance_m, 0.0);
+    assert!(
+        crossing.penetration_m > 0.05 - 2e-3 && crossing.penetration_m <= 0.05 + 1e-9,
+        "{}",
+        crossing.penetration_m
+    );
+}

@@ -6,7 +6,11 @@
 use rayon::prelude::*;
 use serde::Serialize;
 
+use std::collections::HashMap;
+
+use crate::broad::{ApartPair, SweptBoxes, SWEPT_BOX_INTERVALS};
 use crate::error::{Error, Result};
+use crate::opening::Opening;
 use crate::part::Part;
 use crate::station::{DeclaredContact, StationPart, StationParts};
 use crate::sweep::{sweep_contact, sweep_pair, JointSeparation, PairClearance, SweepSettings};
@@ -56,16 +60,11 @@ pub struct ContactResult {
     pub passes: bool,
 }
 
-/// Why links may cross the wing skin.
-const SKIN_CUT: &str = "the skin is cut for the mechanism, which lives in the fairing (see the fairing depth)";
-/// Why tracks may cross the wing skin.
-const TRACK_IN_COVE: &str = "tracks are fixed in the cove and pass through its skin";
-/// Why fixed support structure may cross the wing skin.
-const SUPPORT_IN_COVE: &str = "support structure is fixed in the cove and passes through its skin";
-/// Why tracks may cross the flap.
-const FLAP_SLOTTED: &str = "the flap is slotted for its own tracks";
+/// Why a station's parts are not checked against the skin.
+const NO_OPENING: &str =
+    "no opening was cut in the skin for this station, so its parts cannot be checked against the skin";
 /// Why a part joined to the flap by a joint is not checked against the flap itself.
-const JOINED_TO_FLAP: &str = "joined to the flap by design (a pin in a fitting on the flap)";
+const NO_SLOT: &str = "joined to the flap by design, and no slot was cut in the flap for this station";
 /// Why same-station parts are not checked against each other.
 const STACKED: &str =
     "same-station parts are stacked spanwise (side plates, clevises); the planar model has no spanwise layout to check them in";
@@ -102,11 +101,18 @@ pub struct InterferenceReport {
     pub required_clearance_m: f64,
     /// Allowed separation of parts joined by design (m).
     pub joint_play_m: f64,
-    /// Every pair checked.
+    /// Every pair swept.
     pub pairs: Vec<PairResult>,
+    /// Intervals of the deployment the broad phase bounds each part over.
+    pub swept_box_intervals: usize,
+    /// Pairs certified clear by the broad phase alone: their swept boxes stay farther apart
+    /// than the required clearance (they pass; not swept).
+    pub certified_apart: Vec<ApartPair>,
     /// Contacts by design (joints): checked to stay within the joint's play, not for
     /// clearance.
     pub declared_contacts: Vec<ContactResult>,
+    /// Where the skin and the flaps are opened for each station's mechanism.
+    pub openings: Vec<Opening>,
     /// Pairs left out by design, with the reason.
     pub unchecked_pairs: Vec<UncheckedPair>,
     /// Every pair and every joint passes.
@@ -151,22 +157,21 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
             })
         };
         // Moving parts and the station's fixed hardware (tracks, supports) against the
-        // structure; the skin is cut where they pass.
+        // structure, and against the skin with the station's opening cut in it.
         for part in &station.parts {
             for &fixed in &structure {
                 jobs.push((name(), &part.part, fixed));
             }
-            let reason = match (part.moving, part.role) {
-                (true, _) => SKIN_CUT,
-                (false, BodyRole::Track) => TRACK_IN_COVE,
-                (false, _) => SUPPORT_IN_COVE,
-            };
             for &skin in &skins {
-                skip(&part.part, skin, reason);
+                match station.opened_skins.iter().find(|s| s.name == skin.name) {
+                    Some(opened) => jobs.push((name(), &part.part, opened)),
+                    None => skip(&part.part, skin, NO_OPENING),
+                }
             }
         }
-        // Against the flap it carries: not the flap's own body, and not what is pinned to
-        // it. Against every other flap: everything.
+        // Against the flap it carries: not the flap's own body; what is joined to it (pinned
+        // to a fitting, a track through it) against the flap with its slot cut. Against
+        // every other flap: everything.
         let flap_body = station.parts.iter().find(|p| p.role == BodyRole::Flap).map(|p| p.body);
         for flap in &assembly.flaps {
             if station.flap.as_deref() != Some(flap.name.as_str()) {
@@ -176,10 +181,13 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
                 continue;
             }
             for part in station.parts.iter().filter(|p| Some(p.body) != flap_body) {
-                match flap_body.and_then(|f| station.joint_between(f, part.body)) {
-                    None => jobs.push((name(), &part.part, flap)),
-                    Some(_) if !part.moving => skip(&part.part, flap, FLAP_SLOTTED),
-                    Some(_) => skip(&part.part, flap, JOINED_TO_FLAP),
+                match (
+                    flap_body.and_then(|f| station.joint_between(f, part.body)),
+                    &station.slotted_flap,
+                ) {
+                    (None, _) => jobs.push((name(), &part.part, flap)),
+                    (Some(_), Some(slotted)) => jobs.push((name(), &part.part, slotted)),
+                    (Some(_), None) => skip(&part.part, flap, NO_SLOT),
                 }
             }
         }
@@ -223,6 +231,32 @@ pub fn check_assembly(
     settings: &SweepSettings,
 ) -> Result<InterferenceReport> {
     let (jobs, unchecked) = pair_jobs(assembly);
+    // Broad phase: every part's swept boxes once; pairs whose boxes stay farther apart than
+    // the requirement are certified by them alone (strictly: boxes that touch prove
+    // nothing).
+    let mut parts: Vec<&Part> = jobs.iter().flat_map(|(_, a, b)| [*a, *b]).collect();
+    parts.sort_by_key(|p| std::ptr::from_ref(*p) as usize);
+    parts.dedup_by_key(|p| std::ptr::from_ref(*p) as usize);
+    let boxes: HashMap<usize, SweptBoxes> = parts
+        .par_iter()
+        .map(|p| Ok((std::ptr::from_ref(*p) as usize, SweptBoxes::of(p, end)?)))
+        .collect::<Result<_>>()?;
+    let bound = |a: &Part, b: &Part| {
+        let key = |p: &Part| std::ptr::from_ref(p) as usize;
+        boxes[&key(a)].lower_bound(&boxes[&key(b)])
+    };
+    let (apart, jobs): (Vec<_>, Vec<_>) = jobs
+        .into_iter()
+        .partition(|(_, a, b)| bound(a, b) > required.clearance_m);
+    let certified_apart = apart
+        .into_iter()
+        .map(|(station, a, b)| ApartPair {
+            station,
+            part_a: a.name.clone(),
+            part_b: b.name.clone(),
+            lower_bound_m: bound(a, b),
+        })
+        .collect();
     // Pairs are independent; rayon keeps their order in the result.
     let pairs = jobs
         .into_par_iter()
@@ -268,6 +302,9 @@ pub fn check_assembly(
         required_clearance_m: required.clearance_m,
         joint_play_m: required.joint_play_m,
         declared_contacts: contacts,
+        swept_box_intervals: SWEPT_BOX_INTERVALS,
+        certified_apart,
+        openings: assembly.stations.iter().filter_map(|s| s.opening.clone()).collect(),
         unchecked_pairs: unchecked,
         pairs,
         passes,

@@ -68,6 +68,12 @@ pub enum Error {
         /// The joint.
         joint: String,
     },
+    /// A station's mechanism has no solids to cut an opening for.
+    #[error("station {station}: its mechanism has no solids, so no opening can be cut for it")]
+    NoSolids {
+        /// The station.
+        station: String,
+    },
     /// A part's speed bound is negative or not finite, so no certified bound can be given.
     #[error("part {part}: speed bound {value} m per unit deployment must be finite and >= 0")]
     BadSpeedBound {

@@ -41,19 +41,23 @@
 //! A speed bound that is too small voids the guarantee silently; derive it from the
 //! mechanism's geometry (largest radius times largest angular rate), never from samples.
 
+mod broad;
 mod check;
 mod error;
 mod fairing;
 mod flap_motion;
+mod opening;
 mod part;
 mod refine;
 mod station;
 mod sweep;
 
+pub use broad::{ApartPair, SWEPT_BOX_INTERVALS};
 pub use check::{check_assembly, Assembly, ContactResult, InterferenceReport, PairResult, Requirements, UncheckedPair};
 pub use error::{Error, Result};
 pub use fairing::{fairing_depth, FairingDepth, PlanarCapsule};
 pub use flap_motion::{fit_points, FittedFlapMotion, FlapCarrier, FIT_POINTS_PER_CARRIER, FIT_SPEED_MARGIN};
+pub use opening::{cut_opening, station_opening, OpenedSurface, Opening, OPENING_SAMPLES, UPWARD_FACE_COS};
 pub use part::{Fixed, Motion, Part};
 pub use station::{flap_part, planar_parts, station_parts, DeclaredContact, StationPart, StationParts};
 pub use sweep::{sweep_contact, sweep_pair, JointSeparation, PairClearance, SweepSettings, JOINT_PENETRATION_GRID_M};

@@ -1,6 +1,8 @@
 //! Parts as the sweep sees them: a collision shape and how it moves with deployment.
 
 use flapwright_geom::collision::CollisionShape;
+use std::sync::Arc;
+
 use nalgebra::Isometry3;
 
 /// How a rigid part moves with the deployment parameter `t` (e.g. flap deflection, rad).
@@ -37,7 +39,7 @@ pub struct Part {
     /// Shape in the part's local frame.
     pub shape: CollisionShape,
     /// How the local frame moves.
-    pub motion: Box<dyn Motion>,
+    pub motion: Arc<dyn Motion>,
 }
 
 impl std::fmt::Debug for Part {
@@ -60,7 +62,7 @@ impl Part {
         Self {
             name: name.into(),
             shape,
-            motion: Box::new(Fixed(pose_ac)),
+            motion: Arc::new(Fixed(pose_ac)),
         }
     }
 
@@ -69,7 +71,17 @@ impl Part {
         Self {
             name: name.into(),
             shape,
-            motion: Box::new(motion),
+            motion: Arc::new(motion),
+        }
+    }
+
+    /// The same part (name and motion) with another shape: the surface left of a skin or a
+    /// flap once an opening is cut in it.
+    pub fn reshaped(&self, shape: CollisionShape) -> Self {
+        Self {
+            name: self.name.clone(),
+            shape,
+            motion: Arc::clone(&self.motion),
         }
     }
 

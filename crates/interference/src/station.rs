@@ -9,12 +9,14 @@
 use std::sync::Arc;
 
 use flapwright_geom::collision::CollisionShape;
+use flapwright_geom::TriMesh;
 use flapwright_mechanism::seam::{BodyRole, FlapMechanism, PlanarShape};
 use nalgebra::{Isometry2, Isometry3, Point2, Point3, Translation3, UnitQuaternion, Vector3};
 use serde::Serialize;
 
 use crate::error::{Error, Result};
 use crate::fairing::PlanarCapsule;
+use crate::opening::{cut_opening, OpenedSurface, Opening};
 use crate::part::{Motion, Part};
 
 /// Sides of the round tubes that stand for tracks.
@@ -61,12 +63,62 @@ pub struct StationParts {
     /// Pairs of bodies joined by a joint, with the joint (body indices; the flap body is
     /// the one with [`BodyRole::Flap`]).
     pub joined: Vec<(usize, usize, String)>,
+    /// Where the skin and the flap are opened for this station ([`StationParts::cut_openings`]).
+    pub opening: Option<Opening>,
+    /// The wing skins with this station's opening cut (sheets, fixed): its parts are checked
+    /// against these in place of the whole skins.
+    pub opened_skins: Vec<Part>,
+    /// Its flap with the slot cut (a sheet moving with the flap): the parts joined to the
+    /// flap are checked against it.
+    pub slotted_flap: Option<Part>,
 }
 
 impl StationParts {
     /// Every part of the station.
     pub fn parts(&self) -> impl Iterator<Item = &Part> {
         self.parts.iter().map(|p| &p.part)
+    }
+
+    /// Cuts `opening` in each of `skins` (the part and its mesh, aircraft frame) and in the
+    /// station's flap (`flap`: the moving part and its stowed mesh), placed by
+    /// `aircraft_from_station`; the parts are then checked against what is left.
+    pub fn cut_openings(
+        &mut self,
+        mut opening: Opening,
+        aircraft_from_station: &Isometry3<f64>,
+        skins: &[(&Part, &TriMesh)],
+        flap: Option<(&Part, &TriMesh)>,
+    ) -> Result<()> {
+        let sheet = |part: &Part, mesh: &TriMesh, surface: OpenedSurface| -> Result<(Part, f64)> {
+            let (left, removed_m2) = cut_opening(mesh, aircraft_from_station, &opening, surface);
+            let shape = CollisionShape::from_surface(&left).map_err(|source| Error::Query {
+                part_a: format!("{} (opened for station {})", part.name, self.station),
+                part_b: String::new(),
+                parameter: 0.0,
+                source: Box::new(source),
+            })?;
+            Ok((part.reshaped(shape), removed_m2))
+        };
+        let mut opened = Vec::new();
+        let mut skin_area_m2 = 0.0;
+        for (part, mesh) in skins {
+            let (sheet, removed_m2) = sheet(part, mesh, OpenedSurface::WingSkin)?;
+            opened.push(sheet);
+            skin_area_m2 += removed_m2;
+        }
+        let slotted = match flap {
+            Some((part, mesh)) => {
+                let (sheet, removed_m2) = sheet(part, mesh, OpenedSurface::Flap)?;
+                opening.flap_area_m2 = removed_m2;
+                Some(sheet)
+            }
+            None => None,
+        };
+        opening.skin_area_m2 = skin_area_m2;
+        self.opened_skins = opened;
+        self.slotted_flap = slotted;
+        self.opening = Some(opening);
+        Ok(())
     }
 
     /// The joint joining bodies `a` and `b`, if one does.
@@ -254,6 +306,9 @@ pub fn station_parts(
         parts,
         declared,
         joined,
+        opening: None,
+        opened_skins: Vec::new(),
+        slotted_flap: None,
     })
 }
 

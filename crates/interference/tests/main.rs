@@ -2,6 +2,7 @@
 
 mod brute_force;
 mod joint;
+mod opening;
 mod planar;
 mod sweep;
 

@@ -68,7 +68,7 @@ pub fn segment_meets(polygons: &[Vec<Point2<f64>>], a: Point2<f64>, b: Point2<f6
 }
 
 /// Distance from `p` to the segment `a`-`b`.
-fn point_segment_distance(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
+pub fn point_segment_distance(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
     let ab = b - a;
     let t = if ab.norm_squared() > 0.0 {
         ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0)

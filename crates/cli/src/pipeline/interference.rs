@@ -6,8 +6,8 @@ use anyhow::{Context, Result};
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::parts::{Part as MeshPart, PartKind};
 use flapwright_interference::{
-    check_assembly, fairing_depth, fit_points, flap_part, planar_parts, station_parts, Assembly, FittedFlapMotion,
-    FlapCarrier, InterferenceReport, Part, Requirements, SweepSettings,
+    check_assembly, fairing_depth, fit_points, flap_part, planar_parts, station_opening, station_parts, Assembly,
+    FittedFlapMotion, FlapCarrier, InterferenceReport, Part, Requirements, SweepSettings,
 };
 
 use crate::pipeline::mechanisms::StationRecord;
@@ -25,6 +25,9 @@ pub fn check(scene: &Scene, meshed: &[MeshPart], records: &[StationRecord]) -> R
     let mut fixed = Vec::new();
     let mut skins = Vec::new();
     let mut flaps = Vec::new();
+    // Meshes the openings are cut in: skins, then each flap (by name).
+    let mut skin_meshes: Vec<&flapwright_geom::TriMesh> = Vec::new();
+    let mut flap_meshes: Vec<&flapwright_geom::TriMesh> = Vec::new();
     for part in meshed {
         let shape =
             CollisionShape::from_mesh(&part.mesh).with_context(|| format!("collision shape of {}", part.name))?;
@@ -50,23 +53,57 @@ pub fn check(scene: &Scene, meshed: &[MeshPart], records: &[StationRecord]) -> R
                     let motion = fitted_flap_motion(&part.name, &carriers, &part.mesh.vertices)?;
                     flaps.push(Part::moving(part.name.clone(), shape, motion));
                 }
+                flap_meshes.push(&part.mesh);
             }
             kind => {
                 if kind == PartKind::WingSkin {
                     skins.push(part.name.clone());
+                    skin_meshes.push(&part.mesh);
                 }
                 fixed.push(Part::fixed(part.name.clone(), shape));
             }
         }
     }
+    let settings = &scene.interference;
+    let skin_parts: Vec<(&Part, &flapwright_geom::TriMesh)> = fixed
+        .iter()
+        .filter(|p: &&Part| skins.contains(&p.name))
+        .zip(skin_meshes)
+        .collect();
+    let spars: Vec<&str> = meshed
+        .iter()
+        .filter(|p| p.kind == PartKind::Spar)
+        .map(|p| p.name.as_str())
+        .collect();
     let stations = records
         .iter()
         .map(|r| {
-            let frame = placed(r)?.station.frame.aircraft_from_station();
-            Ok(station_parts(&r.station, r.flap.as_deref(), frame, &r.mechanism)?)
+            let station = placed(r)?;
+            let frame = station.station.frame.aircraft_from_station();
+            let mut parts = station_parts(&r.station, r.flap.as_deref(), frame, &r.mechanism)?;
+            // The wing box ahead of the rear spar (the aft-most spar the plane cuts; station
+            // x points forward) is never opened.
+            let rear_spar_aft_x = station
+                .polygons_of(|name| spars.contains(&name))
+                .iter()
+                .map(|polygon| polygon.iter().map(|p| p.x).fold(f64::INFINITY, f64::min))
+                .min_by(f64::total_cmp);
+            let wing_section = station.polygons_of(|name| skins.iter().any(|s| s == name));
+            let opening = station_opening(
+                &r.station,
+                r.mechanism.as_ref(),
+                rear_spar_aft_x,
+                &wing_section,
+                settings.opening_margin_m(),
+            )?;
+            let flap = r.flap.as_deref().and_then(|name| {
+                let index = flaps.iter().position(|f| f.name == name)?;
+                Some((&flaps[index], flap_meshes[index]))
+            });
+            parts.cut_openings(opening, frame, &skin_parts, flap)?;
+            Ok(parts)
         })
         .collect::<Result<Vec<_>>>()?;
-    let settings = &scene.interference;
     let sweep = SweepSettings {
         initial_samples: settings.initial_samples,
         tolerance_m: settings.tolerance_m,

@@ -86,6 +86,18 @@ pub struct InterferenceScene {
     /// the fitting at the nut pivot), m.
     #[serde(default = "default_joint_play")]
     pub joint_play_m: f64,
+    /// How far the openings cut in the skin and the flap for a station's mechanism reach
+    /// beyond its swept solids, m; default twice the required clearance (a part passing
+    /// through an opening then clears its edges by the requirement).
+    #[serde(default)]
+    pub opening_margin_m: Option<f64>,
+}
+
+impl InterferenceScene {
+    /// The opening margin, given or defaulted (m).
+    pub fn opening_margin_m(&self) -> f64 {
+        self.opening_margin_m.unwrap_or(2.0 * self.required_clearance_m)
+    }
 }
 
 /// 0.5 mm: the radial play of a plain trunnion bearing of this size is tenths of a
@@ -119,6 +131,7 @@ impl Default for InterferenceScene {
             relative_tolerance: default_relative_tolerance(),
             max_evaluations: default_max_evaluations(),
             joint_play_m: default_joint_play(),
+            opening_margin_m: None,
         }
     }
 }

@@ -68,14 +68,23 @@ pub(super) fn mesh_pair_distance(a: &TriMesh, pose_a: &Pose, b: &TriMesh, pose_b
     let root = searched.local_aabb();
     let bvh = searched.bvh();
 
+    // Nearest boxes first: the first searches set a tight bound, and once a triangle's box
+    // is farther than the best distance so is every later one's.
+    let mut order: Vec<(f64, usize)> = (0..walked.indices().len())
+        .map(|i| {
+            let (mins, maxs) = bounds(&walked_triangle(i));
+            (box_distance(mins, maxs, root.mins, root.maxs), i)
+        })
+        .collect();
+    order.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
     let mut best = f64::MAX;
     let mut best_pair = None;
-    for i in 0..walked.indices().len() {
+    for (to_root, i) in order {
+        if to_root >= best {
+            break;
+        }
         let tri = walked_triangle(i);
         let (mins, maxs) = bounds(&tri);
-        if box_distance(mins, maxs, root.mins, root.maxs) >= best {
-            continue;
-        }
         let found = bvh.find_best(
             best,
             |node, _| box_distance(mins, maxs, node.mins(), node.maxs()),

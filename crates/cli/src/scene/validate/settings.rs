@@ -90,6 +90,9 @@ impl Checker<'_> {
             false,
         );
         self.in_range("interference.joint_play_m", interference.joint_play_m, 0.0, 0.1, false);
+        if let Some(margin) = interference.opening_margin_m {
+            self.in_range("interference.opening_margin_m", margin, 0.0, 1.0, false);
+        }
         let (min, max) = INITIAL_SAMPLES;
         self.count_in("interference.initial_samples", interference.initial_samples, min, max);
         self.count_in(

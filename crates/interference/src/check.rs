@@ -247,14 +247,16 @@ pub fn check_assembly(
     };
     let (apart, jobs): (Vec<_>, Vec<_>) = jobs
         .into_iter()
-        .partition(|(_, a, b)| bound(a, b) > required.clearance_m);
+        .map(|job| (bound(job.1, job.2), job))
+        .partition(|(lower_bound, _)| *lower_bound > required.clearance_m);
+    let jobs: Vec<PairJob<'_>> = jobs.into_iter().map(|(_, job)| job).collect();
     let certified_apart = apart
         .into_iter()
-        .map(|(station, a, b)| ApartPair {
+        .map(|(lower_bound_m, (station, a, b))| ApartPair {
             station,
             part_a: a.name.clone(),
             part_b: b.name.clone(),
-            lower_bound_m: bound(a, b),
+            lower_bound_m,
         })
         .collect();
     // Pairs are independent; rayon keeps their order in the result.

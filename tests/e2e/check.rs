@@ -117,12 +117,7 @@ fn default_scene_passes() {
         }
     }
     // The check runs only what it needs.
-    let stages: Vec<&str> = report["stages"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|s| s.as_str().unwrap())
-        .collect();
+    let stages = crate::stages(&report);
     assert!(
         !stages.contains(&"kinematics") && !stages.contains(&"sizing") && !stages.contains(&"stl"),
         "{stages:?}"

@@ -40,6 +40,7 @@ fn no_arguments_designs_the_default_scene() {
         .collect();
     let reported: BTreeSet<String> = parts
         .iter()
+        .chain(report["mechanism_parts"].as_array().unwrap())
         .map(|p| p["stl_file"].as_str().unwrap().to_string())
         .collect();
     assert_eq!(stl_files, reported, "the STL files are exactly the reported parts");

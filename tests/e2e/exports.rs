@@ -58,16 +58,24 @@ fn export_writes_a_valid_urdf_with_its_meshes_and_drawings() {
         }
     }
 
-    // STL files are exactly the scene's parts.
+    // STL files are exactly the scene's parts and the mechanism's solids.
     let stl: BTreeSet<String> = std::fs::read_dir(&out)
         .unwrap()
         .map(|e| e.unwrap().file_name().into_string().unwrap())
         .filter(|n| n.ends_with(".stl"))
         .collect();
-    let expected: BTreeSet<String> = ["wing", "flap", "front-spar", "rear-spar", "torque-tube"]
+    let mut expected: BTreeSet<String> = ["wing", "flap", "front-spar", "rear-spar", "torque-tube"]
         .iter()
         .map(|p| format!("{p}.stl"))
         .collect();
+    expected.extend(
+        report["mechanism_parts"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| p["stl_file"].as_str().unwrap().to_string()),
+    );
+    assert_eq!(stl.len(), 5 + 16);
     assert_eq!(stl, expected);
 
     // One drawing and one plot page per station, each showing the three settings.

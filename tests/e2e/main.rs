@@ -12,6 +12,7 @@ mod sizing_figures;
 mod stations;
 mod stl_reader;
 mod synthesised_kinds;
+mod viewer_exports;
 
 use std::path::{Path, PathBuf};
 use std::process::Output;
@@ -24,6 +25,16 @@ pub fn repo_root() -> PathBuf {
 /// The default scene's text, as shipped in `data/scenes/`.
 pub fn default_scene_text() -> String {
     std::fs::read_to_string(repo_root().join("data/scenes/small-aircraft.toml")).expect("default scene")
+}
+
+/// The report's `stages`, in order.
+pub fn stages(report: &serde_json::Value) -> Vec<&str> {
+    report["stages"]
+        .as_array()
+        .expect("stages")
+        .iter()
+        .map(|s| s.as_str().expect("a stage name"))
+        .collect()
 }
 
 /// Runs `flapwright` with `args` in `dir`.

@@ -113,12 +113,7 @@ fn default_scene_stations_have_frames_sections_and_sweeps() {
 #[test]
 fn thesis_case_study_scene_reproduces_table_3() {
     let (_dir, report) = design("data/scenes/thesis-case-study.toml");
-    let stages: Vec<&str> = report["stages"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|s| s.as_str().unwrap())
-        .collect();
+    let stages = crate::stages(&report);
     for skipped in ["geometry", "meshing", "planes", "interference", "urdf"] {
         assert!(!stages.contains(&skipped), "no 3D stage without a wing: {stages:?}");
     }

@@ -46,8 +46,10 @@ enum Command {
         #[arg(long, default_value = "flapwright-out")]
         out: PathBuf,
     },
-    /// Export files for viewers and people (URDF + trajectory, STL, SVG); without a flag,
-    /// all of them.
+    /// Export files for viewers and people (URDF + trajectory, STL, SVG, animated glTF);
+    /// without a flag, all of them. Runs only the stages those files need: STL, URDF and
+    /// glTF need no interference check, kinematics or sizing; SVG needs the check (its
+    /// failing pairs are marked) and the kinematics (its plots).
     Export {
         /// Scene file (TOML). Without it, the embedded default scene.
         scene: Option<PathBuf>,
@@ -63,6 +65,9 @@ enum Command {
         /// SVG drawing and plots per station.
         #[arg(long)]
         svg: bool,
+        /// Animated binary glTF (`<scene>.glb`) of the deployment.
+        #[arg(long)]
+        gltf: bool,
     },
     /// Compare mechanism kinds at the scene's stations (`003_...` Table 1, Fig. 17): each
     /// kind designed in place of the stations' mechanisms, its figures in study.json, gap
@@ -161,7 +166,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         None => (None, PathBuf::from("flapwright-out"), Mode::Design, None),
         Some(Command::Design { scene, out }) => (scene.clone(), out.clone(), Mode::Design, None),
         Some(Command::Check { scene, out, junit, .. }) => (scene.clone(), out.clone(), Mode::Check, junit.clone()),
-        Some(Command::Export { scene, out, .. }) => (scene.clone(), out.clone(), Mode::Design, None),
+        Some(Command::Export { scene, out, .. }) => (scene.clone(), out.clone(), Mode::Export, None),
         Some(Command::Study { .. }) => unreachable!("handled above"),
     };
     let (text, scene_dir) = read_scene_text(scene_path.as_deref())?;
@@ -177,10 +182,15 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 .map_or("(embedded default)".into(), |p| p.display().to_string())
         )),
     })?;
-    if let Some(Command::Export { urdf, stl, svg, .. }) = &cli.command {
-        let all = !(*urdf || *stl || *svg);
+    if let Some(Command::Export {
+        urdf, stl, svg, gltf, ..
+    }) = &cli.command
+    {
+        let all = !(*urdf || *stl || *svg || *gltf);
         let outputs = &mut scene.outputs;
-        (outputs.urdf, outputs.stl, outputs.svg) = (all || *urdf, all || *stl, all || *svg);
+        (outputs.urdf, outputs.stl, outputs.svg, outputs.gltf) = (all || *urdf, all || *stl, all || *svg, all || *gltf);
+        // Only the drawings need the check (failing pairs marked) and the sweeps (plots).
+        (outputs.interference, outputs.kinematics) = (outputs.svg, outputs.svg);
         outputs.sizing = false;
     }
     let staged = StagedDir::create(&out, scene_path.as_deref(), cli.force)?;
@@ -262,7 +272,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             eprintln!("--force: replaced {}, which Flapwright had not written", path.display());
         }
     }
-    if mode == Mode::Design && !cli.quiet && !cli.json {
+    if mode != Mode::Check && !cli.quiet && !cli.json {
         for warning in &outcome.report.warnings {
             eprintln!("warning: {warning}");
         }

@@ -11,15 +11,17 @@ use crate::output::StagedDir;
 use crate::report::{Exports, PartReport, Report, SceneInfo, StageTiming, StationReport, SCHEMA_VERSION};
 use crate::scene::Scene;
 
+pub mod animation;
 pub mod exports;
 pub mod flap_position;
 pub mod flight_loads;
-mod geometry;
-mod interference;
+pub(crate) mod geometry;
+pub(crate) mod interference;
+pub mod mechanism_parts;
 pub mod mechanisms;
 mod plausibility;
 mod plots;
-mod sizing;
+pub(crate) mod sizing;
 pub mod stations;
 
 /// What a design run reads.
@@ -88,6 +90,9 @@ pub enum Mode {
     Design,
     /// Only what the interference check needs (no STL, sweeps or sizing).
     Check,
+    /// Only what the requested files need (the scene's outputs as `export` set them): no
+    /// gap and overlap unless the drawings or sweeps ask for them.
+    Export,
 }
 
 /// Designs the scene and writes `report.json` and the requested files into `out`.
@@ -105,7 +110,7 @@ pub fn design_with_progress(
 ) -> Result<Outcome> {
     let scene = inputs.scene;
     let outputs = &scene.outputs;
-    let full = mode == Mode::Design;
+    let full = mode != Mode::Check;
     let mut stages = Stages {
         names: Vec::new(),
         timings: Vec::new(),
@@ -114,6 +119,7 @@ pub fn design_with_progress(
     let mut parts: Vec<PartReport> = Vec::new();
     let mut warnings: Vec<String> = Vec::new();
     let mut interference_report = None;
+    let mut mechanism_part_reports = Vec::new();
 
     let mut meshed = Vec::new();
     let mut tube_path_ac: Vec<nalgebra::Point3<f64>> = Vec::new();
@@ -145,7 +151,9 @@ pub fn design_with_progress(
         if scene.loads.cases.iter().any(|c| c.is_flight_condition()) {
             flight_loads::shares(scene, model, &mut records)?;
         }
-        if full {
+        // A design reports gap and overlap; an export needs them for the sweeps' samples
+        // and the drawings' plots only.
+        if mode == Mode::Design || (full && (outputs.kinematics || outputs.svg)) {
             stages.run("gap-overlap", || {
                 flap_position::flap_positions(&scene.flap, &mut records, scene.interference.required_clearance_m)
             })?;
@@ -205,8 +213,19 @@ pub fn design_with_progress(
     let mut exported = Exports::default();
     // A robot needs a placed station (a wing without flaps has none: its STL is the export).
     let placed = !records.is_empty() && records.iter().all(|r| r.placed.is_some());
+    let mut solids = Vec::new();
+    if full && placed && (outputs.stl || outputs.urdf || outputs.gltf) {
+        solids = stages.run("mechanism-parts", || mechanism_parts::build(scene, &records))?;
+        // URDF meshes are the STL files: writing a URDF writes them too.
+        mechanism_part_reports = mechanism_parts::write_stl(&solids, outputs.stl || outputs.urdf, out)?;
+    }
+    if full && outputs.gltf && placed {
+        exported.gltf = Some(stages.run("gltf", || animation::write_gltf(scene, &meshed, &solids, &records, out))?);
+    }
     if full && outputs.urdf && placed {
-        exported.urdf = Some(stages.run("urdf", || exports::write_urdf(scene, &parts, &records, out))?);
+        exported.urdf = Some(stages.run("urdf", || {
+            exports::write_urdf(scene, &parts, &meshed, &solids, &records, out)
+        })?);
     }
     if full && outputs.svg {
         exported.svg = stages.run("svg", || {
@@ -239,6 +258,7 @@ pub fn design_with_progress(
         },
         stages: stages.names,
         parts,
+        mechanism_parts: mechanism_part_reports,
         stations: station_reports,
         interference: interference_report,
         sizing: sizing_report,

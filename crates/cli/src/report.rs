@@ -21,6 +21,9 @@ pub struct Report {
     pub stages: Vec<String>,
     /// Meshed parts (empty when no geometry stage ran).
     pub parts: Vec<PartReport>,
+    /// Every solid of every station's mechanism (with STL or URDF output): the solids the
+    /// interference check sweeps, stowed, their STL files and masses.
+    pub mechanism_parts: Vec<crate::pipeline::mechanism_parts::MechanismPartReport>,
     /// Per support station.
     pub stations: Vec<StationReport>,
     /// Clearance of every moving/fixed part pair over the deployment (when checked).
@@ -91,6 +94,8 @@ pub struct Exports {
     pub urdf: Option<crate::pipeline::exports::UrdfExport>,
     /// SVG drawings (`station-<name>.svg`) and plots (`plots-<name>.svg`).
     pub svg: Vec<String>,
+    /// The animated glTF of the deployment.
+    pub gltf: Option<crate::pipeline::animation::GltfExport>,
 }
 
 /// Wall time of one stage.

@@ -204,6 +204,62 @@ impl CollisionShape {
     pub fn contains_point(&self, pose: &Isometry3<f64>, point_ac: &Point3<f64>) -> bool {
         self.shape.contains_point(&to_pose(pose), to_glam(point_ac))
     }
+
+    /// The surface the check samples, as a mesh in the local frame: a mesh shape's own
+    /// triangles, a primitive tessellated with 32 subdivisions (its vertices on the
+    /// true surface). Vertices that coincide exactly are shared, so a closed primitive gives
+    /// a closed mesh. For files people look at (STL, glTF): the same solid the check uses.
+    pub fn compute_surface_mesh(&self) -> TriMesh {
+        let mut index: std::collections::HashMap<[u64; 3], u32> = std::collections::HashMap::new();
+        let mut mesh = TriMesh::default();
+        for triangle in self.surface.iter() {
+            let corners = triangle.map(|v| {
+                let key = [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()];
+                *index.entry(key).or_insert_with(|| {
+                    mesh.vertices.push(to_point(v));
+                    (mesh.vertices.len() - 1) as u32
+                })
+            });
+            // A primitive's tessellation collapses rows of triangles at its poles.
+            if corners[0] != corners[1] && corners[1] != corners[2] && corners[0] != corners[2] {
+                mesh.triangles.push(corners);
+            }
+        }
+        mesh
+    }
+
+    /// Mass, centre of mass and inertia of the solid at uniform `density_kg_m3`, in the
+    /// local frame (parry's mass properties: exact for balls and capsules, the divergence
+    /// theorem over the triangles for a closed mesh). `None` for an open surface, which
+    /// holds no volume.
+    pub fn compute_mass_properties(&self, density_kg_m3: f64) -> Option<MassProperties> {
+        if !self.solid {
+            return None;
+        }
+        let properties = self.shape.mass_properties(density_kg_m3);
+        let inertia = properties.reconstruct_inertia_matrix();
+        let column = |c: glamx::DVec3| Vector3::new(c.x, c.y, c.z);
+        Some(MassProperties {
+            mass_kg: properties.mass(),
+            centre_of_mass: to_point(properties.local_com),
+            inertia_kg_m2: nalgebra::Matrix3::from_columns(&[
+                column(inertia.x_axis),
+                column(inertia.y_axis),
+                column(inertia.z_axis),
+            ]),
+        })
+    }
+}
+
+/// Mass properties of a rigid solid ([`CollisionShape::compute_mass_properties`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MassProperties {
+    /// Mass, kg.
+    pub mass_kg: f64,
+    /// Centre of mass, local frame (m).
+    pub centre_of_mass: Point3<f64>,
+    /// Inertia tensor about the centre of mass, local frame axes (kg m^2).
+    pub inertia_kg_m2: nalgebra::Matrix3<f64>,
 }
 
 /// Distance (m) and closest points between shape `a` at `pose_a` and shape `b` at `pose_b`

@@ -60,7 +60,9 @@ pub mod structure;
 pub mod wing;
 
 pub use airfoil::{Airfoil, Naca, NacaCamber, Surface, TrailingEdge};
-pub use collision::{compute_clearance, compute_distance, compute_intersects, Clearance, CollisionShape, Proximity};
+pub use collision::{
+    compute_clearance, compute_distance, compute_intersects, Clearance, CollisionShape, MassProperties, Proximity,
+};
 pub use error::{Error, Result};
 pub use flap::{Flap, FlapSectionSpec, FlapSpec, HingeSpec};
 pub use mesh::{Aabb, MeshCheck, TriMesh};

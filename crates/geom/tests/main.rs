@@ -3,6 +3,7 @@
 mod collision;
 mod dat;
 mod fixture;
+mod mass;
 mod naca;
 mod parts;
 mod penetration;

@@ -1,6 +1,7 @@
 //! Parts as the sweep sees them: a collision shape and how it moves with deployment.
 
-use flapwright_geom::collision::CollisionShape;
+use flapwright_geom::collision::{CollisionShape, MassProperties};
+use flapwright_geom::TriMesh;
 use std::sync::Arc;
 
 use nalgebra::Isometry3;
@@ -83,6 +84,31 @@ impl Part {
             shape,
             motion: Arc::clone(&self.motion),
         }
+    }
+
+    /// The part's surface in the aircraft frame at deployment `t`: the solid the check
+    /// sweeps, tessellated, for files people look at (STL, glTF).
+    pub fn compute_mesh_ac(&self, t: f64) -> Result<TriMesh, flapwright_mechanism::Error> {
+        Ok(self.shape.compute_surface_mesh().transformed(&self.motion.pose_ac(t)?))
+    }
+
+    /// Mass, centre of mass and inertia at uniform `density_kg_m3`, aircraft frame, at
+    /// deployment `t` (the local tensor turned, I = R I_local R^T); `None` for an open
+    /// surface.
+    pub fn compute_mass_properties_ac(
+        &self,
+        density_kg_m3: f64,
+        t: f64,
+    ) -> Result<Option<MassProperties>, flapwright_mechanism::Error> {
+        let pose = self.motion.pose_ac(t)?;
+        Ok(self.shape.compute_mass_properties(density_kg_m3).map(|local| {
+            let turn = pose.rotation.to_rotation_matrix();
+            MassProperties {
+                mass_kg: local.mass_kg,
+                centre_of_mass: pose * local.centre_of_mass,
+                inertia_kg_m2: turn.matrix() * local.inertia_kg_m2 * turn.matrix().transpose(),
+            }
+        }))
     }
 
     /// True when the part moves (non-zero speed bound).

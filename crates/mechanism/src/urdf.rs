@@ -49,6 +49,8 @@
 //!     flap_name: "flap".into(),
 //!     owns_flap: true,
 //!     flap_mesh: Some("meshes/flap.stl".into()),
+//!     flap_inertia: None,
+//!     bodies: vec![],
 //! }];
 //! let base = BaseLink { name: "wing".into(), meshes: vec![] };
 //! let model = urdf::build_robot("right_wing", &base, &stations)?;
@@ -62,8 +64,13 @@
 //! # Ok::<(), flapwright_mechanism::Error>(())
 //! ```
 //!
-//! Limitations: links carry no inertia (mass 0: the file is for viewers and checks, not
-//! for dynamics); joint efforts are 0 (unknown here); joint and velocity limits are the
+//! Geometry and inertia: each body's link shows its solids ([`BodyGeometry`]: mesh files
+//! in the aircraft frame, stowed) as visual and collision elements, and carries the body's
+//! mass, centre of mass and inertia ([`RigidInertia`], aircraft frame, turned into the
+//! link frame here); the flap link its mesh and [`StationMechanism3d::flap_inertia`]. A
+//! body without geometry gets an empty link (mass 0).
+//!
+//! Limitations: joint efforts are 0 (unknown here); joint and velocity limits are the
 //! extremes of 129 samples of the deployment (widened by half the largest step) at the
 //! actuator's nominal speed.
 
@@ -73,7 +80,7 @@ mod rpy;
 mod rules;
 mod trajectory;
 
-use nalgebra::Isometry3;
+use nalgebra::{Isometry3, Matrix3, Point3};
 use serde::Serialize;
 
 use crate::seam::FlapMechanism;
@@ -118,6 +125,62 @@ pub struct StationMechanism3d<'a> {
     /// Flap mesh filename (relative to the URDF), vertices in the aircraft frame with the
     /// flap stowed; only on the owning station.
     pub flap_mesh: Option<String>,
+    /// The flap's mass properties (owning station only; stowed, aircraft frame).
+    pub flap_inertia: Option<RigidInertia>,
+    /// What each body's link shows and weighs; bodies not listed get empty links.
+    pub bodies: Vec<BodyGeometry>,
+}
+
+/// One body's solids and mass properties, for its URDF link.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyGeometry {
+    /// Index of the body in the mechanism's bodies.
+    pub body: usize,
+    /// Its solids' mesh files, vertices in the aircraft frame with the body stowed.
+    pub meshes: Vec<MeshRef>,
+    /// Its mass properties, stowed, aircraft frame.
+    pub inertia: Option<RigidInertia>,
+}
+
+/// Mass, centre of mass and inertia of a rigid body (stowed, aircraft frame).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RigidInertia {
+    /// Mass, kg.
+    pub mass_kg: f64,
+    /// Centre of mass (m).
+    pub centre_of_mass_ac_m: Point3<f64>,
+    /// Inertia tensor about the centre of mass, aircraft axes (kg m^2).
+    pub inertia_ac_kg_m2: Matrix3<f64>,
+}
+
+impl RigidInertia {
+    /// The body made of `parts`: masses add, the centre of mass is their weighted mean and
+    /// each inertia moves to it by the parallel-axis theorem,
+    /// I = sum(I_i + m_i (|d_i|^2 E - d_i d_i^T)) with d_i from the common centre. `None` for
+    /// no parts or no mass.
+    pub fn combined(parts: &[RigidInertia]) -> Option<RigidInertia> {
+        let mass_kg: f64 = parts.iter().map(|p| p.mass_kg).sum();
+        if parts.is_empty() || mass_kg <= 0.0 {
+            return None;
+        }
+        let centre = parts
+            .iter()
+            .map(|p| p.centre_of_mass_ac_m.coords * p.mass_kg)
+            .sum::<nalgebra::Vector3<f64>>()
+            / mass_kg;
+        let inertia = parts
+            .iter()
+            .map(|p| {
+                let d = p.centre_of_mass_ac_m.coords - centre;
+                p.inertia_ac_kg_m2 + (Matrix3::identity() * d.norm_squared() - d * d.transpose()) * p.mass_kg
+            })
+            .sum();
+        Some(RigidInertia {
+            mass_kg,
+            centre_of_mass_ac_m: Point3::from(centre),
+            inertia_ac_kg_m2: inertia,
+        })
+    }
 }
 
 /// A joint of the real mechanism left out of the URDF tree to break a closed loop.

@@ -10,8 +10,8 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 use approx::assert_relative_eq;
 use flapwright_mechanism::urdf::{
-    build_robot, check_rules, rotation_from_rpy, rpy_from_rotation, to_xml, trajectory, BaseLink, MeshRef,
-    StationMechanism3d, Trajectory, UrdfModel,
+    build_robot, check_rules, rotation_from_rpy, rpy_from_rotation, to_xml, trajectory, BaseLink, BodyGeometry,
+    MeshRef, RigidInertia, StationMechanism3d, Trajectory, UrdfModel,
 };
 use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec, Error};
 use nalgebra::{Isometry3, Matrix3, Point3, Rotation3, Translation3, Unit, UnitQuaternion, Vector3};
@@ -75,6 +75,8 @@ fn two_stations<'a>(inner: &'a CircularArcTrack, outer: &'a CircularArcTrack) ->
             flap_name: "flap".to_owned(),
             owns_flap: true,
             flap_mesh: Some("meshes/flap.stl".to_owned()),
+            flap_inertia: None,
+            bodies: Vec::new(),
         },
         StationMechanism3d {
             name: "outer".to_owned(),
@@ -83,6 +85,8 @@ fn two_stations<'a>(inner: &'a CircularArcTrack, outer: &'a CircularArcTrack) ->
             flap_name: "flap".to_owned(),
             owns_flap: false,
             flap_mesh: None,
+            flap_inertia: None,
+            bodies: Vec::new(),
         },
     ]
 }
@@ -183,6 +187,8 @@ fn bad_inputs_are_named_errors() {
         flap_name: "flap".to_owned(),
         owns_flap,
         flap_mesh: flap_mesh.map(str::to_owned),
+        flap_inertia: None,
+        bodies: Vec::new(),
     };
     let base = base_link();
     let error = |stations: &[StationMechanism3d]| build_robot("w", &base, stations).unwrap_err();
@@ -234,6 +240,8 @@ fn trajectory_serialises_with_its_documented_keys() {
         flap_name: "flap".to_owned(),
         owns_flap: true,
         flap_mesh: None,
+        flap_inertia: None,
+        bodies: Vec::new(),
     }];
     let json = serde_json::to_value(trajectory(&stations, 2).unwrap()).unwrap();
     assert_eq!(

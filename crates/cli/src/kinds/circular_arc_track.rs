@@ -179,6 +179,10 @@ impl KindScene for CircularArcTrackScene {
 
     /// Screw, jack body, nut and the three fittings move; the two tracks are fixed but
     /// counted, as the check pairs them too.
+    fn flap_mass_kg(&self) -> f64 {
+        self.flap_mass_kg
+    }
+
     fn moving_parts(&self) -> usize {
         7
     }

@@ -117,6 +117,10 @@ impl KindScene for DroppedHingeScene {
 
     /// Two arms, screw, jack body and nut move (a rotary actuator: the arms); two truss
     /// members are fixed.
+    fn flap_mass_kg(&self) -> f64 {
+        self.flap_mass_kg
+    }
+
     fn moving_parts(&self) -> usize {
         7
     }

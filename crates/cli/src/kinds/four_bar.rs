@@ -75,6 +75,10 @@ impl KindScene for FourBarScene {
     }
 
     /// Crank, rocker, bracket, screw, jack body and nut move; two struts are fixed.
+    fn flap_mass_kg(&self) -> f64 {
+        self.flap_mass_kg
+    }
+
     fn moving_parts(&self) -> usize {
         8
     }

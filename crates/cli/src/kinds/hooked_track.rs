@@ -71,6 +71,10 @@ impl KindScene for HookedTrackScene {
 
     /// The flap's fitting and roller and the carriage move; the rail, hook, screw, jack
     /// body and struts are fixed.
+    fn flap_mass_kg(&self) -> f64 {
+        self.flap_mass_kg
+    }
+
     fn moving_parts(&self) -> usize {
         3
     }

@@ -62,6 +62,10 @@ impl KindScene for LinkTrackScene {
 
     /// The flap's fitting and carriage and the link move; the track, actuator and struts
     /// are fixed.
+    fn flap_mass_kg(&self) -> f64 {
+        self.flap_mass_kg
+    }
+
     fn moving_parts(&self) -> usize {
         3
     }

@@ -285,6 +285,10 @@ pub trait KindScene {
     /// work estimate).
     fn moving_parts(&self) -> usize;
 
+    /// The flap mass this station carries (kg): the flap's URDF and glTF mass is the sum
+    /// over its stations.
+    fn flap_mass_kg(&self) -> f64;
+
     /// The synthesised mechanism, from the table and `context`; on failure, the message and
     /// the keys to change.
     fn synthesise(&self, context: &SynthesisContext) -> Result<Arc<dyn FlapMechanism>, String>;

@@ -6,14 +6,18 @@ use flapwright_drawing::{
     convex_hull, render_plots_svg, render_station_svg, Dimension, Joint, Link, MechanismSnapshot, PartStyle,
     SectionOutline, SlotArc, StationDrawing,
 };
+use flapwright_geom::CollisionShape;
 use flapwright_interference::InterferenceReport;
 use flapwright_mechanism::seam::BodyRole;
-use flapwright_mechanism::urdf::{build_robot, to_xml, trajectory, BaseLink, CutJoint, MeshRef, StationMechanism3d};
+use flapwright_mechanism::urdf::{
+    build_robot, to_xml, trajectory, BaseLink, BodyGeometry, CutJoint, MeshRef, RigidInertia, StationMechanism3d,
+};
 use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
 use serde::Serialize;
 
 use crate::output::StagedDir;
+use crate::pipeline::mechanism_parts::MechanismSolid;
 use crate::pipeline::mechanisms::StationRecord;
 use crate::pipeline::plots::{station_plots, SettingTarget};
 use crate::report::PartReport;
@@ -30,10 +34,14 @@ pub struct UrdfExport {
     pub cut_joints: Vec<CutJoint>,
 }
 
-/// Writes `<scene>.urdf` and `trajectory.json`; meshes are the part STL files beside them.
+/// Writes `<scene>.urdf` and `trajectory.json`; meshes are the part STL files beside them
+/// (`solids`: the mechanism's, with their mass properties; `meshed`: the wing's, for the
+/// flap's inertia).
 pub fn write_urdf(
     scene: &Scene,
     parts: &[PartReport],
+    meshed: &[flapwright_geom::parts::Part],
+    solids: &[MechanismSolid],
     records: &[StationRecord],
     out: &StagedDir,
 ) -> Result<UrdfExport> {
@@ -63,6 +71,11 @@ pub fn write_urdf(
             let flap_name = record.flap.clone().unwrap_or_default();
             let owns_flap = !owner_seen.contains(&flap_name);
             owner_seen.push(flap_name.clone());
+            let flap_inertia = if owns_flap {
+                flap_inertia(scene, meshed, records, &flap_name)?
+            } else {
+                None
+            };
             Ok(StationMechanism3d {
                 name: record.station.clone(),
                 aircraft_from_station: *place.station.frame.aircraft_from_station(),
@@ -77,6 +90,8 @@ pub fn write_urdf(
                 },
                 flap_name,
                 owns_flap,
+                flap_inertia,
+                bodies: body_geometry(record, solids),
             })
         })
         .collect::<Result<_>>()?;
@@ -99,6 +114,70 @@ pub fn write_urdf(
         trajectory_file,
         cut_joints: model.cut_joints,
     })
+}
+
+/// Each body's solids of `record`'s station as URDF link geometry: the STL files and the
+/// solids' mass properties combined.
+fn body_geometry(record: &StationRecord, solids: &[MechanismSolid]) -> Vec<BodyGeometry> {
+    let mut bodies: Vec<BodyGeometry> = Vec::new();
+    let mut inertias: Vec<Vec<RigidInertia>> = Vec::new();
+    for solid in solids.iter().filter(|s| s.station == record.station) {
+        let index = match bodies.iter().position(|b| b.body == solid.body) {
+            Some(index) => index,
+            None => {
+                bodies.push(BodyGeometry {
+                    body: solid.body,
+                    meshes: Vec::new(),
+                    inertia: None,
+                });
+                inertias.push(Vec::new());
+                bodies.len() - 1
+            }
+        };
+        bodies[index].meshes.push(MeshRef {
+            // URDF names take no dots.
+            name: solid.name.replace('.', "_"),
+            filename: crate::pipeline::mechanism_parts::stl_name(&solid.name),
+        });
+        inertias[index].push(solid.inertia);
+    }
+    for (body, parts) in bodies.iter_mut().zip(&inertias) {
+        body.inertia = RigidInertia::combined(parts);
+    }
+    bodies
+}
+
+/// The flap's mass properties: the sum of `flap_mass_kg` over the stations that carry it,
+/// spread uniformly through its closed mesh (stowed, aircraft frame); `None` for a flap
+/// without mass.
+fn flap_inertia(
+    scene: &Scene,
+    meshed: &[flapwright_geom::parts::Part],
+    records: &[StationRecord],
+    flap: &str,
+) -> Result<Option<RigidInertia>> {
+    let mass_kg: f64 = records
+        .iter()
+        .filter(|r| r.flap.as_deref() == Some(flap))
+        .map(|r| scene.station[r.index].mechanism.kind().flap_mass_kg())
+        .sum();
+    let Some(part) = meshed.iter().find(|p| p.name == flap) else {
+        return Ok(None);
+    };
+    let shape = CollisionShape::from_mesh(&part.mesh).with_context(|| format!("the mesh of flap {flap}"))?;
+    let Some(unit) = shape.compute_mass_properties(1.0) else {
+        return Ok(None);
+    };
+    if mass_kg <= 0.0 || unit.mass_kg <= 0.0 {
+        return Ok(None);
+    }
+    // At density 1 the mass is the volume: scale to the flap's mass.
+    let density = mass_kg / unit.mass_kg;
+    Ok(Some(RigidInertia {
+        mass_kg,
+        centre_of_mass_ac_m: unit.centre_of_mass,
+        inertia_ac_kg_m2: unit.inertia_kg_m2 * density,
+    }))
 }
 
 fn style_of(part: &str, flap_names: &[String]) -> PartStyle {

@@ -166,12 +166,7 @@ pub fn write_parts(parts: &[Part], write_stl: bool, out: &StagedDir) -> Result<V
         .iter()
         .map(|part| {
             let stl_file = if write_stl {
-                let name = format!("{}.stl", part.name);
-                let file = std::fs::File::create(out.file(&name)).with_context(|| format!("creating {name}"))?;
-                let mut writer = std::io::BufWriter::new(file);
-                flapwright_geom::io::stl::write_binary(&part.mesh, &part.name, &mut writer)
-                    .with_context(|| format!("writing {name}"))?;
-                Some(name)
+                Some(write_stl_file(&part.mesh, &part.name, out)?)
             } else {
                 None
             };
@@ -189,6 +184,16 @@ pub fn write_parts(parts: &[Part], write_stl: bool, out: &StagedDir) -> Result<V
             })
         })
         .collect()
+}
+
+/// Writes `mesh` as the binary STL `<name>.stl` (the solid named `name`); returns the
+/// file name.
+pub(crate) fn write_stl_file(mesh: &flapwright_geom::TriMesh, name: &str, out: &StagedDir) -> Result<String> {
+    let file_name = format!("{name}.stl");
+    let file = std::fs::File::create(out.file(&file_name)).with_context(|| format!("creating {file_name}"))?;
+    let mut writer = std::io::BufWriter::new(file);
+    flapwright_geom::io::stl::write_binary(mesh, name, &mut writer).with_context(|| format!("writing {file_name}"))?;
+    Ok(file_name)
 }
 
 /// The report's name for a part kind (stable: tools match on it).

@@ -33,26 +33,7 @@ pub fn check(scene: &Scene, meshed: &[MeshPart], records: &[StationRecord]) -> R
             CollisionShape::from_mesh(&part.mesh).with_context(|| format!("collision shape of {}", part.name))?;
         match part.kind {
             PartKind::Flap => {
-                let carriers: Vec<&StationRecord> = records
-                    .iter()
-                    .filter(|record| record.flap.as_deref() == Some(part.name.as_str()))
-                    .collect();
-                let Some(first) = carriers.first() else {
-                    anyhow::bail!("flap {} has no station", part.name);
-                };
-                if carriers.len() == 1 {
-                    // One station: the flap follows its planar displacement exactly.
-                    flaps.push(flap_part(
-                        &part.name,
-                        shape,
-                        &part.mesh.vertices,
-                        placed(first)?.station.frame.aircraft_from_station(),
-                        &first.mechanism,
-                    )?);
-                } else {
-                    let motion = fitted_flap_motion(&part.name, &carriers, &part.mesh.vertices)?;
-                    flaps.push(Part::moving(part.name.clone(), shape, motion));
-                }
+                flaps.push(moving_flap(part, shape, records)?);
                 flap_meshes.push(&part.mesh);
             }
             kind => {
@@ -122,6 +103,35 @@ pub fn check(scene: &Scene, meshed: &[MeshPart], records: &[StationRecord]) -> R
     };
     // The drive fraction: 0 stowed, 1 deployed at every station.
     Ok(check_assembly(&assembly, 1.0, &required, &sweep)?)
+}
+
+/// The flap `part` (its collision `shape`) moving as its stations move it: exactly with
+/// the one station's flap displacement, or by the rigid motion fitted to several.
+pub fn moving_flap(part: &MeshPart, shape: CollisionShape, records: &[StationRecord]) -> Result<Part> {
+    let carriers: Vec<&StationRecord> = records
+        .iter()
+        .filter(|record| record.flap.as_deref() == Some(part.name.as_str()))
+        .collect();
+    let Some(first) = carriers.first() else {
+        anyhow::bail!("flap {} has no station", part.name);
+    };
+    if carriers.len() == 1 {
+        let placed = first
+            .placed
+            .as_ref()
+            .with_context(|| format!("station {} is not placed", first.station))?;
+        // One station: the flap follows its planar displacement exactly.
+        Ok(flap_part(
+            &part.name,
+            shape,
+            &part.mesh.vertices,
+            placed.station.frame.aircraft_from_station(),
+            &first.mechanism,
+        )?)
+    } else {
+        let motion = fitted_flap_motion(&part.name, &carriers, &part.mesh.vertices)?;
+        Ok(Part::moving(part.name.clone(), shape, motion))
+    }
 }
 
 /// The rigid motion of a flap carried by several stations, fitted to their sections as

@@ -15,7 +15,7 @@ use crate::pipeline::mechanisms::{MechanismReport, StationRecord};
 use crate::scene::Scene;
 
 /// The material a scene names: a preset or one of its `[[materials]]`.
-fn material(scene: &Scene, name: &str) -> Result<Material> {
+pub(crate) fn material(scene: &Scene, name: &str) -> Result<Material> {
     let material = match name {
         "steel-4340" => Material::steel_4340(),
         "aluminium-7075-t6" => Material::aluminium_7075_t6(),

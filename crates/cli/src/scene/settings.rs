@@ -175,6 +175,9 @@ pub struct OutputsScene {
     /// SVG drawing and plots per station.
     #[serde(default = "yes")]
     pub svg: bool,
+    /// Animated binary glTF of the deployment (needs a wing).
+    #[serde(default = "yes")]
+    pub gltf: bool,
 }
 
 fn yes() -> bool {
@@ -190,6 +193,7 @@ impl Default for OutputsScene {
             interference: true,
             urdf: true,
             svg: true,
+            gltf: true,
         }
     }
 }

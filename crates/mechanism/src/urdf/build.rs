@@ -4,11 +4,14 @@ use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
 use nalgebra::{Isometry2, Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
-use urdf_rs::{Axis, Geometry, Joint, JointLimit, JointType, Link, LinkName, Robot, Vec3, Visual};
+use urdf_rs::{
+    Axis, Collision, Geometry, Inertia, Inertial, Joint, JointLimit, JointType, Link, LinkName, Mass, Robot, Vec3,
+    Visual,
+};
 
 use super::layout::{validate_mesh_path, validate_name, validate_stations, StationTree, TreeJointType};
 use super::rpy::origin_from_isometry;
-use super::{BaseLink, CutJoint, StationMechanism3d, UrdfModel};
+use super::{BaseLink, CutJoint, MeshRef, RigidInertia, StationMechanism3d, UrdfModel};
 use crate::error::{Error, Result};
 use crate::seam::{JointEnd, JointGeometry};
 
@@ -34,11 +37,7 @@ pub fn build_robot(robot_name: &str, base: &BaseLink, stations: &[StationMechani
     validate_name("base link", &base.name)?;
     validate_stations(stations)?;
     let mut base_link = empty_link(&base.name);
-    for mesh in &base.meshes {
-        base_link
-            .visual
-            .push(mesh_visual(mesh.name.as_str(), &mesh.filename, &Isometry3::identity())?);
-    }
+    dress(&mut base_link, &base.meshes, None, &Isometry3::identity())?;
     let mut robot = Robot {
         name: robot_name.to_owned(),
         version: Some(URDF_VERSION.to_owned()),
@@ -126,7 +125,17 @@ fn add_station(
     };
     let mut movable_limits = limits.iter();
     for link in &tree.links {
-        robot.links.push(empty_link(&link.name));
+        let mut urdf_link = empty_link(&link.name);
+        if let Some(geometry) = station.bodies.iter().find(|g| g.body == link.body) {
+            let link_from_aircraft = (placement * lift(&link.frame)).inverse();
+            dress(
+                &mut urdf_link,
+                &geometry.meshes,
+                geometry.inertia.as_ref(),
+                &link_from_aircraft,
+            )?;
+        }
+        robot.links.push(urdf_link);
         let parent_from_child = lift(&(frame_of(link.parent_body).inverse() * link.frame));
         let (joint_type, axis, limit) = match link.joint_type {
             TreeJointType::Fixed => (JointType::Fixed, z, None),
@@ -182,11 +191,15 @@ fn add_station(
         // The flap link frame = this station's frame with the flap stowed, so a mesh given
         // in the aircraft frame needs the visual origin station_from_aircraft.
         let mut flap = empty_link(&station.flap_name);
-        if let Some(filename) = &station.flap_mesh {
-            validate_mesh_path(filename)?;
-            flap.visual
-                .push(mesh_visual(&station.flap_name, filename, &placement.inverse())?);
-        }
+        let meshes: Vec<MeshRef> = station
+            .flap_mesh
+            .iter()
+            .map(|filename| MeshRef {
+                name: station.flap_name.clone(),
+                filename: filename.clone(),
+            })
+            .collect();
+        dress(&mut flap, &meshes, station.flap_inertia.as_ref(), &placement.inverse())?;
         robot.links.push(flap);
         robot.joints.push(joint(
             &format!("{}_flap_mount", station.name),
@@ -225,6 +238,50 @@ fn empty_link(name: &str) -> Link {
         visual: Vec::new(),
         collision: Vec::new(),
     }
+}
+
+/// Gives `link` the meshes (aircraft frame) as visual and collision elements and the
+/// inertia (aircraft frame) as its inertial element, both turned into the link frame by
+/// `link_from_aircraft`: the centre of mass is mapped, the tensor turned, I_link = R I R^T.
+fn dress(
+    link: &mut Link,
+    meshes: &[MeshRef],
+    inertia: Option<&RigidInertia>,
+    link_from_aircraft: &Isometry3<f64>,
+) -> Result<()> {
+    for mesh in meshes {
+        let visual = mesh_visual(&mesh.name, &mesh.filename, link_from_aircraft)?;
+        link.collision.push(Collision {
+            name: visual.name.clone(),
+            origin: visual.origin.clone(),
+            geometry: visual.geometry.clone(),
+        });
+        link.visual.push(visual);
+    }
+    if let Some(inertia) = inertia {
+        let centre = link_from_aircraft * inertia.centre_of_mass_ac_m;
+        let turn = link_from_aircraft.rotation.to_rotation_matrix();
+        let tensor = turn.matrix() * inertia.inertia_ac_kg_m2 * turn.matrix().transpose();
+        // Symmetric by construction; the mean of the two off-diagonal terms keeps it so
+        // through rounding.
+        let off = |i: usize, j: usize| 0.5 * (tensor[(i, j)] + tensor[(j, i)]);
+        link.inertial = Inertial {
+            origin: urdf_rs::Pose {
+                xyz: Vec3([centre.x, centre.y, centre.z]),
+                rpy: Vec3([0.0; 3]),
+            },
+            mass: Mass { value: inertia.mass_kg },
+            inertia: Inertia {
+                ixx: tensor[(0, 0)],
+                ixy: off(0, 1),
+                ixz: off(0, 2),
+                iyy: tensor[(1, 1)],
+                iyz: off(1, 2),
+                izz: tensor[(2, 2)],
+            },
+        };
+    }
+    Ok(())
 }
 
 fn mesh_visual(name: &str, filename: &str, link_from_mesh: &Isometry3<f64>) -> Result<Visual> {

@@ -113,6 +113,8 @@ fn placements_at_gimbal_lock_survive_the_file() {
             flap_name: "flap".to_owned(),
             owns_flap: true,
             flap_mesh: None,
+            flap_inertia: None,
+            bodies: Vec::new(),
         };
         let stations = [station];
         let model = build_robot("gimbal", &base_link(), &stations).unwrap();
@@ -192,4 +194,67 @@ fn joint_values_start_stowed_and_stay_within_limits() {
     // (about 1.1 mm of stroke: 3 % of this extreme).
     assert!(limit_extreme.abs() >= analytic.abs(), "{limit_extreme} vs {analytic}");
     assert_relative_eq!(limit_extreme, analytic, max_relative = 5e-2);
+}
+
+#[test]
+fn body_inertia_lands_on_its_link_at_stowed_whatever_the_link_frame() {
+    let (inner, outer) = (thesis_track(), scaled_track(0.8));
+    let mut stations = two_stations(&inner, &outer);
+    // A made-up, anisotropic inertia for every body of the inner station, given in the
+    // aircraft frame: the file must carry it to each body's link frame.
+    let tensor = Matrix3::new(3.0, 0.4, -0.2, 0.4, 2.0, 0.1, -0.2, 0.1, 1.5) * 1e-3;
+    let centre = Point3::new(3.1, 1.55, 0.35);
+    let inertia = RigidInertia {
+        mass_kg: 1.25,
+        centre_of_mass_ac_m: centre,
+        inertia_ac_kg_m2: tensor,
+    };
+    stations[0].bodies = (0..flapwright_mechanism::FlapMechanism::bodies(&inner).len())
+        .map(|body| BodyGeometry {
+            body,
+            meshes: vec![MeshRef {
+                name: format!("solid{body}"),
+                filename: format!("inner.solid{body}.stl"),
+            }],
+            inertia: Some(inertia),
+        })
+        .collect();
+    stations[0].flap_inertia = Some(inertia);
+    let robot = read_back(&build_robot("right_wing", &base_link(), &stations).unwrap());
+    let poses = forward_kinematics(&robot, &HashMap::new());
+    let dressed: Vec<_> = robot.links.iter().filter(|l| l.inertial.mass.value > 0.0).collect();
+    assert_eq!(
+        dressed.len(),
+        flapwright_mechanism::FlapMechanism::bodies(&inner).len() + 1
+    );
+    for link in dressed {
+        assert_eq!(link.inertial.mass.value, 1.25);
+        let frame = poses[&link.name] * pose_isometry(&link.inertial.origin);
+        assert_relative_eq!(frame.translation.vector, centre.coords, epsilon = 1e-12);
+        let i = &link.inertial.inertia;
+        let in_link = Matrix3::new(i.ixx, i.ixy, i.ixz, i.ixy, i.iyy, i.iyz, i.ixz, i.iyz, i.izz);
+        let turn = frame.rotation.to_rotation_matrix();
+        let back = turn.matrix() * in_link * turn.matrix().transpose();
+        assert_relative_eq!(back, tensor, epsilon = 1e-15);
+        assert_eq!(link.collision.len(), link.visual.len());
+    }
+}
+
+#[test]
+fn combined_inertia_is_the_parallel_axis_sum() {
+    // Two 1 kg points 2 m apart on x: 2 kg at the middle, I_yy = I_zz = 2 kg m^2.
+    let point = |x: f64| RigidInertia {
+        mass_kg: 1.0,
+        centre_of_mass_ac_m: Point3::new(x, 0.0, 0.0),
+        inertia_ac_kg_m2: Matrix3::zeros(),
+    };
+    let both = RigidInertia::combined(&[point(1.0), point(3.0)]).unwrap();
+    assert_eq!(both.mass_kg, 2.0);
+    assert_relative_eq!(both.centre_of_mass_ac_m, Point3::new(2.0, 0.0, 0.0));
+    assert_relative_eq!(
+        both.inertia_ac_kg_m2,
+        Matrix3::from_diagonal(&Vector3::new(0.0, 2.0, 2.0)),
+        epsilon = 1e-15
+    );
+    assert!(RigidInertia::combined(&[]).is_none());
 }

@@ -1,0 +1,3 @@
+//! Integration tests of flapwright-gltf (one binary, a module per topic).
+
+mod read_back;

@@ -1,0 +1,270 @@
+//! Files for viewers (issue 18): every mechanism solid in STL, URDF links with geometry,
+//! mass and inertia, the animated glTF read back against the solver's key points, and an
+//! `export` that runs only the stages its files need.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::Path;
+
+use nalgebra::{Matrix3, Point3, Quaternion, UnitQuaternion, Vector3};
+
+use crate::stl_reader::{check_closed_oriented, read_binary_stl};
+use crate::{repo_root, run_flapwright};
+
+fn export(dir: &Path, args: &[&str]) -> serde_json::Value {
+    let output = run_flapwright(dir, args);
+    assert!(
+        output.status.success(),
+        "flapwright {args:?}\nstderr:\n{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let out = args[args.iter().position(|a| *a == "--out").unwrap() + 1];
+    serde_json::from_str(&std::fs::read_to_string(dir.join(out).join("report.json")).unwrap()).unwrap()
+}
+
+fn transport_scene() -> String {
+    repo_root()
+        .join("data/scenes/transport-flap.toml")
+        .display()
+        .to_string()
+}
+
+#[test]
+fn export_stl_runs_no_check_and_writes_every_mechanism_solid_closed() {
+    let dir = tempfile::tempdir().unwrap();
+    let report = export(dir.path(), &["export", "--stl", "--out", "stl"]);
+    let stages = crate::stages(&report);
+    for absent in ["interference", "fairing", "gap-overlap", "kinematics", "sizing"] {
+        assert!(!stages.contains(&absent), "{absent} ran: {stages:?}");
+    }
+    assert!(report["interference"].is_null());
+    let out = dir.path().join("stl");
+    let parts = report["mechanism_parts"].as_array().unwrap();
+    // Every solid of both stations' circular-arc tracks.
+    let names: BTreeSet<&str> = parts.iter().map(|p| p["name"].as_str().unwrap()).collect();
+    for station in ["inner", "outer"] {
+        for solid in [
+            "screw",
+            "nut",
+            "jack-body",
+            "inner-track",
+            "outer-track",
+            "fitting-A",
+            "fitting-F",
+            "fitting-G",
+        ] {
+            assert!(
+                names.contains(format!("{station}.{solid}").as_str()),
+                "{station}.{solid} in {names:?}"
+            );
+        }
+    }
+    for part in parts {
+        let file = part["stl_file"].as_str().unwrap();
+        let triangles = read_binary_stl(&std::fs::read(out.join(file)).unwrap());
+        let volume = check_closed_oriented(&triangles).unwrap_or_else(|e| panic!("{file}: {e}"));
+        // The mass is the solid's at the material density (the default scene's screw and
+        // link materials are both steel 4340, 7850 kg/m^3); a capsule's or ball's mesh is
+        // inscribed in the round solid, so its volume is within 2 % under the solid's; a
+        // track's tube is its mesh (equal to the STL's 32-bit rounding).
+        let density = 7850.0;
+        let solid_volume = part["mass_kg"].as_f64().unwrap() / density;
+        assert!(
+            volume < solid_volume * (1.0 + 1e-6) && volume > 0.98 * solid_volume,
+            "{file}: mesh {volume} m^3 against the solid's {solid_volume} m^3"
+        );
+    }
+}
+
+/// Symmetric positive definite, principal moments obeying the triangle inequality.
+fn valid_inertia(i: &urdf_rs::Inertia) -> Result<(), String> {
+    let tensor = Matrix3::new(i.ixx, i.ixy, i.ixz, i.ixy, i.iyy, i.iyz, i.ixz, i.iyz, i.izz);
+    let mut moments: Vec<f64> = tensor.symmetric_eigenvalues().iter().copied().collect();
+    moments.sort_by(f64::total_cmp);
+    if moments[0] <= 0.0 {
+        return Err(format!("not positive definite: {moments:?}"));
+    }
+    if moments[0] + moments[1] < moments[2] * (1.0 - 1e-9) {
+        return Err(format!("principal moments break the triangle inequality: {moments:?}"));
+    }
+    Ok(())
+}
+
+#[test]
+fn urdf_links_that_move_have_geometry_mass_and_inertia_on_both_scenes() {
+    let dir = tempfile::tempdir().unwrap();
+    let transport = transport_scene();
+    for (scene, out) in [(None, "small"), (Some(transport.as_str()), "transport")] {
+        let mut args = vec!["export"];
+        args.extend(scene);
+        args.extend(["--urdf", "--out", out]);
+        let report = export(dir.path(), &args);
+        let urdf = report["files"]["urdf"]["file"].as_str().unwrap();
+        let xml = std::fs::read_to_string(dir.path().join(out).join(urdf)).unwrap();
+        let robot = urdf_rs::read_from_string(&xml).unwrap();
+        let link = |name: &str| robot.links.iter().find(|l| l.name == name).unwrap();
+        let mut moving = 0;
+        for joint in robot
+            .joints
+            .iter()
+            .filter(|j| j.joint_type != urdf_rs::JointType::Fixed)
+        {
+            let child = link(&joint.child.link);
+            assert!(!child.visual.is_empty(), "{out}: {} has no visual", child.name);
+            assert_eq!(child.collision.len(), child.visual.len(), "{out}: {}", child.name);
+            assert!(child.inertial.mass.value > 0.0, "{out}: {} has no mass", child.name);
+            valid_inertia(&child.inertial.inertia).unwrap_or_else(|e| panic!("{out}: {}: {e}", child.name));
+            for visual in &child.visual {
+                let urdf_rs::Geometry::Mesh { filename, .. } = &visual.geometry else {
+                    panic!("{out}: {} shows a primitive", child.name)
+                };
+                assert!(dir.path().join(out).join(filename).is_file(), "{filename}");
+            }
+            moving += 1;
+        }
+        assert!(moving >= 3, "{out}: {moving} movable links");
+        // A station's links weigh what its solids weigh.
+        let solids: f64 = report["mechanism_parts"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| p["mass_kg"].as_f64().unwrap())
+            .sum();
+        let flap_links: Vec<&str> = report["parts"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|p| p["kind"] == "flap")
+            .map(|p| p["name"].as_str().unwrap())
+            .collect();
+        let links: f64 = robot
+            .links
+            .iter()
+            .filter(|l| !flap_links.contains(&l.name.as_str()))
+            .map(|l| l.inertial.mass.value)
+            .sum();
+        assert!(
+            (links - solids).abs() <= 1e-9 * solids,
+            "{out}: links {links} kg, solids {solids} kg"
+        );
+        for flap in flap_links {
+            assert!(link(flap).inertial.mass.value > 0.0, "{out}: flap {flap} has its mass");
+        }
+    }
+}
+
+/// A node's keyframe k as the displacement it shows: p -> t_k + R_k (p - anchor).
+struct NodeTrack {
+    anchor: Vector3<f64>,
+    translations: Vec<[f32; 3]>,
+    rotations: Vec<[f32; 4]>,
+}
+
+impl NodeTrack {
+    fn show(&self, k: usize, stowed: &Point3<f64>) -> Point3<f64> {
+        let [x, y, z, w] = self.rotations[k].map(f64::from);
+        let rotation = UnitQuaternion::from_quaternion(Quaternion::new(w, x, y, z));
+        let t = Vector3::from(self.translations[k].map(f64::from));
+        Point3::from(t + rotation * (stowed.coords - self.anchor))
+    }
+}
+
+#[test]
+fn gltf_has_a_node_per_part_and_keyframes_that_carry_the_solvers_key_points() {
+    let dir = tempfile::tempdir().unwrap();
+    let report = export(dir.path(), &["export", "--gltf", "--urdf", "--out", "viewer"]);
+    let out = dir.path().join("viewer");
+    let gltf_file = report["files"]["gltf"]["file"].as_str().unwrap();
+    let document = gltf::Gltf::from_slice(&std::fs::read(out.join(gltf_file)).unwrap()).unwrap();
+    let blob = document.blob.as_deref().unwrap();
+    let nodes: BTreeSet<&str> = document.nodes().filter_map(|n| n.name()).collect();
+    let parts = report["parts"].as_array().unwrap().iter();
+    let solids = report["mechanism_parts"].as_array().unwrap().iter();
+    for part in parts.chain(solids) {
+        assert!(nodes.contains(part["name"].as_str().unwrap()), "node {}", part["name"]);
+    }
+    let animations: Vec<_> = document.animations().collect();
+    assert_eq!(animations.len(), 1);
+    let mut tracks: BTreeMap<String, NodeTrack> = BTreeMap::new();
+    for channel in animations[0].channels() {
+        let node = channel.target().node();
+        let [x, y, z] = node.transform().decomposed().0;
+        let track = tracks.entry(node.name().unwrap().to_string()).or_insert(NodeTrack {
+            anchor: Vector3::new(x as f64, y as f64, z as f64),
+            translations: Vec::new(),
+            rotations: Vec::new(),
+        });
+        match channel.reader(|_| Some(blob)).read_outputs().unwrap() {
+            gltf::animation::util::ReadOutputs::Translations(values) => track.translations = values.collect(),
+            gltf::animation::util::ReadOutputs::Rotations(values) => track.rotations = values.into_f32().collect(),
+            _ => panic!("translation and rotation only"),
+        }
+    }
+    // The solver's own poses: trajectory.json's key points at the same deployment samples.
+    let trajectory: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("trajectory.json")).unwrap()).unwrap();
+    let samples = trajectory["samples"].as_array().unwrap();
+    let point =
+        |v: &serde_json::Value| Point3::new(v[0].as_f64().unwrap(), v[1].as_f64().unwrap(), v[2].as_f64().unwrap());
+    let mut worst = 0.0_f64;
+    let mut checked = 0;
+    for key in trajectory["key_points"].as_array().unwrap() {
+        let name = key["name"].as_str().unwrap();
+        // `<station>.<body>.<point>`: a point a moving body carries.
+        let [station, body, _] = name.split('.').collect::<Vec<_>>()[..] else {
+            continue;
+        };
+        let solid = report["mechanism_parts"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|p| p["station"] == station && p["body"] == body)
+            .unwrap_or_else(|| panic!("a solid of {station}.{body}"));
+        let track = &tracks[solid["name"].as_str().unwrap()];
+        assert_eq!(track.translations.len(), samples.len());
+        let stowed = point(&samples[0]["key_points_ac_m"][name]);
+        for (k, sample) in samples.iter().enumerate() {
+            let solver = point(&sample["key_points_ac_m"][name]);
+            worst = worst.max((track.show(k, &stowed) - solver).norm());
+        }
+        checked += 1;
+    }
+    assert!(checked >= 8, "{checked} key points");
+    // Keyframes are 32-bit floats (glTF's only choice for animation outputs): within a
+    // few units in the last place of coordinates of a few metres.
+    assert!(worst < 2e-6, "largest key point error {worst} m");
+    let error = report["files"]["gltf"]["max_interpolation_error_m"].as_f64().unwrap();
+    assert!(error > 0.0 && error < 1e-3, "interpolation error {error} m");
+}
+
+#[test]
+fn the_same_scene_gives_the_same_files() {
+    let dir = tempfile::tempdir().unwrap();
+    for out in ["first", "second"] {
+        export(dir.path(), &["export", "--gltf", "--urdf", "--stl", "--out", out]);
+    }
+    let files: Vec<String> = std::fs::read_dir(dir.path().join("first"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    assert!(files.len() > 20);
+    for file in files {
+        let [a, b] = ["first", "second"].map(|out| std::fs::read(dir.path().join(out).join(&file)).unwrap());
+        if file == "report.json" || file == flapwright::output::MANIFEST {
+            // Apart from the timings (and the manifest's record of the report).
+            let strip = |bytes: &[u8]| {
+                let mut v: serde_json::Value = serde_json::from_slice(bytes).unwrap();
+                v.as_object_mut().unwrap().remove("timings");
+                v.as_object_mut()
+                    .unwrap()
+                    .remove("files")
+                    .filter(|_| file != "report.json");
+                v
+            };
+            if file == "report.json" {
+                assert_eq!(strip(&a), strip(&b), "{file}");
+            }
+            continue;
+        }
+        assert!(a == b, "{file} differs between two runs");
+    }
+}

@@ -176,16 +176,8 @@ fn torque_tube_in_the_screw_path_fails_and_junit_names_the_pair() {
 
 #[test]
 fn tracks_standing_through_the_upper_skin_fail_and_strict_fails_on_skipped_pairs() {
-    // Issue 17's false pass: larger slots stand the tracks 61-165 mm above the upper skin
-    // (rear spar at 40 % chord, no torque tube); the check must name the tracks and the skin.
-    let mut scene = default_scene_text()
-        .replace("outer_slot_radius_m = 0.350", "outer_slot_radius_m = 0.55")
-        .replace("inner_slot_radius_m = 0.300", "inner_slot_radius_m = 0.50")
-        .replacen("chord_fraction = 0.64", "chord_fraction = 0.40", 1);
-    let tube = scene.find("[structure.torque_tube]").unwrap();
-    let station = scene.find("[[station]]").unwrap();
-    scene.replace_range(tube..station, "");
-    let (dir, output) = check(&scene);
+    // Issue 17's false pass: the check must name the tracks and the skin.
+    let (dir, output) = check(&crate::tracks_through_the_upper_skin_scene());
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert_eq!(output.status.code(), Some(1), "stderr:\n{stderr}");
     for track in [

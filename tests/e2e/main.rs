@@ -27,6 +27,20 @@ pub fn default_scene_text() -> String {
     std::fs::read_to_string(repo_root().join("data/scenes/small-aircraft.toml")).expect("default scene")
 }
 
+/// The default scene with larger slots that stand the tracks 61-165 mm through the upper
+/// skin (rear spar at 40 % chord, no torque tube): issue 17's false pass, a scene that
+/// fails the clearance check.
+pub fn tracks_through_the_upper_skin_scene() -> String {
+    let mut scene = default_scene_text()
+        .replace("outer_slot_radius_m = 0.350", "outer_slot_radius_m = 0.55")
+        .replace("inner_slot_radius_m = 0.300", "inner_slot_radius_m = 0.50")
+        .replacen("chord_fraction = 0.64", "chord_fraction = 0.40", 1);
+    let tube = scene.find("[structure.torque_tube]").expect("a torque tube");
+    let station = scene.find("[[station]]").expect("a station");
+    scene.replace_range(tube..station, "");
+    scene
+}
+
 /// The report's `stages`, in order.
 pub fn stages(report: &serde_json::Value) -> Vec<&str> {
     report["stages"]

@@ -268,3 +268,47 @@ fn the_same_scene_gives_the_same_files() {
         assert!(a == b, "{file} differs between two runs");
     }
 }
+
+#[test]
+fn a_failing_pair_is_marked_on_its_station_drawing_and_the_fairing_part_drawn() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("scene.toml"),
+        crate::tracks_through_the_upper_skin_scene(),
+    )
+    .unwrap();
+    let report = export(dir.path(), &["export", "scene.toml", "--svg", "--out", "svg"]);
+    let failing: Vec<&serde_json::Value> = report["interference"]["pairs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|p| p["passes"] == false && p["station"] == "inner")
+        .collect();
+    assert!(!failing.is_empty());
+    let svg = std::fs::read_to_string(dir.path().join("svg/station-inner.svg")).unwrap();
+    assert_eq!(
+        svg.matches("class=\"clash\"").count(),
+        failing.len(),
+        "one mark per failing pair"
+    );
+    for pair in failing {
+        let label = format!(
+            "{} / {}: overlap",
+            pair["part_a"].as_str().unwrap(),
+            pair["part_b"].as_str().unwrap()
+        );
+        assert!(svg.contains(&label), "{label}");
+    }
+    assert!(svg.contains("fails the clearance check"), "legend");
+    // The part that sets the fairing depth is drawn where it reaches deepest.
+    let fairing_part = report["stations"][0]["fairing"]["part"].as_str().unwrap();
+    assert!(
+        svg.contains(&format!("{fairing_part}: sets the fairing line")),
+        "{fairing_part}"
+    );
+    // A scene that passes marks nothing.
+    let clean = export(dir.path(), &["export", "--svg", "--out", "clean"]);
+    assert_eq!(clean["interference"]["passes"], true);
+    let svg = std::fs::read_to_string(dir.path().join("clean/station-inner.svg")).unwrap();
+    assert!(!svg.contains("class=\"clash\""));
+}

@@ -1,6 +1,7 @@
 //! The default scene's interference check (`flapwright check`), end to end without the
-//! process start: geometry, meshing, planes, interference sweep, fairing depth; and the
-//! same wing with 2 and 16 stations spread along its flap, for how the check scales.
+//! process start: geometry, meshing, planes, interference sweep, fairing depth; against
+//! the full design and `export --stl` (no check); and the same wing with 2 and 16 stations
+//! spread along its flap, for how the check scales.
 
 use criterion::{criterion_main, Criterion};
 use flapwright::output::StagedDir;
@@ -27,6 +28,27 @@ fn default_scene_check(c: &mut Criterion) {
         b.iter(|| {
             let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
             design(&inputs, Mode::Design, &staged).expect("design runs")
+        })
+    });
+    // `flapwright export --stl`: the STL files need no check, sweep or sizing.
+    let mut stl_only = scene.clone();
+    let outputs = &mut stl_only.outputs;
+    (
+        outputs.urdf,
+        outputs.svg,
+        outputs.gltf,
+        outputs.interference,
+        outputs.kinematics,
+        outputs.sizing,
+    ) = (false, false, false, false, false, false);
+    let stl_inputs = Inputs {
+        scene: &stl_only,
+        ..inputs
+    };
+    group.bench_function("default scene, export --stl", |b| {
+        b.iter(|| {
+            let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
+            design(&stl_inputs, Mode::Export, &staged).expect("export runs")
         })
     });
     group.finish();

@@ -185,3 +185,77 @@ pub(crate) fn setting_layer(index: usize, setting: &MechanismSnapshot, map: &Scr
     }
     group
 }
+
+/// Colour of a failing pair's mark.
+pub(crate) const CLASH_COLOUR: &str = "#d7191c";
+
+/// The parts that set the fairing line, where they reach deepest: their skeletons, thick,
+/// in the fairing line's colour.
+pub(crate) fn fairing_parts_layer(parts: &[crate::model::Link], map: &ScreenMap) -> Group {
+    let mut group = Group::new().set("id", "fairing-parts").set("class", "fairing-parts");
+    for part in parts {
+        group = group.add(
+            Polyline::new()
+                .set("points", points_attribute(&map.page_points(&part.points)))
+                .set("fill", "none")
+                .set("stroke", FAIRING_COLOUR)
+                .set("stroke-width", "4")
+                .set("stroke-opacity", "0.75")
+                .set("stroke-linecap", "round")
+                .set("stroke-linejoin", "round")
+                .add(title(&format!("{}: sets the fairing line", part.name))),
+        );
+    }
+    group
+}
+
+/// Failing pairs: a cross where the pair comes closest, with its label placed clear of
+/// the other labels and lines.
+pub(crate) fn clashes_layer(
+    clashes: &[crate::model::Clash],
+    map: &ScreenMap,
+    placer: &mut crate::labels::LabelPlacer,
+) -> Group {
+    const SIZE: f64 = 12.0;
+    const ARM_PX: f64 = 7.0;
+    let mut group = Group::new().set("id", "clashes").set("class", "clashes");
+    for clash in clashes {
+        let (x, y) = map.page_point(&clash.at);
+        let (half_width, half_height) = (0.5 * crate::style::text_width(&clash.label, SIZE), 0.5 * SIZE);
+        let (cx, cy) = placer.place_near(x, y, half_width, half_height, 10.0);
+        group = group.add(
+            Group::new()
+                .set("class", "clash")
+                .add(title(&clash.label))
+                .add(crate::style::line(
+                    x - ARM_PX,
+                    y - ARM_PX,
+                    x + ARM_PX,
+                    y + ARM_PX,
+                    CLASH_COLOUR,
+                    2.5,
+                ))
+                .add(crate::style::line(
+                    x - ARM_PX,
+                    y + ARM_PX,
+                    x + ARM_PX,
+                    y - ARM_PX,
+                    CLASH_COLOUR,
+                    2.5,
+                ))
+                .add(crate::style::line(x, y, cx, cy, CLASH_COLOUR, 0.7))
+                .add(
+                    crate::style::text(
+                        &clash.label,
+                        cx,
+                        cy + 0.36 * SIZE,
+                        SIZE,
+                        crate::style::Anchor::Middle,
+                        CLASH_COLOUR,
+                    )
+                    .set("font-weight", "bold"),
+                ),
+        );
+    }
+    group
+}

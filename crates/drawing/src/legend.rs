@@ -1,7 +1,7 @@
 //! Footer of a station drawing: legend (settings and parts), and a note block with the
 //! view direction, units, an axis triad and a scale bar in millimetres.
 
-use crate::layers::{part_class, ENVELOPE_FILL, ENVELOPE_STROKE, FAIRING_COLOUR, FAIRING_DASH};
+use crate::layers::{part_class, CLASH_COLOUR, ENVELOPE_FILL, ENVELOPE_STROKE, FAIRING_COLOUR, FAIRING_DASH};
 use crate::model::{PartStyle, StationDrawing};
 use crate::style::{line, num, setting_style, text, Anchor, INK};
 use svg::node::element::{Group, Polygon, Rectangle};
@@ -43,6 +43,12 @@ fn part_entries(drawing: &StationDrawing) -> Vec<(&'static str, Swatch)> {
     if drawing.fairing_line.is_some() {
         entries.push(("fairing line", Swatch::Fairing));
     }
+    if !drawing.fairing_parts.is_empty() {
+        entries.push(("sets the fairing line", Swatch::FairingPart));
+    }
+    if !drawing.clashes.is_empty() {
+        entries.push(("fails the clearance check", Swatch::Clash));
+    }
     if !drawing.slots.is_empty() {
         entries.push(("slot (track)", Swatch::Slot));
     }
@@ -68,6 +74,8 @@ fn part_entries(drawing: &StationDrawing) -> Vec<(&'static str, Swatch)> {
 #[derive(Debug, Clone, Copy)]
 enum Swatch {
     Envelope,
+    FairingPart,
+    Clash,
     Fairing,
     Slot,
     Part(PartStyle),
@@ -118,6 +126,14 @@ pub(crate) fn legend(drawing: &StationDrawing, x: f64, y: f64, column_px: f64) -
             ),
             Swatch::Fairing => Group::new()
                 .add(line(px, row_y, px + 44.0, row_y, FAIRING_COLOUR, 2.2).set("stroke-dasharray", FAIRING_DASH)),
+            Swatch::FairingPart => Group::new().add(
+                line(px + 4.0, row_y, px + 40.0, row_y, FAIRING_COLOUR, 4.0)
+                    .set("stroke-opacity", "0.75")
+                    .set("stroke-linecap", "round"),
+            ),
+            Swatch::Clash => Group::new()
+                .add(line(px + 15.0, row_y - 7.0, px + 29.0, row_y + 7.0, CLASH_COLOUR, 2.5))
+                .add(line(px + 15.0, row_y + 7.0, px + 29.0, row_y - 7.0, CLASH_COLOUR, 2.5)),
             Swatch::Slot => Group::new()
                 .add(line(px + 6.0, row_y, px + 38.0, row_y, "#4d4d4d", 12.0).set("stroke-linecap", "round"))
                 .add(line(px + 6.0, row_y, px + 38.0, row_y, "#f7f7f7", 9.0).set("stroke-linecap", "round")),

@@ -66,7 +66,7 @@ mod view;
 
 pub use error::{Error, Result};
 pub use hull::convex_hull;
-pub use model::{Dimension, Joint, Link, MechanismSnapshot, PartStyle, SectionOutline, SlotArc, StationDrawing};
+pub use model::{Clash, Dimension, Joint, Link, MechanismSnapshot, PartStyle, SectionOutline, SlotArc, StationDrawing};
 pub use plot::{plots_page_size_px, render_plots_svg, Plot, Series, PLOT_COLUMNS};
 pub use station::{render_station_svg, STATION_PAGE_WIDTH_PX};
 pub use ticks::{format_tick, nice_step, nice_ticks, padded_ticks, Ticks};

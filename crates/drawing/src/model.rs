@@ -114,6 +114,20 @@ pub struct StationDrawing {
     pub fairing_line: Option<Vec<Point2<f64>>>,
     /// Dimensions of the synthesised links.
     pub dimensions: Vec<Dimension>,
+    /// The parts that set the fairing line, where they reach deepest (skeletons, like
+    /// [`MechanismSnapshot::links`]): drawn in the fairing line's colour.
+    pub fairing_parts: Vec<Link>,
+    /// Pairs that fail the clearance check, marked where they come closest.
+    pub clashes: Vec<Clash>,
+}
+
+/// A pair that fails the clearance check, as the drawing marks it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Clash {
+    /// What to write beside the mark ("inner.screw / wing: -2.1 mm at 40 %").
+    pub label: String,
+    /// The closest (or deepest) point of the pair, station frame (m).
+    pub at: Point2<f64>,
 }
 
 impl Dimension {

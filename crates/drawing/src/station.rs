@@ -4,7 +4,9 @@
 use crate::annotate::{block_slots, dimensions_layer, joints_layer, slot_labels};
 use crate::error::{Error, Result};
 use crate::labels::{LabelPlacer, PageBox};
-use crate::layers::{envelope_layer, fairing_layer, sections_layer, setting_layer, slots_layer};
+use crate::layers::{
+    clashes_layer, envelope_layer, fairing_layer, fairing_parts_layer, sections_layer, setting_layer, slots_layer,
+};
 use crate::legend::{legend, legend_rows, note_block, NOTE_HEIGHT_PX, NOTE_WIDTH_PX, ROW_PX};
 use crate::model::StationDrawing;
 use crate::style::{num, text, Anchor, FONT_FAMILY, INK};
@@ -41,6 +43,8 @@ fn all_points(drawing: &StationDrawing) -> Vec<Point2<f64>> {
     }
     points.extend(drawing.envelope.iter().flatten());
     points.extend(drawing.fairing_line.iter().flatten());
+    points.extend(drawing.fairing_parts.iter().flat_map(|l| l.points.iter()));
+    points.extend(drawing.clashes.iter().map(|c| c.at));
     for dimension in &drawing.dimensions {
         points.push(dimension.from);
         points.push(dimension.to);
@@ -189,10 +193,17 @@ pub fn render_station_svg(drawing: &StationDrawing) -> Result<String> {
     for (index, setting) in drawing.settings.iter().enumerate().rev() {
         document = document.add(setting_layer(index, setting, &map));
     }
+    // Over the settings: the part is often the stowed one's.
+    if !drawing.fairing_parts.is_empty() {
+        document = document.add(fairing_parts_layer(&drawing.fairing_parts, &map));
+    }
     let (markers, joint_labels) = joints_layer(&drawing.settings, &map, &mut placer);
     let dimensions = dimensions_layer(&drawing.dimensions, &map, &mut placer);
     let slot_names = slot_labels(&drawing.slots, &map, &mut placer);
     document = document.add(dimensions).add(markers).add(joint_labels).add(slot_names);
+    if !drawing.clashes.is_empty() {
+        document = document.add(clashes_layer(&drawing.clashes, &map, &mut placer));
+    }
 
     let footer_top = drawing_bottom + 30.0;
     let legend_width = STATION_PAGE_WIDTH_PX - 2.0 * MARGIN_PX - NOTE_WIDTH_PX - 20.0;

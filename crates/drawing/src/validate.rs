@@ -19,9 +19,21 @@ pub(crate) fn validate_station(drawing: &StationDrawing) -> Result<()> {
         && drawing.slots.is_empty()
         && drawing.envelope.is_empty()
         && drawing.fairing_line.is_none()
-        && drawing.dimensions.is_empty();
+        && drawing.dimensions.is_empty()
+        && drawing.fairing_parts.is_empty()
+        && drawing.clashes.is_empty();
     if is_empty {
         return Err(Error::EmptyDrawing);
+    }
+    for link in &drawing.fairing_parts {
+        check_points(
+            &format!("fairing part `{}`", link.name),
+            &link.points,
+            POLYLINE_MIN_POINTS,
+        )?;
+    }
+    for clash in &drawing.clashes {
+        check_points(&format!("clash `{}`", clash.label), std::slice::from_ref(&clash.at), 1)?;
     }
     for section in &drawing.sections {
         for (i, polygon) in section.polygons.iter().enumerate() {

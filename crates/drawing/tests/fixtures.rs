@@ -121,6 +121,7 @@ pub fn station() -> StationDrawing {
             Dimension::new("a2", P::origin(), mm(37.0, 237.0)),
             Dimension::new("b1", P::origin(), mm(268.0, 225.0)),
         ],
+        ..Default::default()
     }
 }
 

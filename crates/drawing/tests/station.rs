@@ -159,3 +159,23 @@ fn joint_labels_do_not_overlap() {
         }
     }
 }
+
+#[test]
+fn clashes_and_fairing_parts_are_drawn_and_checked() {
+    let mut drawing = station();
+    drawing.fairing_parts = vec![flapwright_drawing::Link {
+        name: "screw".into(),
+        points: vec![mm(100.0, 50.0), mm(300.0, 20.0)],
+    }];
+    drawing.clashes = vec![flapwright_drawing::Clash {
+        label: "inner.nut / wing: overlap 2.0 mm at 40 %".into(),
+        at: mm(200.0, 300.0),
+    }];
+    let svg = render_station_svg(&drawing).unwrap();
+    assert!(svg.contains("screw: sets the fairing line"));
+    assert_eq!(svg.matches("class=\"clash\"").count(), 1);
+    assert!(svg.contains("inner.nut / wing: overlap 2.0 mm at 40 %"));
+    assert!(svg.contains("fails the clearance check") && svg.contains("sets the fairing line"));
+    drawing.clashes[0].at.x = f64::NAN;
+    assert!(matches!(render_station_svg(&drawing), Err(Error::NonFinitePoint { what, .. }) if what.contains("clash")));
+}

@@ -3,11 +3,11 @@
 
 use anyhow::{Context, Result};
 use flapwright_drawing::{
-    convex_hull, render_plots_svg, render_station_svg, Dimension, Joint, Link, MechanismSnapshot, PartStyle,
+    convex_hull, render_plots_svg, render_station_svg, Clash, Dimension, Joint, Link, MechanismSnapshot, PartStyle,
     SectionOutline, SlotArc, StationDrawing,
 };
 use flapwright_geom::CollisionShape;
-use flapwright_interference::InterferenceReport;
+use flapwright_interference::{FairingDepth, InterferenceReport};
 use flapwright_mechanism::seam::BodyRole;
 use flapwright_mechanism::urdf::{
     build_robot, to_xml, trajectory, BaseLink, BodyGeometry, CutJoint, MeshRef, RigidInertia, StationMechanism3d,
@@ -371,6 +371,27 @@ pub fn write_svgs(
                 )
             })
             .unwrap_or_default();
+        // The solid that sets the fairing depth, where it reaches deepest.
+        let fairing_parts = match record.fairing.as_ref() {
+            Some(FairingDepth {
+                part: Some(part),
+                at_parameter,
+                ..
+            }) => snapshot(mechanism, "", input.at_fraction(*at_parameter), &[])?
+                .links
+                .into_iter()
+                .filter(|link| &link.name == part)
+                .collect(),
+            _ => Vec::new(),
+        };
+        let station_from_aircraft = record
+            .placed
+            .as_ref()
+            .map(|p| p.station.frame.aircraft_from_station().inverse());
+        let clashes = match (interference, station_from_aircraft) {
+            (Some(report), Some(station_from_aircraft)) => clashes(report, &record.station, &station_from_aircraft),
+            _ => Vec::new(),
+        };
         let drawing = StationDrawing {
             title: format!("{}: station {}", scene.name, record.station),
             subtitle: format!("{}{fairing_text}", notes.summary),
@@ -380,6 +401,8 @@ pub fn write_svgs(
             envelope,
             fairing_line,
             dimensions,
+            fairing_parts,
+            clashes,
         };
         let name = format!("station-{}.svg", record.station);
         let svg = render_station_svg(&drawing).with_context(|| format!("drawing station {}", record.station))?;
@@ -424,6 +447,36 @@ pub fn write_svgs(
         }
     }
     Ok(files)
+}
+
+/// The pairs of `station` that fail the check, marked where they come closest (the first
+/// part's point, in the station plane), with the clearance or overlap and where in the
+/// deployment.
+fn clashes(report: &InterferenceReport, station: &str, station_from_aircraft: &nalgebra::Isometry3<f64>) -> Vec<Clash> {
+    report
+        .pairs
+        .iter()
+        .filter(|pair| !pair.passes)
+        .filter(|pair| {
+            pair.station
+                .as_deref()
+                .is_some_and(|s| s.split('/').any(|name| name == station))
+        })
+        .map(|pair| {
+            let c = &pair.clearance;
+            let [x, y, z] = c.point_a_ac;
+            let at = station_from_aircraft * nalgebra::Point3::new(x, y, z);
+            let how = if c.penetration_m > 0.0 {
+                format!("overlap {:.1} mm", c.penetration_m * 1e3)
+            } else {
+                format!("clearance {:.1} mm", c.min_clearance_m * 1e3)
+            };
+            Clash {
+                label: format!("{} / {}: {how} at {:.0} %", c.part_a, c.part_b, c.at_parameter * 100.0),
+                at: Point2::new(at.x, at.y),
+            }
+        })
+        .collect()
 }
 
 /// How far ahead of the mechanism the station drawing shows the wing (m).

@@ -211,6 +211,7 @@ fn build_drawing(demo: &Demo) -> StationDrawing {
             Dimension::new("s34,i", demo.b0, stowed[0]),
             Dimension::new("a3", demo.b0, stowed[4]),
         ],
+        ..Default::default()
     }
 }
 

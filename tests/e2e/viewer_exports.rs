@@ -312,3 +312,63 @@ fn a_failing_pair_is_marked_on_its_station_drawing_and_the_fairing_part_drawn() 
     let svg = std::fs::read_to_string(dir.path().join("clean/station-inner.svg")).unwrap();
     assert!(!svg.contains("class=\"clash\""));
 }
+
+/// The rotation angle (deg) of the rigid motion taking `from` onto `to` (same points in
+/// the same order; Kabsch, by SVD of the cross-covariance).
+fn rotation_angle_deg(from: &[[f32; 3]], to: &[[f32; 3]]) -> f64 {
+    let centre = |points: &[[f32; 3]]| {
+        points
+            .iter()
+            .map(|p| Vector3::from(p.map(f64::from)))
+            .sum::<Vector3<f64>>()
+            / points.len() as f64
+    };
+    let (a, b) = (centre(from), centre(to));
+    let mut covariance = Matrix3::zeros();
+    for (p, q) in from.iter().zip(to) {
+        covariance += (Vector3::from(p.map(f64::from)) - a) * (Vector3::from(q.map(f64::from)) - b).transpose();
+    }
+    let svd = covariance.svd(true, true);
+    let rotation = svd.v_t.unwrap().transpose() * svd.u.unwrap().transpose();
+    (((rotation.trace() - 1.0) / 2.0).clamp(-1.0, 1.0)).acos().to_degrees()
+}
+
+#[test]
+fn export_at_takeoff_moves_the_flap_and_its_mechanism_and_nothing_else() {
+    let dir = tempfile::tempdir().unwrap();
+    let stowed = export(dir.path(), &["export", "--stl", "--out", "stowed"]);
+    // Take-off: at landing the thesis screw points as it does stowed (collinearity).
+    let takeoff = export(dir.path(), &["export", "--stl", "--at", "takeoff", "--out", "takeoff"]);
+    assert_eq!(stowed["files"]["stl_setting"], "stowed");
+    assert_eq!(takeoff["files"]["stl_setting"], "takeoff");
+    let vertices = |out: &str, file: &str| -> Vec<[f32; 3]> {
+        read_binary_stl(&std::fs::read(dir.path().join(out).join(file)).unwrap())
+            .into_iter()
+            .flatten()
+            .collect()
+    };
+    // The flap turns by its take-off deflection (15 deg in the default scene).
+    let angle = rotation_angle_deg(&vertices("stowed", "flap.stl"), &vertices("takeoff", "flap.stl"));
+    assert!((angle - 15.0).abs() < 0.05, "flap turned {angle} deg");
+    for part in ["wing", "front-spar", "rear-spar", "torque-tube"] {
+        let file = format!("{part}.stl");
+        assert_eq!(vertices("stowed", &file), vertices("takeoff", &file), "{part} stays");
+    }
+    for solid in stowed["mechanism_parts"].as_array().unwrap() {
+        let file = solid["stl_file"].as_str().unwrap();
+        let (before, after) = (vertices("stowed", file), vertices("takeoff", file));
+        let moved = before != after;
+        assert_eq!(moved, solid["role"] != "track", "{file} moved: {moved}");
+        if solid["role"] == "flap" {
+            // A fitting on the flap turns with it.
+            let angle = rotation_angle_deg(&before, &after);
+            assert!((angle - 15.0).abs() < 1e-3, "{file} turned {angle} deg");
+        }
+    }
+    let refused = run_flapwright(
+        dir.path(),
+        &["export", "--urdf", "--stl", "--at", "landing", "--out", "x"],
+    );
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("--stl alone"));
+}

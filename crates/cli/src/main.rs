@@ -68,6 +68,11 @@ enum Command {
         /// Animated binary glTF (`<scene>.glb`) of the deployment.
         #[arg(long)]
         gltf: bool,
+        /// Where the STL files show the flaps and mechanisms: stowed, or each flap at its
+        /// take-off or landing deflection (with `--stl` alone: the URDF, glTF and drawings
+        /// start from stowed).
+        #[arg(long, value_enum, default_value = "stowed")]
+        at: flapwright::scene::StlSetting,
     },
     /// Compare mechanism kinds at the scene's stations (`003_...` Table 1, Fig. 17): each
     /// kind designed in place of the stations' mechanisms, its figures in study.json, gap
@@ -183,10 +188,28 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         )),
     })?;
     if let Some(Command::Export {
-        urdf, stl, svg, gltf, ..
+        urdf,
+        stl,
+        svg,
+        gltf,
+        at,
+        ..
     }) = &cli.command
     {
         let all = !(*urdf || *stl || *svg || *gltf);
+        if *at != flapwright::scene::StlSetting::Stowed && (all || !*stl || *urdf || *gltf || *svg) {
+            return Err(Failure {
+                code: EXIT_BAD_INPUT,
+                error: anyhow::anyhow!(
+                    "--at {} moves the STL files only: use it with --stl alone (the URDF, the glTF and the drawings start from stowed)",
+                    match at {
+                        flapwright::scene::StlSetting::Takeoff => "takeoff",
+                        _ => "landing",
+                    }
+                ),
+            });
+        }
+        scene.outputs.stl_setting = *at;
         let outputs = &mut scene.outputs;
         (outputs.urdf, outputs.stl, outputs.svg, outputs.gltf) = (all || *urdf, all || *stl, all || *svg, all || *gltf);
         // Only the drawings need the check (failing pairs marked) and the sweeps (plots).

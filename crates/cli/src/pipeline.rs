@@ -215,9 +215,18 @@ pub fn design_with_progress(
     let placed = !records.is_empty() && records.iter().all(|r| r.placed.is_some());
     let mut solids = Vec::new();
     if full && placed && (outputs.stl || outputs.urdf || outputs.gltf) {
-        solids = stages.run("mechanism-parts", || mechanism_parts::build(scene, &records))?;
+        let fractions = mechanism_parts::setting_fractions(scene, &records, outputs.stl_setting)?;
+        solids = stages.run("mechanism-parts", || {
+            mechanism_parts::build(scene, &records, &fractions)
+        })?;
         // URDF meshes are the STL files: writing a URDF writes them too.
         mechanism_part_reports = mechanism_parts::write_stl(&solids, outputs.stl || outputs.urdf, out)?;
+        if outputs.stl {
+            exported.stl_setting = Some(outputs.stl_setting);
+        }
+        if outputs.stl_setting != crate::scene::StlSetting::Stowed {
+            mechanism_parts::move_flap_files(&meshed, &records, &fractions, &mut parts, out)?;
+        }
     }
     if full && outputs.gltf && placed {
         exported.gltf = Some(stages.run("gltf", || animation::write_gltf(scene, &meshed, &solids, &records, out))?);

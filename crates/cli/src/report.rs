@@ -96,6 +96,9 @@ pub struct Exports {
     pub svg: Vec<String>,
     /// The animated glTF of the deployment.
     pub gltf: Option<crate::pipeline::animation::GltfExport>,
+    /// Where the STL files show the flaps and mechanisms (`stowed`, `takeoff`, `landing`;
+    /// absent without STL files).
+    pub stl_setting: Option<crate::scene::StlSetting>,
 }
 
 /// Wall time of one stage.

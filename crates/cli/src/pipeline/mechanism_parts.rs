@@ -17,7 +17,7 @@ use serde::Serialize;
 
 use crate::output::StagedDir;
 use crate::pipeline::mechanisms::StationRecord;
-use crate::scene::Scene;
+use crate::scene::{Scene, StlSetting};
 
 /// One solid of one station's mechanism.
 pub struct MechanismSolid {
@@ -31,9 +31,10 @@ pub struct MechanismSolid {
     pub role: BodyRole,
     /// `<station>.<solid>`, as in the interference report.
     pub name: String,
-    /// Surface, aircraft frame, mechanism stowed.
+    /// Surface, aircraft frame, where the build put the mechanism (stowed for URDF and
+    /// glTF).
     pub mesh_ac: TriMesh,
-    /// Mass properties, aircraft frame, stowed.
+    /// Mass properties, aircraft frame, there.
     pub inertia: RigidInertia,
     /// How it moves with the drive fraction (the check's motion).
     pub motion: Arc<dyn Motion>,
@@ -61,12 +62,37 @@ pub struct MechanismPartReport {
     pub stl_file: Option<String>,
 }
 
-/// Every station's solids, stowed.
-pub fn build(scene: &Scene, records: &[StationRecord]) -> Result<Vec<MechanismSolid>> {
+/// The drive fraction at which each record's station puts its flap at `setting` (0 for
+/// stowed and for a station without a flap).
+pub fn setting_fractions(scene: &Scene, records: &[StationRecord], setting: StlSetting) -> Result<Vec<f64>> {
+    records
+        .iter()
+        .map(|record| {
+            let flap = record
+                .flap
+                .as_ref()
+                .and_then(|name| scene.flap.iter().find(|f| &f.name == name));
+            let deflection_deg = match (setting, flap) {
+                (StlSetting::Takeoff, Some(flap)) => flap.settings.takeoff_deg,
+                (StlSetting::Landing, Some(flap)) => flap.settings.landing_deg,
+                _ => return Ok(0.0),
+            };
+            let mechanism = record.mechanism.as_ref();
+            let input = mechanism
+                .input_at_deflection(deflection_deg.to_radians())
+                .with_context(|| format!("station {} at {deflection_deg} deg", record.station))?;
+            Ok(mechanism.input_range().fraction(input))
+        })
+        .collect()
+}
+
+/// Every station's solids, each at its station's drive fraction in `fractions` (one per
+/// record; mass properties there too); all 0: stowed.
+pub fn build(scene: &Scene, records: &[StationRecord], fractions: &[f64]) -> Result<Vec<MechanismSolid>> {
     let screw = crate::pipeline::sizing::material(scene, &scene.sizing.screw_material)?;
     let link = crate::pipeline::sizing::material(scene, &scene.sizing.link_material)?;
     let mut solids = Vec::new();
-    for record in records {
+    for (record, &fraction) in records.iter().zip(fractions) {
         let placed = record
             .placed
             .as_ref()
@@ -86,14 +112,14 @@ pub fn build(scene: &Scene, records: &[StationRecord]) -> Result<Vec<MechanismSo
             let name = part.part.name.clone();
             let properties = part
                 .part
-                .compute_mass_properties_ac(density, 0.0)?
+                .compute_mass_properties_ac(density, fraction)?
                 .with_context(|| format!("{name} holds no volume"))?;
             solids.push(MechanismSolid {
                 station: record.station.clone(),
                 body: part.body,
                 body_name: record.mechanism.bodies()[part.body].name.clone(),
                 role: part.role,
-                mesh_ac: part.part.compute_mesh_ac(0.0)?,
+                mesh_ac: part.part.compute_mesh_ac(fraction)?,
                 inertia: RigidInertia {
                     mass_kg: properties.mass_kg,
                     centre_of_mass_ac_m: properties.centre_of_mass,
@@ -133,6 +159,38 @@ pub fn write_stl(solids: &[MechanismSolid], write_stl: bool, out: &StagedDir) ->
             })
         })
         .collect()
+}
+
+/// Rewrites each flap's STL file with the flap at its first station's drive fraction in
+/// `fractions`, moved as the check moves it; updates the part's bounds in `parts`.
+pub fn move_flap_files(
+    meshed: &[flapwright_geom::parts::Part],
+    records: &[StationRecord],
+    fractions: &[f64],
+    parts: &mut [crate::report::PartReport],
+    out: &StagedDir,
+) -> Result<()> {
+    for part in meshed
+        .iter()
+        .filter(|p| p.kind == flapwright_geom::parts::PartKind::Flap)
+    {
+        let Some(first) = records
+            .iter()
+            .position(|r| r.flap.as_deref() == Some(part.name.as_str()))
+        else {
+            continue;
+        };
+        let shape = flapwright_geom::CollisionShape::from_mesh(&part.mesh)
+            .with_context(|| format!("collision shape of {}", part.name))?;
+        let motion = crate::pipeline::interference::moving_flap(part, shape, records)?.motion;
+        let displacement = motion.pose_ac(fractions[first])? * motion.pose_ac(0.0)?.inverse();
+        let mesh = part.mesh.transformed(&displacement);
+        crate::pipeline::geometry::write_stl_file(&mesh, &part.name, out)?;
+        if let (Some(report), Some(bounds)) = (parts.iter_mut().find(|p| p.name == part.name), mesh.compute_aabb()) {
+            report.bounds_m = [bounds.min.coords.into(), bounds.max.coords.into()];
+        }
+    }
+    Ok(())
 }
 
 /// The STL file of a solid: its name with `.stl` (as `geometry::write_stl_file` names it).

@@ -16,7 +16,7 @@ mod wing;
 
 pub use airfoil_ref::{load_airfoil, AirfoilRef, AirfoilSource};
 pub use key_path::Location;
-pub use settings::{InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene};
+pub use settings::{InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene, StlSetting};
 pub use station::{LoadCaseScene, LoadsScene, StationScene};
 pub(crate) use validate::default_tube_end;
 pub use validate::{limits, number, KeyChecker, LocatedProblem, Problem, SceneError, MAX_SCENE_BYTES};

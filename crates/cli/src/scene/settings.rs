@@ -178,6 +178,22 @@ pub struct OutputsScene {
     /// Animated binary glTF of the deployment (needs a wing).
     #[serde(default = "yes")]
     pub gltf: bool,
+    /// Where the STL files show the flaps and mechanisms (`export --at`; not a scene key).
+    #[serde(skip)]
+    pub stl_setting: StlSetting,
+}
+
+/// The flap setting the STL files show (`flapwright export --stl --at SETTING`).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum StlSetting {
+    /// Flaps stowed (the URDF's and glTF's rest pose).
+    #[default]
+    Stowed,
+    /// Each flap at its take-off deflection.
+    Takeoff,
+    /// Each flap at its landing deflection.
+    Landing,
 }
 
 fn yes() -> bool {
@@ -194,6 +210,7 @@ impl Default for OutputsScene {
             urdf: true,
             svg: true,
             gltf: true,
+            stl_setting: StlSetting::Stowed,
         }
     }
 }

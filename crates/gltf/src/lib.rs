@@ -5,7 +5,7 @@
 //! - [`Model`]: named [`Body`]s, each a triangle mesh where it stands at rest with its
 //!   [`Material`], and, for a moving body, its displacement at every sample time.
 //! - [`to_glb`] writes the model as one binary glTF 2.0 file: one node per body (named
-//!   as the body), all children of one root node that turns the aircraft frame into
+//!   as the body; a moving body's under its pose node, see Precision), all under one root node that turns the aircraft frame into
 //!   glTF's +Y-up frame ([`gltf_from_aircraft`]), and one animation (`deployment`) with
 //!   a translation and a rotation channel per moving body, linear interpolation between
 //!   samples (glTF's `LINEAR`: translations interpolated linearly, rotations spherically).
@@ -23,9 +23,14 @@
 //! for the displacement D_k from rest.
 //!
 //! # Precision
-//! glTF stores vertices and keyframes as 32-bit floats: a keyframe's translation is exact to
-//! within half a unit in the last place of f32, 2^-24 |t| (0.6 um at 10 m), and its rotation
-//! to about 6e-8 rad. The files are for looking at; the report carries the exact numbers.
+//! glTF stores vertices and keyframes as 32-bit floats (2^-24 |t|: 0.6 um at 10 m). So that
+//! the file carries the poses to double precision all the same, a moving part's node (its
+//! name, its mesh) hangs under a pose node (`<name>#pose`, [`pose_node_name`]): the pose
+//! node's keyframes are the pose rounded to 32 bits, the part node's the small remainder,
+//! T(t_c) R_c T(t_f) R_f = T(t) R, which rounds to about 1e-15 m and rad. A reader that
+//! composes the two in 64 bits gets the poses back to about 1e-14 m; a viewer drawing in 32
+//! bits sees the coarse pose, as it would anyway. Vertices are relative to the anchor, so
+//! their 32 bits keep sub-micrometre detail.
 //!
 //! ```
 //! use flapwright_geom::TriMesh;
@@ -153,10 +158,12 @@ pub struct Body {
 
 impl Body {
     /// Where the body's node sits at rest: the centre of its mesh's box (aircraft frame).
+    /// Rounded to 32-bit floats, so that the node's stored translation is the anchor.
     pub fn anchor(&self) -> Point3<f64> {
         self.mesh
             .compute_aabb()
             .map_or_else(Point3::origin, |b| nalgebra::center(&b.min, &b.max))
+            .map(|c| f64::from(c as f32))
     }
 }
 
@@ -185,6 +192,38 @@ pub fn interpolated_displacement(
     let translation = ta.coords.lerp(&tb.coords, s);
     let rotation = a.rotation.slerp(&b.rotation, s);
     Isometry3::from_parts(Translation3::from(translation), rotation) * Translation3::from(-anchor.coords)
+}
+
+/// The name of the node that carries a moving part's coarse pose: the part's name and
+/// `#pose`.
+pub fn pose_node_name(part: &str) -> String {
+    format!("{part}#pose")
+}
+
+/// A node pose as glTF stores it: translation and rotation quaternion (x, y, z, w).
+type StoredPose = ([f32; 3], [f32; 4]);
+
+/// Splits the pose (translation `t`, rotation `r`) into a coarse pose, `t` and `r` rounded
+/// to 32-bit floats, and the fine pose that remains, T(t_c) R_c T(t_f) R_f = T(t) R:
+/// R_f = R_c^-1 R and t_f = R_c^-1 (t - t_c), both tiny, so that their own rounding costs
+/// about 1e-15 m and rad. R_c is the stored quaternion normalised, as a reader takes it.
+fn split_pose(t: &Point3<f64>, r: &UnitQuaternion<f64>) -> (StoredPose, StoredPose) {
+    let round = |v: f64| v as f32;
+    let q = r.coords;
+    let coarse_q = [round(q.x), round(q.y), round(q.z), round(q.w)];
+    let coarse_t = [round(t.x), round(t.y), round(t.z)];
+    let [x, y, z, w] = coarse_q.map(f64::from);
+    let coarse_rotation = UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(w, x, y, z));
+    let fine_rotation = coarse_rotation.inverse() * r;
+    let fine_t = coarse_rotation.inverse() * (t.coords - Vector3::from(coarse_t.map(f64::from)));
+    let f = fine_rotation.coords;
+    (
+        (coarse_t, coarse_q),
+        (
+            [round(fine_t.x), round(fine_t.y), round(fine_t.z)],
+            [round(f.x), round(f.y), round(f.z), round(f.w)],
+        ),
+    )
 }
 
 /// Bytes of the binary buffer, each view 4-byte aligned.
@@ -384,65 +423,75 @@ pub fn to_glb(model: &Model) -> Result<Vec<u8>> {
             }],
             weights: None,
         });
-        let node = root.push(json::Node {
+        let Some(displacements) = &body.displacements else {
+            nodes.push(root.push(json::Node {
+                name: Some(body.name.clone()),
+                mesh: Some(mesh),
+                translation: Some(anchor.coords.map(|c| c as f32).into()),
+                ..Default::default()
+            }));
+            continue;
+        };
+        // The part's node (its mesh and the fine keyframes) under its pose node (the
+        // coarse keyframes), so that the two 32-bit poses compose to the 64-bit one.
+        let part = root.push(json::Node {
             name: Some(body.name.clone()),
             mesh: Some(mesh),
+            ..Default::default()
+        });
+        let pose = root.push(json::Node {
+            name: Some(pose_node_name(&body.name)),
+            children: Some(vec![part]),
             translation: Some(anchor.coords.map(|c| c as f32).into()),
             ..Default::default()
         });
-        nodes.push(node);
-        let Some(displacements) = &body.displacements else {
-            continue;
-        };
-        let translations: Vec<f32> = displacements
+        nodes.push(pose);
+        let (coarse, fine): (Vec<_>, Vec<_>) = displacements
             .iter()
-            .flat_map(|d| (d * anchor).coords.iter().map(|&c| c as f32).collect::<Vec<_>>())
-            .collect();
-        let rotations: Vec<f32> = displacements
-            .iter()
-            .flat_map(|d| {
-                let q = d.rotation.coords; // x, y, z, w: glTF's order
-                [q.x as f32, q.y as f32, q.z as f32, q.w as f32]
-            })
-            .collect();
-        for (values, type_, property) in [
-            (
-                &translations,
-                json::accessor::Type::Vec3,
-                json::animation::Property::Translation,
-            ),
-            (
-                &rotations,
-                json::accessor::Type::Vec4,
-                json::animation::Property::Rotation,
-            ),
-        ] {
-            let output_view = view(buffer.push_words(f32_words(values)), None);
-            let output = root.push(accessor(
-                output_view,
-                times.len(),
-                json::accessor::ComponentType::F32,
-                type_,
-                None,
-            ));
-            samplers.push(json::animation::Sampler {
-                extensions: Default::default(),
-                extras: Default::default(),
-                input: time_accessor,
-                interpolation: Valid(json::animation::Interpolation::Linear),
-                output,
-            });
-            channels.push(json::animation::Channel {
-                sampler: json::Index::new((samplers.len() - 1) as u32),
-                target: json::animation::Target {
+            .map(|d| split_pose(&(d * anchor), &d.rotation))
+            .unzip();
+        for (node, keys) in [(pose, coarse), (part, fine)] {
+            let translations: Vec<f32> = keys.iter().flat_map(|(t, _)| *t).collect();
+            let rotations: Vec<f32> = keys.iter().flat_map(|(_, q)| *q).collect();
+            for (values, type_, property) in [
+                (
+                    &translations,
+                    json::accessor::Type::Vec3,
+                    json::animation::Property::Translation,
+                ),
+                (
+                    &rotations,
+                    json::accessor::Type::Vec4,
+                    json::animation::Property::Rotation,
+                ),
+            ] {
+                let output_view = view(buffer.push_words(f32_words(values)), None);
+                let output = root.push(accessor(
+                    output_view,
+                    times.len(),
+                    json::accessor::ComponentType::F32,
+                    type_,
+                    None,
+                ));
+                samplers.push(json::animation::Sampler {
                     extensions: Default::default(),
                     extras: Default::default(),
-                    node,
-                    path: Valid(property),
-                },
-                extensions: Default::default(),
-                extras: Default::default(),
-            });
+                    input: time_accessor,
+                    interpolation: Valid(json::animation::Interpolation::Linear),
+                    output,
+                });
+                channels.push(json::animation::Channel {
+                    sampler: json::Index::new((samplers.len() - 1) as u32),
+                    target: json::animation::Target {
+                        extensions: Default::default(),
+                        extras: Default::default(),
+                        node,
+                        path: Valid(property),
+                    },
+                    extensions: Default::default(),
+                    extras: Default::default(),
+                });
+            }
         }
     }
     let turn = gltf_from_aircraft().coords;

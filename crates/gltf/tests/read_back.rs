@@ -63,7 +63,7 @@ fn every_body_is_a_named_node_under_the_turned_root() {
     let glb = to_glb(&model(9)).unwrap();
     let document = gltf::Gltf::from_slice(&glb).unwrap();
     let names: Vec<&str> = document.nodes().filter_map(|n| n.name()).collect();
-    assert_eq!(names, ["wing", "inner.flap", ROOT_NODE]);
+    assert_eq!(names, ["wing", "inner.flap", "inner.flap#pose", ROOT_NODE]);
     let root = document.nodes().find(|n| n.name() == Some(ROOT_NODE)).unwrap();
     let (_, rotation, _) = root.transform().decomposed();
     let [x, y, z, w] = rotation;
@@ -73,52 +73,78 @@ fn every_body_is_a_named_node_under_the_turned_root() {
     assert_relative_eq!(turn * Vector3::y(), -Vector3::z(), epsilon = 1e-7);
     assert_relative_eq!(turn.angle_to(&gltf_from_aircraft()), 0.0, epsilon = 1e-7);
     assert_eq!(root.children().count(), 2);
+    let pose = root.children().find(|n| n.name() == Some("inner.flap#pose")).unwrap();
+    assert_eq!(
+        pose.children()
+            .map(|n| n.name().unwrap().to_string())
+            .collect::<Vec<_>>(),
+        ["inner.flap"]
+    );
     assert_eq!(document.scenes().count(), 1);
 }
 
-#[test]
-fn keyframes_are_the_displacements_given_to_float_precision() {
-    let model = model(9);
-    let glb = to_glb(&model).unwrap();
-    let document = gltf::Gltf::from_slice(&glb).unwrap();
+/// A node's keyframes as stored: translations and rotations (x, y, z, w).
+type Keyframes = (Vec<[f32; 3]>, Vec<[f32; 4]>);
+
+/// Every channel's keyframes by node name.
+fn keyframes(document: &gltf::Gltf) -> std::collections::BTreeMap<String, Keyframes> {
     let blob = document.blob.as_deref().unwrap();
-    let animations: Vec<_> = document.animations().collect();
-    assert_eq!(animations.len(), 1);
-    assert_eq!(animations[0].name(), Some("deployment"));
-    let flap = &model.bodies[1];
-    let anchor = flap.anchor();
-    let expected = flap.displacements.as_ref().unwrap();
-    let mut checked = 0;
-    for channel in animations[0].channels() {
-        assert_eq!(channel.target().node().name(), Some("inner.flap"));
-        let reader = channel.reader(|_| Some(blob));
-        let times: Vec<f32> = reader.read_inputs().unwrap().collect();
-        assert_eq!(times.len(), 9);
-        assert_eq!(times[8], 4.0);
-        match reader.read_outputs().unwrap() {
-            gltf::animation::util::ReadOutputs::Translations(values) => {
-                for (value, d) in values.zip(expected) {
-                    let exact = d * anchor;
-                    for k in 0..3 {
-                        // Half an f32 unit in the last place of the value.
-                        let ulp = (exact[k] as f32).abs() * f32::EPSILON / 2.0;
-                        assert!((value[k] as f64 - exact[k]).abs() <= ulp as f64, "{value:?} vs {exact}");
-                    }
-                    checked += 1;
-                }
-            }
-            gltf::animation::util::ReadOutputs::Rotations(values) => {
-                for (value, d) in values.into_f32().zip(expected) {
-                    let [x, y, z, w] = value.map(f64::from);
-                    let read = UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(w, x, y, z));
-                    assert!(read.angle_to(&d.rotation) < 1e-7);
-                    checked += 1;
-                }
-            }
+    let mut keys: std::collections::BTreeMap<String, Keyframes> = Default::default();
+    for channel in document.animations().flat_map(|a| a.channels()) {
+        let entry = keys
+            .entry(channel.target().node().name().unwrap().to_string())
+            .or_default();
+        match channel.reader(|_| Some(blob)).read_outputs().unwrap() {
+            gltf::animation::util::ReadOutputs::Translations(values) => entry.0 = values.collect(),
+            gltf::animation::util::ReadOutputs::Rotations(values) => entry.1 = values.into_f32().collect(),
             _ => panic!("only translation and rotation channels"),
         }
     }
-    assert_eq!(checked, 18);
+    keys
+}
+
+fn stored(t: [f32; 3], q: [f32; 4]) -> Isometry3<f64> {
+    let [x, y, z, w] = q.map(f64::from);
+    Isometry3::from_parts(
+        Translation3::from(Vector3::from(t.map(f64::from))),
+        UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(w, x, y, z)),
+    )
+}
+
+#[test]
+fn pose_and_part_keyframes_compose_to_the_displacements_in_double_precision() {
+    let model = model(9);
+    let glb = to_glb(&model).unwrap();
+    let document = gltf::Gltf::from_slice(&glb).unwrap();
+    let animations: Vec<_> = document.animations().collect();
+    assert_eq!(animations.len(), 1);
+    assert_eq!(animations[0].name(), Some("deployment"));
+    let times: Vec<f32> = animations[0]
+        .channels()
+        .next()
+        .unwrap()
+        .reader(|_| document.blob.as_deref())
+        .read_inputs()
+        .unwrap()
+        .collect();
+    assert_eq!(times.len(), 9);
+    assert_eq!(times[8], 4.0);
+    let keys = keyframes(&document);
+    assert_eq!(keys.len(), 2, "the flap's pose node and part node");
+    let flap = &model.bodies[1];
+    let anchor = flap.anchor();
+    let (coarse, fine) = (&keys["inner.flap#pose"], &keys["inner.flap"]);
+    let mut worst = (0.0_f64, 0.0_f64);
+    for (k, d) in flap.displacements.as_ref().unwrap().iter().enumerate() {
+        // What a reader composes: parent's pose, then the child's.
+        let read = stored(coarse.0[k], coarse.1[k]) * stored(fine.0[k], fine.1[k]);
+        let exact = Translation3::from((d * anchor).coords) * d.rotation;
+        worst.0 = worst.0.max((read.translation.vector - exact.translation.vector).norm());
+        worst.1 = worst.1.max(read.rotation.angle_to(&exact.rotation));
+        // The coarse pose alone is the pose rounded to 32 bits.
+        assert!((stored(coarse.0[k], coarse.1[k]).translation.vector - exact.translation.vector).norm() < 1e-6);
+    }
+    assert!(worst.0 < 1e-12 && worst.1 < 1e-12, "{worst:?}");
 }
 
 #[test]
@@ -127,8 +153,14 @@ fn vertices_read_back_at_rest_where_they_were_given() {
     let glb = to_glb(&model).unwrap();
     let document = gltf::Gltf::from_slice(&glb).unwrap();
     let blob = document.blob.as_deref().unwrap();
-    for (node, body) in document.nodes().zip(&model.bodies) {
-        let [tx, ty, tz] = node.transform().decomposed().0;
+    for body in &model.bodies {
+        let node = document.nodes().find(|n| n.name() == Some(body.name.as_str())).unwrap();
+        // The rest translation is the node's own, or its pose node's for a moving part.
+        let pose = document
+            .nodes()
+            .find(|n| n.name() == Some(format!("{}#pose", body.name).as_str()))
+            .unwrap_or_else(|| node.clone());
+        let [tx, ty, tz] = pose.transform().decomposed().0;
         let mesh = node.mesh().unwrap();
         let primitive = mesh.primitives().next().unwrap();
         let reader = primitive.reader(|_| Some(blob));

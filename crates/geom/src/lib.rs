@@ -10,6 +10,8 @@
 //! [`TriMesh`]; [`WingModel::compute_section_outlines`] gives the same polygons cut at any
 //! spanwise station. Meshes are written with [`io::stl::write_binary`] and turned into
 //! [`CollisionShape`]s for clearance queries ([`compute_distance`], [`compute_intersects`]).
+//! [`reference`](mod@reference) gives exact point, segment and triangle distances by brute force, without
+//! parry: the yardstick the adapter and the interference check are tested against.
 //!
 //! # Units and frames
 //!
@@ -55,6 +57,7 @@ mod loft;
 pub mod mesh;
 mod mesher;
 pub mod parts;
+pub mod reference;
 pub mod rigid_fit;
 pub mod structure;
 pub mod wing;

@@ -1,53 +1,22 @@
 //! Mesh clearances from the sweep against an independent brute-force distance: every
-//! vertex of each mesh to every triangle of the other (Ericson, Real-Time Collision
-//! Detection, 5.1.5), written out here without parry.
+//! vertex of each mesh to every triangle of the other (`flapwright_geom::reference`,
+//! Ericson, Real-Time Collision Detection, 5.1.5), without parry.
 
 use approx::assert_relative_eq;
 use flapwright_geom::collision::CollisionShape;
+use flapwright_geom::reference::closest_on_triangle;
 use flapwright_geom::TriMesh;
 use flapwright_interference::{sweep_pair, Motion, Part, SweepSettings};
 use nalgebra::{Isometry3, Point3, UnitQuaternion, Vector3};
 
 use crate::TurnAboutZ;
 
-fn closest_point_on_triangle(p: &Point3<f64>, a: &Point3<f64>, b: &Point3<f64>, c: &Point3<f64>) -> Point3<f64> {
-    let (ab, ac, ap) = (b - a, c - a, p - a);
-    let (d1, d2) = (ab.dot(&ap), ac.dot(&ap));
-    if d1 <= 0.0 && d2 <= 0.0 {
-        return *a;
-    }
-    let bp = p - b;
-    let (d3, d4) = (ab.dot(&bp), ac.dot(&bp));
-    if d3 >= 0.0 && d4 <= d3 {
-        return *b;
-    }
-    let vc = d1 * d4 - d3 * d2;
-    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
-        return a + ab * (d1 / (d1 - d3));
-    }
-    let cp = p - c;
-    let (d5, d6) = (ab.dot(&cp), ac.dot(&cp));
-    if d6 >= 0.0 && d5 <= d6 {
-        return *c;
-    }
-    let vb = d5 * d2 - d1 * d6;
-    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
-        return a + ac * (d2 / (d2 - d6));
-    }
-    let va = d3 * d6 - d5 * d4;
-    if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    }
-    let denominator = 1.0 / (va + vb + vc);
-    a + ab * (vb * denominator) + ac * (vc * denominator)
-}
-
 fn vertices_to_triangles(from: &TriMesh, to: &TriMesh) -> f64 {
     let mut best = f64::INFINITY;
     for p in &from.vertices {
         for t in &to.triangles {
             let [a, b, c] = t.map(|i| to.vertices[i as usize]);
-            best = best.min((p - closest_point_on_triangle(p, &a, &b, &c)).norm());
+            best = best.min((p - closest_on_triangle(p, &[a, b, c])).norm());
         }
     }
     best

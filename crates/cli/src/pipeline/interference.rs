@@ -14,8 +14,24 @@ use crate::pipeline::mechanisms::StationRecord;
 use crate::pipeline::stations::PlacedStation;
 use crate::scene::{ResolutionScene, Scene};
 
+#[cfg(test)]
+#[path = "interference_agreement.rs"]
+mod agreement;
+
 /// Builds the assembly and sweeps every pair.
 pub fn check(scene: &Scene, meshed: &[MeshPart], records: &[StationRecord]) -> Result<InterferenceReport> {
+    let (assembly, required, sweep) = assembly(scene, meshed, records)?;
+    // The drive fraction: 0 stowed, 1 deployed at every station.
+    Ok(check_assembly(&assembly, 1.0, &required, &sweep)?)
+}
+
+/// The assembly the check sweeps (wing parts, flaps, each station's parts with its
+/// openings cut), what it requires and how it sweeps.
+pub fn assembly(
+    scene: &Scene,
+    meshed: &[MeshPart],
+    records: &[StationRecord],
+) -> Result<(Assembly, Requirements, SweepSettings)> {
     fn placed(record: &StationRecord) -> Result<&PlacedStation> {
         record
             .placed
@@ -101,8 +117,7 @@ pub fn check(scene: &Scene, meshed: &[MeshPart], records: &[StationRecord]) -> R
         clearance_m: settings.required_clearance_m,
         joint_play_m: settings.joint_play_m,
     };
-    // The drive fraction: 0 stowed, 1 deployed at every station.
-    Ok(check_assembly(&assembly, 1.0, &required, &sweep)?)
+    Ok((assembly, required, sweep))
 }
 
 /// The flap `part` (its collision `shape`) moving as its stations move it: exactly with

@@ -44,10 +44,10 @@ fn default_scene_passes() {
     let apart = interference["certified_apart"].as_array().unwrap();
     assert!(!apart.is_empty(), "the two stations' parts are a span apart");
     assert!(apart.iter().all(|p| p["lower_bound_m"].as_f64().unwrap() > 0.003));
-    // Joints are checked to stay joined, per station: nut and fitting at A on the screw,
-    // the pins F and G in their tracks (the screw and its jack body are one rigid body).
+    // Joints are checked to stay joined, per station: nut, fitting and screw at A, the
+    // pins F and G in their tracks (the screw and its jack body are one rigid body).
     let joints = interference["declared_contacts"].as_array().unwrap();
-    assert_eq!(joints.len(), 8, "{joints:?}");
+    assert_eq!(joints.len(), 10, "{joints:?}");
     let play = interference["joint_play_m"].as_f64().unwrap();
     for joint in joints {
         assert_eq!(joint["passes"], true, "{joint}");
@@ -59,10 +59,10 @@ fn default_scene_passes() {
         );
         assert!(junit.contains(&name), "a test case for {name}");
     }
-    // Pairs left out are listed with a reason, never dropped silently.
+    // No pair is left out: the parts of one station are checked against each other, each
+    // in its spanwise layer.
     let unchecked = interference["unchecked_pairs"].as_array().unwrap();
-    assert!(!unchecked.is_empty());
-    assert!(unchecked.iter().all(|p| !p["reason"].as_str().unwrap().is_empty()));
+    assert!(unchecked.is_empty(), "{unchecked:?}");
     let checked_or_listed = |a: &str, b: &str| {
         let named =
             |p: &serde_json::Value| (p["part_a"] == a && p["part_b"] == b) || (p["part_a"] == b && p["part_b"] == a);
@@ -71,13 +71,16 @@ fn default_scene_passes() {
             || joints.iter().any(named)
             || unchecked.iter().any(named)
     };
-    // Every pair left out is a same-station pair (the README says why), and JUnit counts
-    // each as skipped.
-    assert!(unchecked.iter().all(|p| p["reason"]
-        .as_str()
-        .unwrap()
-        .starts_with("same-station parts are stacked spanwise")));
-    assert!(junit.contains(&format!("skipped=\"{}\"", unchecked.len())), "{junit}");
+    assert!(junit.contains("skipped=\"0\""), "{junit}");
+    for (a, b) in [
+        ("inner.screw", "inner.inner-track"),
+        ("inner.fitting-F", "inner.inner-track"),
+        ("inner.jack-body", "inner.fitting-G"),
+        ("outer.nut", "outer.outer-track"),
+    ] {
+        assert!(checked_or_listed(a, b), "{a} vs {b}: same-station parts are checked");
+        assert!(!joints.iter().any(|j| j["part_a"] == a && j["part_b"] == b));
+    }
     // The skin is checked against every part, with the station's opening cut in it.
     let swept = interference["pairs"].as_array().unwrap();
     assert!(swept
@@ -196,16 +199,12 @@ fn tracks_standing_through_the_upper_skin_fail_and_strict_fails_on_skipped_pairs
         .split("<testcase")
         .any(|case| case.contains("inner.outer-track vs wing") && case.contains("<failure")));
 
-    // --strict: the default scene passes its clearances but leaves same-station pairs out.
+    // --strict: the default scene leaves no pair out, so it passes.
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("scene.toml"), default_scene_text()).unwrap();
     let output = run_flapwright(dir.path(), &["check", "scene.toml", "--strict"]);
     let stderr = String::from_utf8_lossy(&output.stderr);
-    assert_eq!(output.status.code(), Some(1), "{stderr}");
-    assert!(
-        stderr.contains("--strict") && stderr.contains("were not checked"),
-        "{stderr}"
-    );
+    assert_eq!(output.status.code(), Some(0), "{stderr}");
 }
 
 #[test]

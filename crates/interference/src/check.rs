@@ -17,7 +17,7 @@ use crate::sweep::{sweep_contact, sweep_pair, JointSeparation, PairClearance, Sw
 use flapwright_mechanism::seam::BodyRole;
 
 /// What is checked: fixed structure, the flap, and each station's mechanism parts.
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub struct Assembly {
     /// Wing skin, spars, torque tube (aircraft frame, not moving).
     pub fixed: Vec<Part>,
@@ -65,9 +65,6 @@ const NO_OPENING: &str =
     "no opening was cut in the skin for this station, so its parts cannot be checked against the skin";
 /// Why a part joined to the flap by a joint is not checked against the flap itself.
 const NO_SLOT: &str = "joined to the flap by design, and no slot was cut in the flap for this station";
-/// Why same-station parts are not checked against each other.
-const STACKED: &str =
-    "same-station parts are stacked spanwise (side plates, clevises); the planar model has no spanwise layout to check them in";
 
 /// A pair the check leaves out, and why (listed so nothing is skipped silently).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -191,9 +188,9 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
                 }
             }
         }
-        // Same-station parts of different bodies, at least one moving, that may cross in
-        // the station plane, unless joined by design (then checked as a joint).
-        let joined = |a: &Part, b: &Part| {
+        // Same-station parts of different bodies, at least one moving, each in its
+        // spanwise layer, unless they touch by design (then checked as a joint).
+        let touching = |a: &Part, b: &Part| {
             station
                 .declared
                 .iter()
@@ -202,8 +199,8 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
         let parts: Vec<&StationPart> = station.parts.iter().collect();
         for (i, a) in parts.iter().enumerate() {
             for b in &parts[i + 1..] {
-                if a.body != b.body && (a.moving || b.moving) && !joined(&a.part, &b.part) {
-                    skip(&a.part, &b.part, STACKED);
+                if a.body != b.body && (a.moving || b.moving) && !touching(&a.part, &b.part) {
+                    jobs.push((name(), &a.part, &b.part));
                 }
             }
         }
@@ -279,9 +276,12 @@ pub fn check_assembly(
         .collect::<Vec<_>>()
         .into_par_iter()
         .map(|(station, contact)| {
+            // In the station plane: a pin spans the layers of the bodies it joins.
             let part = |name: &str| {
                 station
-                    .parts()
+                    .parts
+                    .iter()
+                    .map(|p| &p.in_plane)
                     .find(|p| p.name == name)
                     .ok_or_else(|| Error::UnknownPart {
                         name: name.to_string(),

@@ -34,8 +34,9 @@
 //! Parts are solids through `flapwright_geom::collision::compute_clearance`: closed meshes
 //! must be outward oriented for a part wholly inside one to count as overlapping. The
 //! penetration depth is the deepest of the sampled poses, not refined between samples.
-//! Parts of one station are not checked against each other (the planar model puts links
-//! that are stacked spanwise in one plane).
+//! Parts of one station are checked against each other in the spanwise layers of
+//! `flapwright_mechanism::spanwise` (a layout drawn from the seam unless the kind gives
+//! one); joints are checked in the station plane.
 //!
 //! # Pitfalls
 //! A speed bound that is too small voids the guarantee silently; derive it from the

@@ -28,6 +28,7 @@
 use flapwright_geom::TriMesh;
 use flapwright_mechanism::outline::{point_segment_distance, vertical_span};
 use flapwright_mechanism::seam::FlapMechanism;
+use flapwright_mechanism::spanwise::spanwise_layout;
 use nalgebra::{Isometry3, Point2, Point3, Vector3};
 use serde::Serialize;
 
@@ -93,7 +94,24 @@ pub fn station_opening(
         * travel
         * spacing
         / 2.0;
-    let (mut low, mut high, mut half_width) = (f64::INFINITY, f64::NEG_INFINITY, 0.0_f64);
+    // Spanwise: every solid's layer and radius.
+    let offsets = spanwise_layout(mechanism).map_err(|source| Error::Pose {
+        part: format!("{station} (spanwise layout)"),
+        parameter: 0.0,
+        source,
+    })?;
+    let half_width = mechanism
+        .bodies()
+        .iter()
+        .zip(&offsets)
+        .flat_map(|(body, offsets)| {
+            body.solids
+                .iter()
+                .zip(offsets)
+                .map(|(s, z)| z.abs() + s.shape.radius_m())
+        })
+        .fold(0.0, f64::max);
+    let (mut low, mut high) = (f64::INFINITY, f64::NEG_INFINITY);
     for i in 0..OPENING_SAMPLES {
         let capsules = planar_parts(mechanism, i as f64 * spacing).map_err(|source| Error::Pose {
             part: format!("{station} (opening)"),
@@ -105,7 +123,6 @@ pub fn station_opening(
                 low = low.min(end.x - capsule.radius_m);
                 high = high.max(end.x + capsule.radius_m);
             }
-            half_width = half_width.max(capsule.radius_m);
         }
     }
     if !(low.is_finite() && high.is_finite()) {

@@ -11,6 +11,7 @@ use std::sync::Arc;
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::TriMesh;
 use flapwright_mechanism::seam::{BodyRole, FlapMechanism, PlanarShape};
+use flapwright_mechanism::spanwise::spanwise_layout;
 use nalgebra::{Isometry2, Isometry3, Point2, Point3, Translation3, UnitQuaternion, Vector3};
 use serde::Serialize;
 
@@ -38,8 +39,12 @@ pub struct DeclaredContact {
 /// One part of a station and where it belongs in the mechanism.
 #[derive(Debug)]
 pub struct StationPart {
-    /// The collision part, named `<station>.<solid>`.
+    /// The collision part, named `<station>.<solid>`, in its spanwise layer
+    /// (`flapwright_mechanism::spanwise`).
     pub part: Part,
+    /// The same solid in the station plane: joints are checked there (a pin spans the
+    /// layers of the two bodies it joins).
+    pub in_plane: Part,
     /// Index of its body in the mechanism's bodies.
     pub body: usize,
     /// Its body's role.
@@ -228,54 +233,67 @@ pub fn station_parts(
     aircraft_from_station: &Isometry3<f64>,
     mechanism: &Arc<dyn FlapMechanism>,
 ) -> Result<StationParts> {
-    let to_ac = |p: &Point2<f64>| aircraft_from_station.transform_point(&Point3::new(p.x, p.y, 0.0));
     let query = |source| Error::Query {
         part_a: format!("{station}.parts"),
         part_b: String::new(),
         parameter: 0.0,
         source: Box::new(source),
     };
+    // Each solid in its spanwise layer (station z), so that the parts of one station can
+    // be checked against each other.
+    let offsets = spanwise_layout(mechanism.as_ref()).map_err(|source| Error::Pose {
+        part: format!("{station} (spanwise layout)"),
+        parameter: 0.0,
+        source,
+    })?;
     let mut parts = Vec::new();
     for (index, body) in mechanism.bodies().iter().enumerate() {
-        for solid in &body.solids {
+        for (solid, &z) in body.solids.iter().zip(&offsets[index]) {
             let name = format!("{station}.{}", solid.name);
-            let (shape, offset) = match &solid.shape {
-                PlanarShape::Capsule { from, to, radius_m } if from == to => {
-                    let centre = to_ac(from);
-                    (
-                        CollisionShape::ball(*radius_m).map_err(query)?,
-                        Isometry3::translation(centre.x, centre.y, centre.z),
+            // The solid at spanwise offset z, as a part moving with its body.
+            let part_at = |z: f64| -> Result<Part> {
+                let to_ac = |p: &Point2<f64>| aircraft_from_station.transform_point(&Point3::new(p.x, p.y, z));
+                let (shape, offset) = match &solid.shape {
+                    PlanarShape::Capsule { from, to, radius_m } if from == to => {
+                        let centre = to_ac(from);
+                        (
+                            CollisionShape::ball(*radius_m).map_err(query)?,
+                            Isometry3::translation(centre.x, centre.y, centre.z),
+                        )
+                    }
+                    PlanarShape::Capsule { from, to, radius_m } => (
+                        CollisionShape::capsule(to_ac(from), to_ac(to), *radius_m).map_err(query)?,
+                        Isometry3::identity(),
+                    ),
+                    PlanarShape::Tube { centre_line, radius_m } => {
+                        let centre_line: Vec<Point3<f64>> = centre_line.iter().map(to_ac).collect();
+                        let mesh = flapwright_geom::tube_mesh(&centre_line, *radius_m, TUBE_SIDES, radius_m * 4.0)
+                            .map_err(query)?;
+                        (CollisionShape::from_mesh(&mesh).map_err(query)?, Isometry3::identity())
+                    }
+                };
+                Ok(if body.is_moving() {
+                    Part::moving(
+                        name.clone(),
+                        shape,
+                        BodyMotion {
+                            mechanism: Arc::clone(mechanism),
+                            body: index,
+                            aircraft_from_station: *aircraft_from_station,
+                            station_from_aircraft: aircraft_from_station.inverse(),
+                            offset,
+                            speed_bound: body.speed_bound.for_shape(&solid.shape)
+                                * mechanism.input_range().travel().abs(),
+                        },
                     )
-                }
-                PlanarShape::Capsule { from, to, radius_m } => (
-                    CollisionShape::capsule(to_ac(from), to_ac(to), *radius_m).map_err(query)?,
-                    Isometry3::identity(),
-                ),
-                PlanarShape::Tube { centre_line, radius_m } => {
-                    let centre_line: Vec<Point3<f64>> = centre_line.iter().map(to_ac).collect();
-                    let mesh = flapwright_geom::tube_mesh(&centre_line, *radius_m, TUBE_SIDES, radius_m * 4.0)
-                        .map_err(query)?;
-                    (CollisionShape::from_mesh(&mesh).map_err(query)?, Isometry3::identity())
-                }
+                } else {
+                    Part::fixed_at(name.clone(), shape, offset)
+                })
             };
-            let part = if body.is_moving() {
-                Part::moving(
-                    name,
-                    shape,
-                    BodyMotion {
-                        mechanism: Arc::clone(mechanism),
-                        body: index,
-                        aircraft_from_station: *aircraft_from_station,
-                        station_from_aircraft: aircraft_from_station.inverse(),
-                        offset,
-                        speed_bound: body.speed_bound.for_shape(&solid.shape) * mechanism.input_range().travel().abs(),
-                    },
-                )
-            } else {
-                Part::fixed_at(name, shape, offset)
-            };
+            let (part, in_plane) = (part_at(z)?, part_at(0.0)?);
             parts.push(StationPart {
                 part,
+                in_plane,
                 body: index,
                 role: body.role,
                 moving: body.is_moving(),

@@ -4,6 +4,7 @@ mod brute_force;
 mod joint;
 mod opening;
 mod planar;
+mod same_station;
 mod sweep;
 
 use flapwright_interference::Motion;

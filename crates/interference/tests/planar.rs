@@ -38,8 +38,12 @@ fn planar_parts_are_the_3d_parts_in_the_station_plane() {
         for capsule in planar_parts(track.as_ref(), t).unwrap() {
             named.insert(capsule.part.clone());
             let name = format!("st.{}", capsule.part);
+            // The fairing's solids are the parts in the station plane (each part proper
+            // lies in its spanwise layer, the same solid moved along z).
             let part = parts
-                .parts()
+                .parts
+                .iter()
+                .map(|p| &p.in_plane)
                 .find(|p| p.name == name)
                 .unwrap_or_else(|| panic!("{name}"));
             let pose = part.motion.pose_ac(t).unwrap();

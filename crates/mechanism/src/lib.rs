@@ -7,6 +7,8 @@
 //!   kind (input range, poses as body displacements, bodies with roles, solids and
 //!   certified speed bounds, joints by name, kinetostatics, the actuator); a kind is a
 //!   module implementing it. [`sweep_deployment`] samples any kind kind-neutrally.
+//! - [`spanwise`]: where each solid lies along the station's z axis (a kind's own offsets,
+//!   or a layout from the seam that puts solids crossing in the plane side by side).
 //! - The circular-arc track implements the seam in `track_seam` (bodies: flap, screw,
 //!   nut, two tracks; [`TrackHardware`] sizes their solids).
 //! - [`CircularArcTrackSpec`] holds the designer's choices (thesis Table 2, yellow cells);
@@ -92,6 +94,7 @@ mod rotary_actuator;
 mod screw_jack;
 pub mod seam;
 mod slider_crank;
+pub mod spanwise;
 mod sweep;
 mod track_pose;
 mod track_seam;

@@ -14,6 +14,7 @@ use flapwright_geom::reference::{segment_triangle, triangle_triangle};
 use flapwright_geom::TriMesh;
 use flapwright_interference::{sweep_pair, Part};
 use flapwright_mechanism::seam::{posed_shape, BodyRole, PlanarShape};
+use flapwright_mechanism::spanwise::spanwise_layout;
 use nalgebra::{Isometry3, Point3};
 
 use super::{assembly, MeshPart, StationRecord};
@@ -75,10 +76,17 @@ fn posed(record: &StationRecord, body: usize, solid: &str, part: &Part, fraction
         .station
         .frame
         .aircraft_from_station();
+    // Its spanwise layer, as the seam lays the station out.
+    let solid_index = mechanism.bodies()[body]
+        .solids
+        .iter()
+        .position(|s| format!("{}.{}", record.station, s.name) == part.name)
+        .expect("the part's solid");
+    let z = spanwise_layout(mechanism).expect("a layout")[body][solid_index];
     let skeleton: Vec<Point3<f64>> = posed_shape(shape, &pose.bodies[body])
         .skeleton()
         .iter()
-        .map(|p| frame * Point3::new(p.x, p.y, 0.0))
+        .map(|p| frame * Point3::new(p.x, p.y, z))
         .collect();
     let segments = match skeleton.as_slice() {
         [only] => vec![(*only, *only)],

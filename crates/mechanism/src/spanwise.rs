@@ -1,0 +1,249 @@
+//! Spanwise layout of a station's solids: where, along the station's z axis, each solid's
+//! mid-plane lies, so that solids that cross in the station plane over the deployment sit
+//! side by side (side plates, clevises, a jack between two tracks), and the check can test
+//! the parts of one station against each other.
+//!
+//! A kind that gives its solids' offsets ([`crate::seam::BodySolid::offset_m`], any of them
+//! non-zero) keeps them. Otherwise [`spanwise_layout`] lays them out from the seam alone:
+//! - two solids of different bodies conflict when they come within the sum of their radii
+//!   plus r_max / 4 in any of [`LAYOUT_SAMPLES`] poses of the deployment, unless they
+//!   touch by design (a joint's `touching_solids`: the pin spans their layers, and the
+//!   check tests joints in the station plane);
+//! - solids are coloured greedily, the flap's fittings first, then links, carriages,
+//!   tracks, the actuator and the support structure (the first lies in the station
+//!   plane), each on the layer of a solid it touches where no conflict forbids it (a nut
+//!   on its screw), and layer k lies at 0, -s, +s, -2s, +2s, ... with the spacing
+//!   s = 2 r_max + gap and gap = r_max (r_max the largest radius of the station's solids):
+//!   neighbouring layers clear each other by at least r_max.
+//!
+//! The layout is the smallest that separates what would cross; a real design's side
+//! plates may sit wider. Hand-written: a few dozen solids, no crate does this job.
+
+use nalgebra::Point2;
+
+use crate::error::Result;
+use crate::seam::{posed_shape, BodyRole, FlapMechanism};
+
+/// Poses of the deployment sampled for crossings.
+pub const LAYOUT_SAMPLES: usize = 33;
+
+/// Distance between segments a0-a1 and b0-b1 in the plane.
+fn segment_distance(a0: Point2<f64>, a1: Point2<f64>, b0: Point2<f64>, b1: Point2<f64>) -> f64 {
+    let to_segment = |p: Point2<f64>, s0: Point2<f64>, s1: Point2<f64>| {
+        let d = s1 - s0;
+        let length2 = d.norm_squared();
+        let t = if length2 > 0.0 {
+            ((p - s0).dot(&d) / length2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        (p - (s0 + d * t)).norm()
+    };
+    let cross = |o: Point2<f64>, p: Point2<f64>, q: Point2<f64>| (p - o).perp(&(q - o));
+    let (d1, d2) = (cross(b0, b1, a0), cross(b0, b1, a1));
+    let (d3, d4) = (cross(a0, a1, b0), cross(a0, a1, b1));
+    if d1 * d2 < 0.0 && d3 * d4 < 0.0 {
+        return 0.0;
+    }
+    [
+        to_segment(a0, b0, b1),
+        to_segment(a1, b0, b1),
+        to_segment(b0, a0, a1),
+        to_segment(b1, a0, a1),
+    ]
+    .into_iter()
+    .fold(f64::INFINITY, f64::min)
+}
+
+/// Distance between two polylines (a single point is a polyline of one segment).
+fn polyline_distance(a: &[Point2<f64>], b: &[Point2<f64>]) -> f64 {
+    let segments = |p: &[Point2<f64>]| -> Vec<(Point2<f64>, Point2<f64>)> {
+        match p {
+            [only] => vec![(*only, *only)],
+            many => many.windows(2).map(|w| (w[0], w[1])).collect(),
+        }
+    };
+    let (a, b) = (segments(a), segments(b));
+    a.iter()
+        .flat_map(|(a0, a1)| b.iter().map(move |(b0, b1)| segment_distance(*a0, *a1, *b0, *b1)))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The spanwise offset of every solid (m, along the station z axis), per body in
+/// [`FlapMechanism::bodies`] order, per solid in the body's order: the kind's own when it
+/// gives any, else the layout of the [module docs](self).
+///
+/// Errors: pose errors of a mechanism that cannot run its own deployment.
+pub fn spanwise_layout(mechanism: &dyn FlapMechanism) -> Result<Vec<Vec<f64>>> {
+    let bodies = mechanism.bodies();
+    let given: Vec<Vec<f64>> = bodies
+        .iter()
+        .map(|b| b.solids.iter().map(|s| s.offset_m).collect())
+        .collect();
+    if given.iter().flatten().any(|&o| o != 0.0) {
+        return Ok(given);
+    }
+    // Every solid with its body, by a flat index.
+    // In the order they claim the station plane: what carries the flap first (its
+    // fittings, links, carriages, tracks), then the actuator, then the support structure.
+    let mut solids: Vec<(usize, usize)> = bodies
+        .iter()
+        .enumerate()
+        .flat_map(|(b, body)| (0..body.solids.len()).map(move |s| (b, s)))
+        .collect();
+    let priority = |role: BodyRole| match role {
+        BodyRole::Flap => 0,
+        BodyRole::Link => 1,
+        BodyRole::Carriage => 2,
+        BodyRole::Track => 3,
+        BodyRole::Actuator => 4,
+        BodyRole::Support => 5,
+    };
+    solids.sort_by_key(|&(b, _)| priority(bodies[b].role));
+    let name = |(b, s): (usize, usize)| bodies[b].solids[s].name.as_str();
+    // Solids touching by design meet at their joint whatever their layers (a pin spans
+    // them): they never conflict.
+    let touching = |i: usize, j: usize| {
+        mechanism.joints().iter().any(|joint| {
+            joint.touching_solids.iter().any(|(a, b)| {
+                (a == name(solids[i]) && b == name(solids[j])) || (b == name(solids[i]) && a == name(solids[j]))
+            })
+        })
+    };
+    let r_max = bodies
+        .iter()
+        .flat_map(|b| b.solids.iter().map(|s| s.shape.radius_m()))
+        .fold(0.0, f64::max);
+    // Layers clear each other by r_max; solids closer than a quarter of it in the plane
+    // are put on different layers.
+    let (gap, near) = (r_max, r_max / 4.0);
+    // Conflicts between layers: solids of different bodies, not on one layer, that come
+    // within their radii plus `near` in some pose.
+    let range = mechanism.input_range();
+    let mut conflicts = vec![vec![false; solids.len()]; solids.len()];
+    for input in range.samples(LAYOUT_SAMPLES) {
+        let pose = mechanism.pose(input)?;
+        let posed: Vec<Vec<Point2<f64>>> = solids
+            .iter()
+            .map(|&(b, s)| posed_shape(&bodies[b].solids[s].shape, &pose.bodies[b]).skeleton())
+            .collect();
+        for i in 0..solids.len() {
+            for j in i + 1..solids.len() {
+                if solids[i].0 == solids[j].0 || conflicts[i][j] || touching(i, j) {
+                    continue;
+                }
+                let reach = bodies[solids[i].0].solids[solids[i].1].shape.radius_m()
+                    + bodies[solids[j].0].solids[solids[j].1].shape.radius_m()
+                    + near;
+                if polyline_distance(&posed[i], &posed[j]) < reach {
+                    conflicts[i][j] = true;
+                    conflicts[j][i] = true;
+                }
+            }
+        }
+    }
+    // Greedy colouring in solid order; colour k at 0, -s, +s, -2s, +2s, ...
+    let mut colour: Vec<usize> = Vec::with_capacity(solids.len());
+    for (i, conflicts) in conflicts.iter().enumerate() {
+        let taken: Vec<usize> = (0..i)
+            .filter(|&other| conflicts[other])
+            .map(|other| colour[other])
+            .collect();
+        // A solid joins the layer of a solid it touches (a nut on its screw) where it can.
+        let partner = (0..i)
+            .filter(|&other| touching(i, other))
+            .map(|other| colour[other])
+            .find(|k| !taken.contains(k));
+        colour.push(partner.or_else(|| (0..).find(|k| !taken.contains(k))).unwrap_or(0));
+    }
+    let spacing = 2.0 * r_max + gap;
+    let offset = |k: usize| {
+        let step = k.div_ceil(2) as f64 * spacing;
+        match k {
+            0 => 0.0,
+            odd if odd % 2 == 1 => -step,
+            _ => step,
+        }
+    };
+    let mut offsets = given;
+    for (i, &(b, s)) in solids.iter().enumerate() {
+        offsets[b][s] = offset(colour[i]);
+    }
+    Ok(offsets)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn segments_that_cross_touch_and_parallel_ones_keep_their_gap() {
+        let p = Point2::new;
+        assert_eq!(
+            segment_distance(p(0.0, 0.0), p(1.0, 1.0), p(0.0, 1.0), p(1.0, 0.0)),
+            0.0
+        );
+        assert!((segment_distance(p(0.0, 0.0), p(1.0, 0.0), p(0.0, 0.5), p(1.0, 0.5)) - 0.5).abs() < 1e-15);
+        assert!((polyline_distance(&[p(2.0, 0.0)], &[p(0.0, 0.0), p(1.0, 0.0)]) - 1.0).abs() < 1e-15);
+    }
+}
+#[cfg(test)]
+mod thesis_layout {
+    use crate::{CircularArcTrack, CircularArcTrackSpec, FlapMechanism};
+
+    #[test]
+    fn solids_on_one_layer_stay_apart_and_layers_clear_each_other() {
+        let track = CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study()).unwrap();
+        let offsets = super::spanwise_layout(&track).unwrap();
+        let bodies = FlapMechanism::bodies(&track);
+        let z = |body: &str, solid: &str| {
+            let b = bodies.iter().position(|x| x.name == body).unwrap();
+            offsets[b][bodies[b].solids.iter().position(|s| s.name == solid).unwrap()]
+        };
+        // The flap's fittings stay in the station plane; the screw and its jack body, one
+        // rigid actuator, share a layer; the two tracks, which cross the actuator, do not.
+        assert_eq!(
+            [z("flap", "fitting-A"), z("flap", "fitting-F"), z("flap", "fitting-G")],
+            [0.0; 3]
+        );
+        assert_eq!(z("screw", "screw"), z("screw", "jack-body"));
+        assert_ne!(z("screw", "screw"), z("inner-track", "inner-track"));
+        // Distinct layers lie at least 3 r_max apart (r_max = 25 mm, the jack body's).
+        let mut layers: Vec<f64> = offsets.iter().flatten().copied().collect();
+        layers.sort_by(f64::total_cmp);
+        layers.dedup();
+        assert!(layers.windows(2).all(|w| w[1] - w[0] >= 0.075 - 1e-12), "{layers:?}");
+        // On one layer, solids of different bodies that do not touch by design keep
+        // their radii plus r_max / 4 apart in every sampled pose.
+        let range = FlapMechanism::input_range(&track);
+        for input in range.samples(super::LAYOUT_SAMPLES) {
+            let pose = FlapMechanism::pose(&track, input).unwrap();
+            for (i, a) in bodies.iter().enumerate() {
+                for (j, b) in bodies.iter().enumerate().skip(i + 1) {
+                    for (sa, za) in a.solids.iter().zip(&offsets[i]) {
+                        for (sb, zb) in b.solids.iter().zip(&offsets[j]) {
+                            let touching = FlapMechanism::joints(&track).iter().any(|joint| {
+                                joint
+                                    .touching_solids
+                                    .iter()
+                                    .any(|(x, y)| (x == &sa.name && y == &sb.name) || (y == &sa.name && x == &sb.name))
+                            });
+                            if za != zb || touching {
+                                continue;
+                            }
+                            let pa = crate::seam::posed_shape(&sa.shape, &pose.bodies[i]).skeleton();
+                            let pb = crate::seam::posed_shape(&sb.shape, &pose.bodies[j]).skeleton();
+                            let gap = super::polyline_distance(&pa, &pb) - sa.shape.radius_m() - sb.shape.radius_m();
+                            assert!(
+                                gap >= 0.025 / 4.0,
+                                "{} and {} on one layer, {gap} m apart",
+                                sa.name,
+                                sb.name
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

@@ -259,3 +259,59 @@ fn a_second_flap_is_checked_against_the_first_and_against_the_other_stations() {
     assert!(checked("outer.nut", "flap") && checked("outer.outer-track", "flap"));
     assert!(checked("outboard.screw", "outboard-flap") && checked("outboard.screw", "flap"));
 }
+
+#[test]
+fn clearance_relative_to_the_local_flap_chord_raises_each_stations_requirement() {
+    let with_percent = |percent: f64| {
+        let text = default_scene_text();
+        match text.contains("[interference]") {
+            true => text.replacen(
+                "[interference]",
+                &format!("[interference]\nrequired_clearance_percent_flap_chord = {percent}"),
+                1,
+            ),
+            false => format!("{text}\n[interference]\nrequired_clearance_percent_flap_chord = {percent}\n"),
+        }
+    };
+    let (dir, output) = check(&with_percent(4.0));
+    assert_eq!(
+        output.status.code(),
+        Some(1),
+        "4 % of the chord is more than the tracks keep"
+    );
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("flapwright-check/report.json")).unwrap())
+            .unwrap();
+    let interference = &report["interference"];
+    let by_station = &interference["required_clearance_by_station_m"];
+    for station in report["stations"].as_array().unwrap() {
+        // The fairing gives the local flap chord: depth over its share of the chord.
+        let fairing = &station["fairing"];
+        let chord =
+            fairing["depth_m"].as_f64().unwrap() / (fairing["depth_percent_flap_chord"].as_f64().unwrap() / 100.0);
+        let name = station["name"].as_str().unwrap();
+        let required = by_station[name].as_f64().unwrap();
+        assert!(
+            (required - 0.04 * chord).abs() < 1e-9,
+            "{name}: {required} m for a {chord} m chord"
+        );
+        for pair in interference["pairs"].as_array().unwrap() {
+            if pair["station"] == name {
+                assert_eq!(pair["required_clearance_m"], by_station[name]);
+            }
+        }
+    }
+    let junit = std::fs::read_to_string(dir.path().join("junit.xml")).unwrap();
+    assert!(
+        junit.contains("is below the required 22."),
+        "the station's requirement in the message"
+    );
+    // A share below the global requirement changes nothing; one beyond 10 % is refused.
+    let (dir, output) = check(&with_percent(0.1));
+    assert_eq!(output.status.code(), Some(0));
+    let report = std::fs::read_to_string(dir.path().join("flapwright-check/report.json")).unwrap();
+    assert!(!report.contains("required_clearance_by_station_m"));
+    let (_dir, output) = check(&with_percent(20.0));
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("interference.required_clearance_percent_flap_chord"));
+}

@@ -95,7 +95,7 @@ pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> anyh
         let c = &pair.clearance;
         let outcome = match pair.passes {
             true => Outcome::Passed,
-            false => Outcome::Failed("interference", describe_failure(c, report.required_clearance_m)),
+            false => Outcome::Failed("interference", describe_failure(c, pair.required_clearance_m)),
         };
         suite.add_test_case(test_case(
             format!("{} vs {}", c.part_a, c.part_b),

@@ -168,7 +168,7 @@ pub fn design_with_progress(
             for pair in checked.pairs.iter().filter(|p| !p.passes) {
                 warnings.push(format!(
                     "interference: {}",
-                    crate::junit::describe_failure(&pair.clearance, checked.required_clearance_m)
+                    crate::junit::describe_failure(&pair.clearance, pair.required_clearance_m)
                 ));
             }
             for contact in checked.declared_contacts.iter().filter(|c| !c.passes) {

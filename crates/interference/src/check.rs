@@ -6,7 +6,7 @@
 use rayon::prelude::*;
 use serde::Serialize;
 
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 
 use crate::broad::{ApartPair, SweptBoxes, SWEPT_BOX_INTERVALS};
 use crate::error::{Error, Result};
@@ -41,6 +41,8 @@ pub struct PairResult {
     /// Clearance over the deployment.
     #[serde(flatten)]
     pub clearance: PairClearance,
+    /// The clearance this pair needs (m): the global one, or a station's larger one.
+    pub required_clearance_m: f64,
     /// Clearance at least the required minimum (certified: sampled minimum less the
     /// residual bound).
     pub passes: bool,
@@ -80,12 +82,28 @@ pub struct UncheckedPair {
 }
 
 /// What the check requires.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct Requirements {
     /// Smallest clearance between parts that must stay apart (m).
     pub clearance_m: f64,
     /// Largest separation of parts joined by design (m): the joint's play.
     pub joint_play_m: f64,
+    /// Larger clearances some stations require (m, by station name): a pair of a station's
+    /// parts needs the larger of this and [`Requirements::clearance_m`], a pair of two
+    /// stations' parts the largest of the three.
+    pub clearance_by_station_m: BTreeMap<String, f64>,
+}
+
+impl Requirements {
+    /// The clearance a pair of `station` needs ("a/b" for parts of two stations; `None`
+    /// for the flap against the structure).
+    pub fn clearance_for(&self, station: Option<&str>) -> f64 {
+        station
+            .into_iter()
+            .flat_map(|s| s.split('/'))
+            .filter_map(|s| self.clearance_by_station_m.get(s))
+            .fold(self.clearance_m, |a, &b| a.max(b))
+    }
 }
 
 /// The interference section of the report.
@@ -96,6 +114,9 @@ pub struct InterferenceReport {
     pub deployment_range: [f64; 2],
     /// Required clearance (m).
     pub required_clearance_m: f64,
+    /// Stations that require more (m), as [`Requirements::clearance_by_station_m`].
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub required_clearance_by_station_m: BTreeMap<String, f64>,
     /// Allowed separation of parts joined by design (m).
     pub joint_play_m: f64,
     /// Every pair swept.
@@ -245,7 +266,7 @@ pub fn check_assembly(
     let (apart, jobs): (Vec<_>, Vec<_>) = jobs
         .into_iter()
         .map(|job| (bound(job.1, job.2), job))
-        .partition(|(lower_bound, _)| *lower_bound > required.clearance_m);
+        .partition(|(lower_bound, (station, _, _))| *lower_bound > required.clearance_for(station.as_deref()));
     let jobs: Vec<PairJob<'_>> = jobs.into_iter().map(|(_, job)| job).collect();
     let certified_apart = apart
         .into_iter()
@@ -261,10 +282,12 @@ pub fn check_assembly(
         .into_par_iter()
         .map(|(station, a, b)| {
             let clearance = sweep_pair(a, b, 0.0, end, settings)?;
-            let passes = clearance.min_clearance_m - clearance.residual_bound_m >= required.clearance_m;
+            let required_clearance_m = required.clearance_for(station.as_deref());
+            let passes = clearance.min_clearance_m - clearance.residual_bound_m >= required_clearance_m;
             Ok(PairResult {
                 station,
                 clearance,
+                required_clearance_m,
                 passes,
             })
         })
@@ -302,6 +325,7 @@ pub fn check_assembly(
     Ok(InterferenceReport {
         deployment_range: [0.0, end],
         required_clearance_m: required.clearance_m,
+        required_clearance_by_station_m: required.clearance_by_station_m.clone(),
         joint_play_m: required.joint_play_m,
         declared_contacts: contacts,
         swept_box_intervals: SWEPT_BOX_INTERVALS,

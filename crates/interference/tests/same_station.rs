@@ -84,6 +84,7 @@ fn check(mechanism: Arc<dyn FlapMechanism>) -> flapwright_interference::Interfer
     let required = Requirements {
         clearance_m: 0.003,
         joint_play_m: 0.001,
+        ..Default::default()
     };
     check_assembly(&assembly, 1.0, &required, &SweepSettings::default()).unwrap()
 }
@@ -121,4 +122,18 @@ fn the_automatic_layout_keeps_the_same_mechanism_clear() {
     // Same-station pairs of different bodies are all there, swept or certified apart.
     let checked = report.pairs.len() + report.certified_apart.len();
     assert!(checked >= 15, "{checked} same-station pairs");
+}
+
+#[test]
+fn a_pair_needs_the_largest_clearance_of_its_stations() {
+    let required = Requirements {
+        clearance_m: 0.003,
+        joint_play_m: 0.001,
+        clearance_by_station_m: [("inner".to_string(), 0.02), ("outer".to_string(), 0.01)].into(),
+    };
+    assert_eq!(required.clearance_for(None), 0.003);
+    assert_eq!(required.clearance_for(Some("inner")), 0.02);
+    assert_eq!(required.clearance_for(Some("mid")), 0.003);
+    assert_eq!(required.clearance_for(Some("outer/inner")), 0.02);
+    assert_eq!(required.clearance_for(Some("mid/outer")), 0.01);
 }

@@ -113,9 +113,24 @@ pub fn assembly(
         flaps,
         stations,
     };
+    // A share of each station's local flap chord, where the scene asks for one.
+    let clearance_by_station_m = match settings.required_clearance_percent_flap_chord {
+        Some(percent) => records
+            .iter()
+            .filter_map(|r| {
+                let placed = r.placed.as_ref()?;
+                let flap = r.flap.as_deref()?;
+                let chord = local_chord_m(&placed.polygons_of(|name| name == flap));
+                Some((r.station.clone(), percent / 100.0 * chord))
+            })
+            .filter(|(_, clearance)| *clearance > settings.required_clearance_m)
+            .collect(),
+        None => Default::default(),
+    };
     let required = Requirements {
         clearance_m: settings.required_clearance_m,
         joint_play_m: settings.joint_play_m,
+        clearance_by_station_m,
     };
     Ok((assembly, required, sweep))
 }
@@ -175,6 +190,17 @@ pub fn fitted_flap_motion(
     Ok(FittedFlapMotion::try_new(flap, carriers, vertices_ac)?)
 }
 
+/// The chordwise extent of a section cut (station x, m): the local chord of a flap.
+fn local_chord_m(polygons: &[Vec<nalgebra::Point2<f64>>]) -> f64 {
+    let (lo, hi) = polygons
+        .iter()
+        .flatten()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p.x), hi.max(p.x))
+        });
+    (hi - lo).max(0.0)
+}
+
 /// Fairing depth of each placed station (each record's `fairing`): the mechanism against
 /// the lower contour of the wing and the stowed flap cut by the station plane.
 pub fn fairing_depths(
@@ -191,14 +217,7 @@ pub fn fairing_depths(
         let is_flap = |name: &str| flap_names.iter().any(|f| f == name);
         let own_flap = |name: &str| record.flap.as_deref() == Some(name);
         let contour = station.polygons_of(|name| name == "wing" || is_flap(name));
-        let flap_chord_m = station
-            .polygons_of(own_flap)
-            .iter()
-            .flatten()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-                (lo.min(p.x), hi.max(p.x))
-            });
-        let flap_chord_m = (flap_chord_m.1 - flap_chord_m.0).max(0.0);
+        let flap_chord_m = local_chord_m(&station.polygons_of(own_flap));
         let samples = resolution.fairing_samples;
         let parameters: Vec<f64> = (0..samples).map(|i| i as f64 / (samples - 1) as f64).collect();
         let points = resolution.fairing_points_per_capsule;

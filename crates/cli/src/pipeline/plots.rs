@@ -181,7 +181,13 @@ fn clearance_plot(report: &InterferenceReport, station: &str) -> Option<Plot> {
     if series.is_empty() {
         return None;
     }
-    let required_mm = report.required_clearance_m * 1e3;
+    let required_mm = report
+        .required_clearance_by_station_m
+        .get(station)
+        .copied()
+        .unwrap_or(report.required_clearance_m)
+        .max(report.required_clearance_m)
+        * 1e3;
     series.push(Series {
         name: "required".into(),
         points: vec![(start, required_mm), (end, required_mm)],

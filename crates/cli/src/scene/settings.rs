@@ -91,6 +91,11 @@ pub struct InterferenceScene {
     /// through an opening then clears its edges by the requirement).
     #[serde(default)]
     pub opening_margin_m: Option<f64>,
+    /// A station's parts need at least this share of the local flap chord as clearance
+    /// (%), where that is more than `required_clearance_m`: scales the requirement with the
+    /// wing (a 1/17 model and its full-size aircraft ask the same of their mechanisms).
+    #[serde(default)]
+    pub required_clearance_percent_flap_chord: Option<f64>,
 }
 
 impl InterferenceScene {
@@ -132,6 +137,7 @@ impl Default for InterferenceScene {
             max_evaluations: default_max_evaluations(),
             joint_play_m: default_joint_play(),
             opening_margin_m: None,
+            required_clearance_percent_flap_chord: None,
         }
     }
 }

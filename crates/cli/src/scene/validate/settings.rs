@@ -93,6 +93,15 @@ impl Checker<'_> {
         if let Some(margin) = interference.opening_margin_m {
             self.in_range("interference.opening_margin_m", margin, 0.0, 1.0, false);
         }
+        if let Some(percent) = interference.required_clearance_percent_flap_chord {
+            self.in_range(
+                "interference.required_clearance_percent_flap_chord",
+                percent,
+                0.0,
+                10.0,
+                false,
+            );
+        }
         let (min, max) = INITIAL_SAMPLES;
         self.count_in("interference.initial_samples", interference.initial_samples, min, max);
         self.count_in(

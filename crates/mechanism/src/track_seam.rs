@@ -185,7 +185,7 @@ pub(crate) fn bodies_and_joints(track: &CircularArcTrack, hardware: &TrackHardwa
             "nut on the screw, pivoting on the flap",
             JointGeometry::Revolute { at: a },
             [JointEnd::Body(NUT), JointEnd::Body(FLAP)],
-            &[("screw", "nut"), ("screw", "fitting-A"), ("nut", "fitting-A")],
+            &[("screw", "fitting-A"), ("nut", "fitting-A")],
         ),
         joint(
             "nut-slide",
@@ -195,7 +195,7 @@ pub(crate) fn bodies_and_joints(track: &CircularArcTrack, hardware: &TrackHardwa
                 direction: Unit::new_normalize(a - b0),
             },
             [JointEnd::Body(SCREW), JointEnd::Body(NUT)],
-            &[],
+            &[("screw", "nut")],
         ),
         joint(
             "B0",

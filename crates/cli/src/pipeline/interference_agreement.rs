@@ -82,7 +82,7 @@ fn posed(record: &StationRecord, body: usize, solid: &str, part: &Part, fraction
         .iter()
         .position(|s| format!("{}.{}", record.station, s.name) == part.name)
         .expect("the part's solid");
-    let z = spanwise_layout(mechanism).expect("a layout")[body][solid_index];
+    let z = spanwise_layout(mechanism).expect("a layout")[body][solid_index]; // 33 poses: cheap next to the brute force
     let skeleton: Vec<Point3<f64>> = posed_shape(shape, &pose.bodies[body])
         .skeleton()
         .iter()

@@ -381,3 +381,36 @@ fn export_at_takeoff_moves_the_flap_and_its_mechanism_and_nothing_else() {
     assert_eq!(refused.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&refused.stderr).contains("--stl alone"));
 }
+
+#[test]
+fn track_hardware_sizes_come_from_the_scene() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = crate::default_scene_text().replacen(
+        "kind = \"circular-arc-track\"",
+        "kind = \"circular-arc-track\"\nhardware = { nut_radius_m = 0.03, track_radius_m = 0.010 }",
+        1,
+    );
+    std::fs::write(dir.path().join("scene.toml"), &scene).unwrap();
+    let report = export(dir.path(), &["export", "scene.toml", "--stl", "--out", "sized"]);
+    let mass = |name: &str| {
+        report["mechanism_parts"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|p| p["name"] == name)
+            .unwrap()["mass_kg"]
+            .as_f64()
+            .unwrap()
+    };
+    // A ball of 30 mm against the other station's default 20 mm: (3/2)^3 the mass.
+    assert!((mass("inner.nut") / mass("outer.nut") - 3.375).abs() < 1e-9);
+    assert!(mass("inner.inner-track") < mass("outer.inner-track"));
+    std::fs::write(
+        dir.path().join("bad.toml"),
+        scene.replace("nut_radius_m = 0.03", "nut_radius_m = -0.03"),
+    )
+    .unwrap();
+    let output = run_flapwright(dir.path(), &["export", "bad.toml", "--stl", "--out", "bad"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("hardware.nut_radius_m"));
+}

@@ -4,7 +4,7 @@
 use std::sync::Arc;
 
 use flapwright_mechanism::{
-    CircularArcTrack, CircularArcTrackSpec, FlapMechanism, ScrewJack, DEFAULT_TOGGLE_TOLERANCE_RAD,
+    CircularArcTrack, CircularArcTrackSpec, FlapMechanism, ScrewJack, TrackHardware, DEFAULT_TOGGLE_TOLERANCE_RAD,
 };
 use nalgebra::Point2;
 use serde::Deserialize;
@@ -66,7 +66,53 @@ pub struct CircularArcTrackScene {
     /// Nut speed along the screw, m/s.
     #[serde(default = "default_nut_speed")]
     pub nut_speed_mps: f64,
+    /// Sizes of the solids that stand for the hardware (fittings, nut, tracks, jack body),
+    /// m; each absent key keeps the default of `TrackHardware` (thesis small-aircraft sizes).
+    #[serde(default)]
+    pub hardware: TrackHardwareScene,
 }
+
+/// `[station.mechanism.hardware]` of a circular-arc track: every key optional (m).
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TrackHardwareScene {
+    pub fitting_radius_m: Option<f64>,
+    pub nut_radius_m: Option<f64>,
+    pub track_radius_m: Option<f64>,
+    pub jack_body_length_m: Option<f64>,
+    pub jack_body_radius_m: Option<f64>,
+}
+
+impl TrackHardwareScene {
+    /// The sizes, defaults where absent.
+    fn resolve(&self) -> TrackHardware {
+        let default = TrackHardware::default();
+        TrackHardware {
+            fitting_radius_m: self.fitting_radius_m.unwrap_or(default.fitting_radius_m),
+            nut_radius_m: self.nut_radius_m.unwrap_or(default.nut_radius_m),
+            track_radius_m: self.track_radius_m.unwrap_or(default.track_radius_m),
+            jack_body_length_m: self.jack_body_length_m.unwrap_or(default.jack_body_length_m),
+            jack_body_radius_m: self.jack_body_radius_m.unwrap_or(default.jack_body_radius_m),
+        }
+    }
+
+    /// The given keys with their values.
+    fn given(&self) -> Vec<(&'static str, f64)> {
+        [
+            ("fitting_radius_m", self.fitting_radius_m),
+            ("nut_radius_m", self.nut_radius_m),
+            ("track_radius_m", self.track_radius_m),
+            ("jack_body_length_m", self.jack_body_length_m),
+            ("jack_body_radius_m", self.jack_body_radius_m),
+        ]
+        .into_iter()
+        .filter_map(|(key, value)| value.map(|v| (key, v)))
+        .collect()
+    }
+}
+
+/// Hardware sizes (m): from a tenth of a millimetre to a metre.
+const HARDWARE_SIZE_M: (f64, f64) = (1e-4, 1.0);
 
 fn default_nut_speed() -> f64 {
     0.035
@@ -100,15 +146,16 @@ impl CircularArcTrackScene {
     }
 
     fn track(&self) -> flapwright_mechanism::Result<CircularArcTrack> {
-        match self.screw_length_m {
-            Some(length) => CircularArcTrack::synthesise(self.spec(length)),
+        let track = match self.screw_length_m {
+            Some(length) => CircularArcTrack::synthesise(self.spec(length))?,
             None => {
                 // Synthesise once with an unbounded screw to learn the stroke, then size it.
                 let probe = CircularArcTrack::synthesise(self.spec(f64::MAX))?;
                 let length = SCREW_LENGTH_MARGIN * probe.synthesis().stroke_end_m;
-                CircularArcTrack::synthesise(self.spec(length))
+                CircularArcTrack::synthesise(self.spec(length))?
             }
-        }
+        };
+        Ok(track.with_hardware(self.hardware.resolve()))
     }
 }
 
@@ -160,6 +207,10 @@ impl KindScene for CircularArcTrackScene {
             );
         }
         checker.point_within(&format!("{path}.flap_centre_of_mass_m"), &m.flap_centre_of_mass_m);
+        for (key, value) in m.hardware.given() {
+            let (min, max) = HARDWARE_SIZE_M;
+            checker.in_range(&format!("{path}.hardware.{key}"), value, min, max, false);
+        }
         if m.inner_slot_radius_m.is_finite() && m.inner_slot_radius_m >= m.outer_slot_radius_m {
             // Thesis section 5.3, red-cell condition 2.
             checker.fail(

@@ -200,6 +200,19 @@ impl CollisionShape {
         }
     }
 
+    /// Balls the shape is made of, as their centres (local frame, m) and common radius (m):
+    /// a ball's own centre, a capsule's two segment ends; `None` for every other shape.
+    /// Each ball lies within the shape, so a shape is no farther from anything than the
+    /// nearest of its balls.
+    pub fn core_balls(&self) -> Option<(Vec<Point3<f64>>, f64)> {
+        if let Some(ball) = self.shape.as_ball() {
+            return Some((vec![Point3::origin()], ball.radius));
+        }
+        self.shape
+            .as_capsule()
+            .map(|c| (vec![to_point(c.segment.a), to_point(c.segment.b)], c.radius))
+    }
+
     /// True when `point_ac` is inside (or on) the shape placed at `pose`.
     pub fn contains_point(&self, pose: &Isometry3<f64>, point_ac: &Point3<f64>) -> bool {
         self.shape.contains_point(&to_pose(pose), to_glam(point_ac))
@@ -271,8 +284,21 @@ pub fn compute_distance(
     pose_b: &Isometry3<f64>,
 ) -> Result<Proximity> {
     let (pa, pb) = (to_pose(pose_a), to_pose(pose_b));
-    if let (Some(mesh_a), Some(mesh_b)) = (a.shape.as_trimesh(), b.shape.as_trimesh()) {
-        let closest = mesh_pair::mesh_pair_distance(mesh_a, &pa, mesh_b, &pb);
+    // Meshes, or a convex shape against a mesh: the crate's own searches (`mesh_pair`).
+    let searched = match (a.shape.as_trimesh(), b.shape.as_trimesh()) {
+        (Some(mesh_a), Some(mesh_b)) => Some(mesh_pair::mesh_pair_distance(mesh_a, &pa, mesh_b, &pb)),
+        (None, Some(mesh)) if a.shape.is_convex() => Some(mesh_pair::convex_mesh_distance(&*a.shape, &pa, mesh, &pb)),
+        (Some(mesh), None) if b.shape.is_convex() => {
+            let found = mesh_pair::convex_mesh_distance(&*b.shape, &pb, mesh, &pa);
+            Some(mesh_pair::MeshPairProximity {
+                point_a: found.point_b,
+                point_b: found.point_a,
+                ..found
+            })
+        }
+        _ => None,
+    };
+    if let Some(closest) = searched {
         if !closest.distance.is_finite() || closest.distance == f64::MAX {
             return Err(Error::NotFinite {
                 what: "collision distance (m)",
@@ -319,6 +345,30 @@ pub fn compute_distance(
         distance_m: distance.max(0.0),
         point_a_ac: to_point(p),
         point_b_ac: to_point(q),
+    })
+}
+
+/// Signed distance (m) from `point_ac` to the surface of `shape` placed at `pose`: its
+/// distance to the nearest surface point, negative inside a solid (by
+/// [`CollisionShape::contains_point`]; an open surface has no inside). Like any distance to a
+/// set it changes no faster than the point and the shape's points move.
+///
+/// A ball of radius r centred at `point_ac` is then `signed - r` from the solid when that
+/// is positive, and overlaps it when it is not: it must move at least `r - signed` to come
+/// clear, which is what the interference check certifies for pins and nuts in their joints.
+pub fn compute_signed_distance(shape: &CollisionShape, pose: &Isometry3<f64>, point_ac: &Point3<f64>) -> Result<f64> {
+    let (pose, point) = (to_pose(pose), to_glam(point_ac));
+    let distance = shape.shape.distance_to_point(&pose, point, false).abs();
+    if !distance.is_finite() {
+        return Err(Error::NotFinite {
+            what: "signed distance to a point (m)",
+            value: distance,
+        });
+    }
+    Ok(if shape.solid && shape.shape.contains_point(&pose, point) {
+        -distance
+    } else {
+        distance
     })
 }
 

@@ -64,7 +64,8 @@ pub mod wing;
 
 pub use airfoil::{Airfoil, Naca, NacaCamber, Surface, TrailingEdge};
 pub use collision::{
-    compute_clearance, compute_distance, compute_intersects, Clearance, CollisionShape, MassProperties, Proximity,
+    compute_clearance, compute_distance, compute_intersects, compute_signed_distance, Clearance, CollisionShape,
+    MassProperties, Proximity,
 };
 pub use error::{Error, Result};
 pub use flap::{Flap, FlapSectionSpec, FlapSpec, HingeSpec};

@@ -1,7 +1,7 @@
 //! Collision adapter against analytic distances.
 
 use approx::assert_relative_eq;
-use flapwright_geom::{compute_distance, compute_intersects, CollisionShape, TriMesh};
+use flapwright_geom::{compute_distance, compute_intersects, compute_signed_distance, CollisionShape, TriMesh};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 
 fn at(x: f64, y: f64, z: f64) -> Isometry3<f64> {
@@ -44,9 +44,8 @@ fn box_box_distance_is_analytic_including_a_rotated_corner() {
     assert_relative_eq!(proximity.point_b_ac.x, 2.0 - 0.25 * 2f64.sqrt(), max_relative = 1e-9);
 }
 
-#[test]
-fn mesh_cube_against_ball_and_containment() {
-    // Unit cube as a mesh (12 triangles, outward).
+/// The unit cube [0, 1]^3 as a mesh (12 triangles, outward).
+fn unit_cube() -> TriMesh {
     let vertices = (0..8)
         .map(|i| Point3::new(f64::from(i & 1), f64::from((i >> 1) & 1), f64::from((i >> 2) & 1)))
         .collect();
@@ -64,7 +63,12 @@ fn mesh_cube_against_ball_and_containment() {
         [1, 3, 5],
         [3, 7, 5],
     ];
-    let mesh = TriMesh { vertices, triangles };
+    TriMesh { vertices, triangles }
+}
+
+#[test]
+fn mesh_cube_against_ball_and_containment() {
+    let mesh = unit_cube();
     assert!(mesh.compute_topology_check().is_watertight());
     assert_relative_eq!(mesh.compute_signed_volume(), 1.0, max_relative = 1e-14);
     let cube = CollisionShape::from_mesh(&mesh).unwrap();
@@ -81,6 +85,55 @@ fn mesh_cube_against_ball_and_containment() {
     assert!(compute_intersects(&cube, &at(0.0, 0.0, 0.0), &ball, &at(0.5, 0.5, 0.5)).unwrap());
     assert!(CollisionShape::ball(-1.0).is_err());
     assert!(CollisionShape::convex_hull(&[Point3::origin(); 3]).is_err());
+    assert_eq!(ball.core_balls(), Some((vec![Point3::origin()], 0.2)));
+    assert_eq!(cube.core_balls(), None);
+}
+
+#[test]
+fn signed_distance_to_a_point_is_negative_inside_a_solid_only() {
+    let mesh = unit_cube();
+    let (solid, sheet) = (
+        CollisionShape::from_mesh(&mesh).unwrap(),
+        CollisionShape::from_surface(&mesh).unwrap(),
+    );
+    // The cube shifted by (1, 0, 0): a point 0.2 inside its x = 1 face, one 0.3 outside
+    // its corner edge (distance to the edge x = 2, y = 0 is 0.3 sqrt 2).
+    let pose = at(1.0, 0.0, 0.0);
+    let inside = Point3::new(1.2, 0.5, 0.5);
+    let outside = Point3::new(2.3, -0.3, 0.5);
+    assert_relative_eq!(
+        compute_signed_distance(&solid, &pose, &inside).unwrap(),
+        -0.2,
+        epsilon = 1e-12
+    );
+    assert_relative_eq!(
+        compute_signed_distance(&solid, &pose, &outside).unwrap(),
+        0.3 * 2f64.sqrt(),
+        epsilon = 1e-12
+    );
+    // An open sheet has no inside.
+    assert_relative_eq!(
+        compute_signed_distance(&sheet, &pose, &inside).unwrap(),
+        0.2,
+        epsilon = 1e-12
+    );
+    // A capsule of radius 0.1 along x: inside by 0.1 - 0.04 on its axis side.
+    let capsule = CollisionShape::capsule(Point3::origin(), Point3::new(1.0, 0.0, 0.0), 0.1).unwrap();
+    assert_eq!(
+        capsule.core_balls(),
+        Some((vec![Point3::origin(), Point3::new(1.0, 0.0, 0.0)], 0.1))
+    );
+    let near_axis = Point3::new(0.5, 0.04, 0.0);
+    assert_relative_eq!(
+        compute_signed_distance(&capsule, &Isometry3::identity(), &near_axis).unwrap(),
+        -0.06,
+        epsilon = 1e-12
+    );
+    assert_relative_eq!(
+        compute_signed_distance(&capsule, &Isometry3::identity(), &Point3::new(1.5, 0.0, 0.0)).unwrap(),
+        0.4,
+        epsilon = 1e-12
+    );
 }
 
 /// parry's own composite-vs-composite distance, the reference for the crate's mesh-pair
@@ -97,16 +150,21 @@ fn parry_mesh_distance(a: &TriMesh, pose_a: &Isometry3<f64>, b: &TriMesh, pose_b
         .distance
 }
 
-#[test]
-fn mesh_pair_distance_equals_parry_for_nested_and_crossing_meshes() {
-    use flapwright_geom::parts::MeshResolution;
+/// The fixture's wing model and its part meshes at a coarse resolution.
+fn coarse_fixture() -> (flapwright_geom::WingModel, Vec<flapwright_geom::Part>) {
     let model = super::fixture::model();
-    let resolution = MeshResolution {
+    let resolution = flapwright_geom::MeshResolution {
         points_per_side: 16,
         spanwise_stations_per_m: 2.0,
         tube_segments: 8,
     };
     let parts = model.compute_parts(resolution).unwrap();
+    (model, parts)
+}
+
+#[test]
+fn mesh_pair_distance_equals_parry_for_nested_and_crossing_meshes() {
+    let (model, parts) = coarse_fixture();
     let flap = &model.flaps()[0];
     let (hinge_point, hinge_direction) = flap.hinge_axis_ac();
     let flap_mesh = &parts.iter().find(|p| p.name == flap.spec().name).unwrap().mesh;
@@ -141,4 +199,89 @@ fn mesh_pair_distance_equals_parry_for_nested_and_crossing_meshes() {
     }
     // Some poses must be clear and some crossing for the comparison to cover both branches.
     assert!(checked > 0 && checked < 4 * (parts.len() - 1), "{checked} clear cases");
+}
+
+#[test]
+fn convex_against_mesh_distance_equals_parry() {
+    // A capsule and a ball at many places around and inside the fixture's flap mesh: the
+    // crate's best-first search finds parry's own shape-against-mesh minimum.
+    let (model, parts) = coarse_fixture();
+    let flap_mesh = &parts
+        .iter()
+        .find(|p| p.name == model.flaps()[0].spec().name)
+        .unwrap()
+        .mesh;
+    let flap = CollisionShape::from_mesh(flap_mesh).unwrap();
+    let parry_flap = {
+        let vertices = flap_mesh
+            .vertices
+            .iter()
+            .map(|p| glamx::DVec3::new(p.x, p.y, p.z))
+            .collect();
+        parry3d_f64::shape::TriMesh::new(vertices, flap_mesh.triangles.clone()).unwrap()
+    };
+    let box_ = flap_mesh.vertices.iter().fold(
+        (
+            Point3::new(f64::MAX, f64::MAX, f64::MAX),
+            Point3::new(f64::MIN, f64::MIN, f64::MIN),
+        ),
+        |(lo, hi), p| (lo.inf(p), hi.sup(p)),
+    );
+    let (capsule_end, radius) = (Point3::new(0.15, 0.05, -0.02), 0.012);
+    let capsule = CollisionShape::capsule(Point3::origin(), capsule_end, radius).unwrap();
+    let parry_capsule = parry3d_f64::shape::Capsule::new(
+        glamx::DVec3::ZERO,
+        glamx::DVec3::new(capsule_end.x, capsule_end.y, capsule_end.z),
+        radius,
+    );
+    let ball = CollisionShape::ball(0.02).unwrap();
+    let parry_ball = parry3d_f64::shape::Ball::new(0.02);
+    let (mut clear, mut touching) = (0, 0);
+    for i in 0..7 {
+        for j in 0..5 {
+            for k in 0..4 {
+                let at = |f: f64, lo: f64, hi: f64| lo - 0.1 + (hi - lo + 0.2) * f;
+                let centre = Point3::new(
+                    at(i as f64 / 6.0, box_.0.x, box_.1.x),
+                    at(j as f64 / 4.0, box_.0.y, box_.1.y),
+                    at(k as f64 / 3.0, box_.0.z, box_.1.z),
+                );
+                let pose = Isometry3::from_parts(
+                    Translation3::from(centre.coords),
+                    UnitQuaternion::from_euler_angles(0.3 * i as f64, 0.5 * j as f64, 0.7 * k as f64),
+                );
+                let parry_pose = parry3d_f64::math::Pose::from(pose);
+                let identity = parry3d_f64::math::Pose::IDENTITY;
+                for (shape, reference) in [
+                    (
+                        &capsule,
+                        parry3d_f64::query::distance(&parry_pose, &parry_capsule, &identity, &parry_flap),
+                    ),
+                    (
+                        &ball,
+                        parry3d_f64::query::distance(&parry_pose, &parry_ball, &identity, &parry_flap),
+                    ),
+                ] {
+                    let reference = reference.unwrap().distance;
+                    let ours = compute_distance(shape, &pose, &flap, &Isometry3::identity()).unwrap();
+                    let swapped = compute_distance(&flap, &Isometry3::identity(), shape, &pose).unwrap();
+                    assert!(
+                        (ours.distance_m - reference).abs() <= 1e-12,
+                        "{centre}: {} vs {reference}",
+                        ours.distance_m
+                    );
+                    assert_eq!(ours.distance_m, swapped.distance_m);
+                    assert_relative_eq!(ours.point_a_ac, swapped.point_b_ac, epsilon = 1e-12);
+                    if reference > 0.0 {
+                        let gap = (ours.point_a_ac - ours.point_b_ac).norm();
+                        assert!((gap - reference).abs() <= 1e-9, "{centre}: points {gap} apart");
+                        clear += 1;
+                    } else {
+                        touching += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(clear > 100 && touching > 0, "{clear} clear, {touching} touching");
 }

@@ -64,6 +64,9 @@ pub struct FittedFlapMotion {
     stowed_ac: Vec<Point3<f64>>,
     /// m per unit τ, for the `query` points given at construction.
     speed_bound: f64,
+    /// Root mean square of the fitted points' speed bounds (m per unit τ): the speed gain
+    /// at a point times this (and the margin) bounds the fitted field there.
+    root_mean_square: f64,
 }
 
 impl FittedFlapMotion {
@@ -108,6 +111,7 @@ impl FittedFlapMotion {
             carriers,
             stowed_ac,
             speed_bound: FIT_SPEED_MARGIN * gain * root_mean_square,
+            root_mean_square,
         })
     }
 
@@ -141,6 +145,14 @@ impl Motion for FittedFlapMotion {
 
     fn speed_bound(&self) -> f64 {
         self.speed_bound
+    }
+
+    /// The local frame is the stowed aircraft frame, where the fitted points are: the gain
+    /// at the query points ([`FitSpeedGain`] is convex in the point: a corner of their hull
+    /// bounds it) times the fitted points' root mean square speed, with the margin.
+    fn field_speed_bound(&self, local_points: &[Point3<f64>]) -> Option<f64> {
+        let gain = FitSpeedGain::compute(&self.stowed_ac, local_points).ok()?.gain;
+        Some(FIT_SPEED_MARGIN * gain * self.root_mean_square)
     }
 }
 

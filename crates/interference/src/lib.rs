@@ -50,6 +50,7 @@ mod flap_motion;
 mod opening;
 mod part;
 mod refine;
+mod relative_speed;
 mod station;
 mod sweep;
 

@@ -4,7 +4,7 @@ use flapwright_geom::collision::{CollisionShape, MassProperties};
 use flapwright_geom::TriMesh;
 use std::sync::Arc;
 
-use nalgebra::Isometry3;
+use nalgebra::{Isometry3, Point3};
 
 /// How a rigid part moves with the deployment parameter `t` (e.g. flap deflection, rad).
 pub trait Motion: Send + Sync {
@@ -16,6 +16,17 @@ pub trait Motion: Send + Sync {
     /// of `t`, over the whole deployment range. The sweep's guarantee rests on it:
     /// |d(t) - d(t')| <= (L_a + L_b) |t - t'| for the distance d between two parts.
     fn speed_bound(&self) -> f64;
+
+    /// A certified upper bound on the speed (m per unit of `t`) of the part's rigid
+    /// velocity field (the motion extended to all space) at every point of the convex hull
+    /// of `local_points`, given in the part's local frame; `None` when the motion cannot
+    /// say. Unlike [`Motion::speed_bound`], the points need not belong to the part: the
+    /// sweep bounds how fast another part moves *relative to this one* from it, which is
+    /// far tighter than the sum of the two speed bounds for a small part near a large one
+    /// (a track under a flap's nose, against the flap's trailing edge a metre aft).
+    fn field_speed_bound(&self, _local_points: &[Point3<f64>]) -> Option<f64> {
+        None
+    }
 }
 
 /// A part that does not move (wing skin, spars, torque tube, fixed tracks): its local
@@ -30,6 +41,10 @@ impl Motion for Fixed {
 
     fn speed_bound(&self) -> f64 {
         0.0
+    }
+
+    fn field_speed_bound(&self, _local_points: &[Point3<f64>]) -> Option<f64> {
+        Some(0.0)
     }
 }
 

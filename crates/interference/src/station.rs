@@ -10,7 +10,7 @@ use std::sync::Arc;
 
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::TriMesh;
-use flapwright_mechanism::seam::{BodyRole, FlapMechanism, PlanarShape};
+use flapwright_mechanism::seam::{BodyRole, FlapMechanism, PlanarShape, SpeedBound};
 use flapwright_mechanism::spanwise::spanwise_layout;
 use nalgebra::{Isometry2, Isometry3, Point2, Point3, Translation3, UnitQuaternion, Vector3};
 use serde::Serialize;
@@ -146,6 +146,9 @@ struct BodyMotion {
     offset: Isometry3<f64>,
     /// m per unit τ.
     speed_bound: f64,
+    /// The body's own bound (per unit input) and the input travel, for its field.
+    body_bound: SpeedBound,
+    travel: f64,
 }
 
 /// The planar displacement as a rigid motion of the station frame (about its z axis).
@@ -180,6 +183,21 @@ impl Motion for BodyMotion {
 
     fn speed_bound(&self) -> f64 {
         self.speed_bound
+    }
+
+    /// The lifted planar motion's field at a point depends on the point's distance from
+    /// the body's reference in the station plane: [`SpeedBound::within`] that distance,
+    /// largest at a corner of the points' hull (the distance is convex).
+    fn field_speed_bound(&self, local_points: &[Point3<f64>]) -> Option<f64> {
+        let (bound, travel) = (&self.body_bound, self.travel);
+        let reach_m = local_points
+            .iter()
+            .map(|y| {
+                let p = self.station_from_aircraft * (self.offset * y);
+                nalgebra::distance(&Point2::new(p.x, p.y), &bound.reference)
+            })
+            .fold(0.0, f64::max);
+        Some(bound.within(reach_m) * travel)
     }
 }
 
@@ -221,6 +239,8 @@ pub fn flap_part(
             station_from_aircraft: aircraft_from_station.inverse(),
             offset: Isometry3::identity(),
             speed_bound: bound.within(reach_m) * mechanism.input_range().travel().abs(),
+            body_bound: *bound,
+            travel: mechanism.input_range().travel().abs(),
         },
     ))
 }
@@ -284,6 +304,8 @@ pub fn station_parts(
                             offset,
                             speed_bound: body.speed_bound.for_shape(&solid.shape)
                                 * mechanism.input_range().travel().abs(),
+                            body_bound: body.speed_bound,
+                            travel: mechanism.input_range().travel().abs(),
                         },
                     )
                 } else {

@@ -3,7 +3,8 @@
 //! must stay joined ([`sweep_contact`]).
 //!
 //! Between two samples t_i < t_j the distance d(t) between two rigid parts cannot change
-//! faster than the sum L of their speed bounds, so on [t_i, t_j]
+//! faster than L, the sum of their speed bounds or the speed of one in the other's frame
+//! (`relative_speed`), so on [t_i, t_j]
 //! d(t) >= max(d_i - L (t - t_i), d_j - L (t_j - t)) >= (d_i + d_j - L (t_j - t_i)) / 2,
 //! and the same with the signs turned for an upper bound. The sweep bisects the interval
 //! with the worst such bound until every bound is within `tolerance_m` of the worst sample
@@ -11,12 +12,14 @@
 //! [min_sampled - residual_bound, min_sampled]: a collision between samples cannot be
 //! missed once the residual bound is below the clearance.
 
-use flapwright_geom::collision::{compute_clearance, Clearance};
+use flapwright_geom::collision::{compute_clearance, compute_signed_distance, Clearance};
+use nalgebra::Point3;
 use serde::Serialize;
 
 use crate::error::{Error, Result};
 use crate::part::Part;
 use crate::refine::{certified_minimum, Objective};
+use crate::relative_speed::pair_lipschitz;
 
 /// Resolution knobs of the sweep (defaults chosen from the error-vs-time study in the
 /// README).
@@ -133,22 +136,6 @@ pub struct JointSeparation {
     pub evaluations: usize,
 }
 
-/// Sum of the two parts' speed bounds: the Lipschitz constant of their distance.
-fn lipschitz(a: &Part, b: &Part) -> Result<f64> {
-    let mut speed = 0.0;
-    for part in [a, b] {
-        let bound = part.motion.speed_bound();
-        if !(bound.is_finite() && bound >= 0.0) {
-            return Err(Error::BadSpeedBound {
-                part: part.name.clone(),
-                value: bound,
-            });
-        }
-        speed += bound;
-    }
-    Ok(speed)
-}
-
 fn checked_range(start: f64, end: f64, settings: &SweepSettings) -> Result<()> {
     settings.validate()?;
     if !(start.is_finite() && end.is_finite() && start < end) {
@@ -174,17 +161,18 @@ struct Clearances<'p> {
     resolution_m: f64,
 }
 
+fn pose_at(part: &Part, t: f64) -> Result<nalgebra::Isometry3<f64>> {
+    part.motion.pose_ac(t).map_err(|source| Error::Pose {
+        part: part.name.clone(),
+        parameter: t,
+        source,
+    })
+}
+
 impl Clearances<'_> {
     fn at(&self, t: f64) -> Result<Clearance> {
         let (a, b) = (self.a, self.b);
-        let pose = |part: &Part| {
-            part.motion.pose_ac(t).map_err(|source| Error::Pose {
-                part: part.name.clone(),
-                parameter: t,
-                source,
-            })
-        };
-        compute_clearance(&a.shape, &pose(a)?, &b.shape, &pose(b)?, self.resolution_m)
+        compute_clearance(&a.shape, &pose_at(a, t)?, &b.shape, &pose_at(b, t)?, self.resolution_m)
             .map_err(|source| query_error(a, b, t, source))
     }
 }
@@ -240,6 +228,71 @@ impl Objective for LargestSeparation<'_> {
     }
 }
 
+/// A ball of a part's core (`CollisionShape::core_balls`: a ball's centre, a capsule's
+/// ends) against the other part.
+struct CoreBall<'p> {
+    part: &'p Part,
+    centre: Point3<f64>,
+    radius_m: f64,
+    other: &'p Part,
+}
+
+/// A joint where a part is round (a pin in its track, a nut on its screw, a fitting on its
+/// pin): a ball of radius r inside that part is `signed - r` from the other solid, `signed`
+/// the signed distance of its centre to that solid's surface (`compute_signed_distance`):
+/// the separation when positive; when negative, the ball must move at least that far to
+/// come out. The part is no farther from the other than its nearest core ball, so the
+/// smallest of these bounds the joint's separation from above (exact for a ball), and it
+/// changes no faster than the two parts' points move (a distance to a set of moving
+/// points), so the same Lipschitz bound certifies it. A few point queries replace the
+/// surface sampling of [`LargestSeparation`]: the default scene's pins in their track tubes
+/// took 5 ms an evaluation that way.
+struct CoreBallSeparation<'p> {
+    balls: Vec<CoreBall<'p>>,
+    play_m: f64,
+}
+
+impl<'p> CoreBallSeparation<'p> {
+    /// The core balls of `a` against `b` and of `b` against `a`; `None` when neither has any.
+    fn of(a: &'p Part, b: &'p Part, play_m: f64) -> Option<Self> {
+        let balls: Vec<CoreBall<'p>> = [(a, b), (b, a)]
+            .into_iter()
+            .filter_map(|(part, other)| {
+                let (centres, radius_m) = part.shape.core_balls()?;
+                Some(centres.into_iter().map(move |centre| CoreBall {
+                    part,
+                    centre,
+                    radius_m,
+                    other,
+                }))
+            })
+            .flatten()
+            .collect();
+        (!balls.is_empty()).then_some(Self { balls, play_m })
+    }
+}
+
+impl Objective for CoreBallSeparation<'_> {
+    /// The smallest signed separation of a core ball (m).
+    type Sample = f64;
+    fn evaluate(&self, t: f64) -> Result<f64> {
+        let mut smallest = f64::INFINITY;
+        for ball in &self.balls {
+            let centre = pose_at(ball.part, t)? * ball.centre;
+            let signed = compute_signed_distance(&ball.other.shape, &pose_at(ball.other, t)?, &centre)
+                .map_err(|source| query_error(ball.part, ball.other, t, source))?;
+            smallest = smallest.min(signed - ball.radius_m);
+        }
+        Ok(smallest)
+    }
+    fn value(&self, sample: &f64) -> f64 {
+        -sample
+    }
+    fn bound_suffices(&self, lowest_bound: f64) -> bool {
+        -lowest_bound <= self.play_m
+    }
+}
+
 /// Sweeps the clearance between `a` and `b` for deployment `t` in `[start, end]`.
 pub fn sweep_pair(a: &Part, b: &Part, start: f64, end: f64, settings: &SweepSettings) -> Result<PairClearance> {
     checked_range(start, end, settings)?;
@@ -248,7 +301,7 @@ pub fn sweep_pair(a: &Part, b: &Part, start: f64, end: f64, settings: &SweepSett
         b,
         resolution_m: settings.tolerance_m,
     });
-    let found = certified_minimum(start, end, lipschitz(a, b)?, settings, &objective)?;
+    let found = certified_minimum(start, end, pair_lipschitz(a, b, start, end)?, settings, &objective)?;
     let best = found.sample;
     Ok(PairClearance {
         part_a: a.name.clone(),
@@ -277,6 +330,16 @@ pub fn sweep_contact(
     settings: &SweepSettings,
 ) -> Result<JointSeparation> {
     checked_range(start, end, settings)?;
+    let lipschitz = pair_lipschitz(a, b, start, end)?;
+    if let Some(objective) = CoreBallSeparation::of(a, b, play_m) {
+        let found = certified_minimum(start, end, lipschitz, settings, &objective)?;
+        return Ok(JointSeparation {
+            max_separation_m: found.sample.max(0.0),
+            at_parameter: found.t,
+            upper_bound_m: found.sample + found.residual,
+            evaluations: found.evaluations,
+        });
+    }
     let objective = LargestSeparation {
         clearances: Clearances {
             a,
@@ -285,7 +348,7 @@ pub fn sweep_contact(
         },
         play_m,
     };
-    let found = certified_minimum(start, end, lipschitz(a, b)?, settings, &objective)?;
+    let found = certified_minimum(start, end, lipschitz, settings, &objective)?;
     let largest = found.sample.signed_m();
     Ok(JointSeparation {
         max_separation_m: largest.max(0.0),

@@ -4,6 +4,7 @@ mod brute_force;
 mod joint;
 mod opening;
 mod planar;
+mod relative_speed;
 mod same_station;
 mod sweep;
 

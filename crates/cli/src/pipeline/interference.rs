@@ -202,15 +202,17 @@ fn local_chord_m(polygons: &[Vec<nalgebra::Point2<f64>>]) -> f64 {
 }
 
 /// Fairing depth of each placed station (each record's `fairing`): the mechanism against
-/// the lower contour of the wing and the stowed flap cut by the station plane.
+/// the lower contour of the wing and the stowed flap cut by the station plane. Stations in
+/// parallel (rayon): each is its own.
 pub fn fairing_depths(
     records: &mut [StationRecord],
     flap_names: &[String],
     resolution: &ResolutionScene,
 ) -> Result<()> {
-    for record in records.iter_mut() {
+    use rayon::prelude::*;
+    records.par_iter_mut().try_for_each(|record| -> Result<()> {
         let Some(station) = &record.placed else {
-            continue;
+            return Ok(());
         };
         // The wing and every flap cut by the plane bound the fairing; the station's own flap
         // gives the chord the depth is a share of.
@@ -227,6 +229,6 @@ pub fn fairing_depths(
         })
         .with_context(|| format!("fairing depth at station {}", record.station))?;
         record.fairing = Some(depth);
-    }
-    Ok(())
+        Ok(())
+    })
 }

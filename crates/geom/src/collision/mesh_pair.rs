@@ -12,8 +12,9 @@
 
 use glamx::DVec3;
 use parry3d_f64::math::Pose;
+use parry3d_f64::partitioning::{BvhNode, TraversalAction};
 use parry3d_f64::query::{self, ClosestPoints};
-use parry3d_f64::shape::{TriMesh, Triangle};
+use parry3d_f64::shape::{Capsule, Shape, TriMesh, Triangle};
 
 /// The closest pair of triangles and their closest points, in the frame of the caller's
 /// poses.
@@ -43,8 +44,11 @@ fn triangle_distance(a: &Triangle, b: &Triangle) -> f64 {
 /// Smallest distance between mesh `a` at `pose_a` and mesh `b` at `pose_b`, with the
 /// closest points (world frame of the poses). Distances are between surfaces, as parry's.
 pub(super) fn mesh_pair_distance(a: &TriMesh, pose_a: &Pose, b: &TriMesh, pose_b: &Pose) -> MeshPairProximity {
-    // Walk the larger mesh triangle by triangle and search the smaller one's BVH: measured
-    // slightly faster than the other way round on the default scene's pairs.
+    // Walk the larger mesh through its own BVH, pruned by the smaller one's box, and search
+    // the smaller one's BVH from each triangle reached. Sorting every walked triangle by
+    // its box's distance (the walk before) cost O(n log n) per query whatever the answer:
+    // a track tube against the flap sheet took 0.33 ms a query that way, 0.13 ms now; a
+    // flap nested in its cove, where the box prunes little, is slower: 1.7 ms against 1.3.
     let swapped = a.num_triangles() < b.num_triangles();
     let (walked, walked_pose, searched, searched_pose) = if swapped {
         (b, pose_b, a, pose_a)
@@ -52,49 +56,67 @@ pub(super) fn mesh_pair_distance(a: &TriMesh, pose_a: &Pose, b: &TriMesh, pose_b
         (a, pose_a, b, pose_b)
     };
     let searched_from_walked = searched_pose.inv_mul(walked_pose);
-    let walked_vertices: Vec<DVec3> = walked
-        .vertices()
-        .iter()
-        .map(|v| searched_from_walked.transform_point(*v))
-        .collect();
     let walked_triangle = |i: usize| {
         let [p, q, r] = walked.indices()[i];
-        Triangle::new(
-            walked_vertices[p as usize],
-            walked_vertices[q as usize],
-            walked_vertices[r as usize],
-        )
+        let vertex = |k: u32| searched_from_walked.transform_point(walked.vertices()[k as usize]);
+        Triangle::new(vertex(p), vertex(q), vertex(r))
     };
+    // The searched mesh's box in the walked mesh's frame (its corners turned): every
+    // walked triangle is at least as far from the searched mesh as its BVH node's box is
+    // from this box, so the walked mesh's BVH prunes everything farther than the best
+    // distance found so far, without touching the far triangles.
     let root = searched.local_aabb();
+    let walked_from_searched = searched_from_walked.inverse();
+    let (near_mins, near_maxs) = (0..8).fold((DVec3::splat(f64::MAX), DVec3::splat(f64::MIN)), |(lo, hi), k| {
+        let corner = DVec3::new(
+            if k & 1 == 0 { root.mins.x } else { root.maxs.x },
+            if k & 2 == 0 { root.mins.y } else { root.maxs.y },
+            if k & 4 == 0 { root.mins.z } else { root.maxs.z },
+        );
+        let corner = walked_from_searched.transform_point(corner);
+        (lo.min(corner), hi.max(corner))
+    });
+    let to_searched = |node: &BvhNode| box_distance(node.mins(), node.maxs(), near_mins, near_maxs);
     let bvh = searched.bvh();
-
-    // Nearest boxes first: the first searches set a tight bound, and once a triangle's box
-    // is farther than the best distance so is every later one's.
-    let mut order: Vec<(f64, usize)> = (0..walked.indices().len())
-        .map(|i| {
-            let (mins, maxs) = bounds(&walked_triangle(i));
-            (box_distance(mins, maxs, root.mins, root.maxs), i)
-        })
-        .collect();
-    order.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
     let mut best = f64::MAX;
     let mut best_pair = None;
-    for (to_root, i) in order {
-        if to_root >= best {
-            break;
-        }
-        let tri = walked_triangle(i);
+    let mut search = |i: u32, best: &mut f64| {
+        let tri = walked_triangle(i as usize);
         let (mins, maxs) = bounds(&tri);
         let found = bvh.find_best(
-            best,
+            *best,
             |node, _| box_distance(mins, maxs, node.mins(), node.maxs()),
             |leaf, _| Some(triangle_distance(&tri, &searched.triangle(leaf))),
         );
         if let Some((leaf, distance)) = found {
-            best = distance;
-            best_pair = Some((i, leaf));
+            *best = distance;
+            best_pair = Some((i as usize, leaf));
         }
+    };
+    // A first bound from the walked triangle whose box is nearest the searched mesh's box,
+    // then every walked leaf whose box is nearer than the best distance.
+    let nearest = walked.bvh().find_best(
+        f64::MAX,
+        |node, _| to_searched(node),
+        |leaf, _| {
+            let tri = walked.triangle(leaf);
+            let (mins, maxs) = (tri.a.min(tri.b).min(tri.c), tri.a.max(tri.b).max(tri.c));
+            Some(box_distance(mins, maxs, near_mins, near_maxs))
+        },
+    );
+    if let Some((leaf, _)) = nearest {
+        search(leaf, &mut best);
     }
+    let seed = nearest.map(|(leaf, _)| leaf);
+    walked.bvh().traverse(|node| {
+        if to_searched(node) >= best {
+            return TraversalAction::Prune;
+        }
+        if let Some(leaf) = node.leaf_data().filter(|leaf| Some(*leaf) != seed) {
+            search(leaf, &mut best);
+        }
+        TraversalAction::Continue
+    });
 
     let Some((i, leaf)) = best_pair else {
         // An empty mesh: nothing is near.
@@ -129,5 +151,83 @@ pub(super) fn mesh_pair_distance(a: &TriMesh, pose_a: &Pose, b: &TriMesh, pose_b
         distance: best,
         point_a,
         point_b,
+    }
+}
+
+/// Pieces a capsule's box is cut into along its axis for pruning: a long capsule lying
+/// diagonally has a box mostly empty, and a tube mesh beside it has many triangles inside
+/// that box (16-station bench: 0.7 ms a query with one box).
+const CAPSULE_PIECES: usize = 8;
+
+/// Boxes (in the frame `pose` maps into) that together hold `convex`: a capsule's pieces
+/// along its axis, each its segment's box grown by the radius; any other shape's own box.
+fn covering_boxes(convex: &dyn Shape, pose: &Pose) -> Vec<(DVec3, DVec3)> {
+    if let Some(capsule) = convex.as_shape::<Capsule>() {
+        let (a, b) = (
+            pose.transform_point(capsule.segment.a),
+            pose.transform_point(capsule.segment.b),
+        );
+        let grow = DVec3::splat(capsule.radius);
+        return (0..CAPSULE_PIECES)
+            .map(|k| {
+                let p = a.lerp(b, k as f64 / CAPSULE_PIECES as f64);
+                let q = a.lerp(b, (k + 1) as f64 / CAPSULE_PIECES as f64);
+                (p.min(q) - grow, p.max(q) + grow)
+            })
+            .collect();
+    }
+    let aabb = convex.compute_aabb(pose);
+    vec![(aabb.mins, aabb.maxs)]
+}
+
+/// Smallest distance between the convex shape `convex` at `pose_convex` and mesh `mesh` at
+/// `pose_mesh`, with the closest points (world frame of the poses): the mesh's BVH searched
+/// best first, pruned by the distance of each node's box from the convex shape's box.
+/// parry 0.31's own shape-against-composite query reaches the same minimum but visits many
+/// more triangles where a long capsule runs beside a tube mesh (a fitting beside a track):
+/// 1 ms a query on the 16-station bench's pairs.
+pub(super) fn convex_mesh_distance(
+    convex: &dyn Shape,
+    pose_convex: &Pose,
+    mesh: &TriMesh,
+    pose_mesh: &Pose,
+) -> MeshPairProximity {
+    let mesh_from_convex = pose_mesh.inv_mul(pose_convex);
+    let boxes = covering_boxes(convex, &mesh_from_convex);
+    let lower_bound = |mins: DVec3, maxs: DVec3| {
+        boxes
+            .iter()
+            .map(|(lo, hi)| box_distance(*lo, *hi, mins, maxs))
+            .fold(f64::MAX, f64::min)
+    };
+    let found = mesh.bvh().find_best(
+        f64::MAX,
+        |node, _| lower_bound(node.mins(), node.maxs()),
+        |leaf, _| {
+            query::distance(&mesh_from_convex, convex, &Pose::IDENTITY, &mesh.triangle(leaf))
+                .ok()
+                .map(|d| d.distance)
+        },
+    );
+    let Some((leaf, best)) = found else {
+        return MeshPairProximity {
+            distance: f64::MAX,
+            point_a: pose_convex.translation,
+            point_b: pose_mesh.translation,
+        };
+    };
+    let triangle = mesh.triangle(leaf);
+    let margin = best * (1.0 + 1e-9) + 1e-12;
+    let (p, q) = match query::closest_points(&mesh_from_convex, convex, &Pose::IDENTITY, &triangle, margin) {
+        Ok(ClosestPoints::WithinMargin(p, q)) => (p, q),
+        _ => query::contact(&mesh_from_convex, convex, &Pose::IDENTITY, &triangle, 0.0)
+            .ok()
+            .flatten()
+            .map_or((triangle.center(), triangle.center()), |c| (c.point1, c.point2)),
+    };
+    MeshPairProximity {
+        distance: best,
+        point_a: pose_mesh.transform_point(p),
+        point_b: pose_mesh.transform_point(q),
     }
 }

@@ -96,8 +96,31 @@ pub(super) fn deepest_inside(
         }
         h = (h * (points as f64 / SAMPLE_BUDGET as f64).sqrt().max(1.1)).min(longest_edge);
     }
+    // Depth is 1-Lipschitz, so no point of a triangle lies deeper than its centroid's depth
+    // (negative outside) plus the triangle's reach from it (twice that for a primitive:
+    // its samples move onto the true surface by less than the triangle's size). Triangles
+    // are sampled deepest bound first and skipped once their bound cannot beat the deepest
+    // sample: the same deepest sample, without sampling the shallow part of the overlap.
+    let reach_factor = if exact_surface.is_some() { 2.0 } else { 1.0 };
+    let mut bounded: Vec<(f64, &[DVec3; 3])> = candidates
+        .into_iter()
+        .map(|tri| {
+            let centroid = (tri[0] + tri[1] + tri[2]) / 3.0;
+            let reach = tri.iter().map(|v| (*v - centroid).length()).fold(0.0, f64::max);
+            let projection = host.project_point(host_pose, centroid, false);
+            let distance = (projection.point - centroid).length();
+            let depth = if projection.is_inside { distance } else { -distance };
+            // A point with no nearest surface point (a ball's centre) bounds nothing.
+            let bound = depth + reach_factor * reach;
+            (if bound.is_nan() { f64::INFINITY } else { bound }, tri)
+        })
+        .collect();
+    bounded.sort_by(|a, b| b.0.total_cmp(&a.0));
     let mut deepest: Option<Deepest> = None;
-    for tri in candidates {
+    for (bound, tri) in bounded {
+        if bound < 0.0 || deepest.is_some_and(|d| bound <= d.depth) {
+            break;
+        }
         let (corner, e1, e2, n1, n2) = grid(tri, h);
         for i in 0..=n1 {
             let u = i as f64 / n1 as f64;
@@ -116,6 +139,10 @@ pub(super) fn deepest_inside(
                     continue;
                 }
                 let depth = (projection.point - point).length();
+                // parry projects a ball's centre to NaN: its neighbours within h stand in.
+                if depth.is_nan() {
+                    continue;
+                }
                 if deepest.is_none_or(|d| depth > d.depth) {
                     deepest = Some(Deepest {
                         depth,

@@ -72,8 +72,10 @@ pub fn assembly(
         .filter(|p| p.kind == PartKind::Spar)
         .map(|p| p.name.as_str())
         .collect();
+    // Each station's parts and openings are its own: built in parallel (rayon), in order.
+    use rayon::prelude::*;
     let stations = records
-        .iter()
+        .par_iter()
         .map(|r| {
             let station = placed(r)?;
             let frame = station.station.frame.aircraft_from_station();

@@ -125,12 +125,15 @@ pub struct PairClearance {
 /// The largest separation of two parts joined by design over the deployment.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct JointSeparation {
-    /// Largest sampled distance between the solids (m); 0 while they stay in contact.
+    /// Largest sampled distance between the solids (m); 0 while they stay in contact. Where
+    /// a side is round (a ball or a capsule), the largest separation of its nearest core
+    /// ball instead: exact for a ball, at least the solids' separation for a capsule.
     pub max_separation_m: f64,
     /// Deployment parameter where it occurs.
     pub at_parameter: f64,
     /// Certified upper bound on the separation over the whole deployment (m); negative
-    /// when the parts stay overlapped by at least that much throughout.
+    /// when the parts stay overlapped by at least that much throughout (for a round side:
+    /// its ball must move at least that far to come out).
     pub upper_bound_m: f64,
     /// Distance evaluations spent.
     pub evaluations: usize,

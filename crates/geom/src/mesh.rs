@@ -59,6 +59,17 @@ impl Aabb {
         }
     }
 
+    /// The eight corners (m).
+    pub fn corners(&self) -> [Point3<f64>; 8] {
+        std::array::from_fn(|k| {
+            Point3::new(
+                if k & 1 == 0 { self.min.x } else { self.max.x },
+                if k & 2 == 0 { self.min.y } else { self.max.y },
+                if k & 4 == 0 { self.min.z } else { self.max.z },
+            )
+        })
+    }
+
     /// The smallest box holding both.
     pub fn merged(&self, other: &Aabb) -> Aabb {
         Aabb {

@@ -49,8 +49,17 @@ pub(crate) fn pair_lipschitz(a: &Part, b: &Part, start: f64, end: f64) -> Result
     if plain == 0.0 {
         return Ok(0.0);
     }
-    let a_in_b = relative_bound(a, speed[0], b, speed[1], start, end)?;
-    let b_in_a = relative_bound(b, speed[1], a, speed[0], start, end)?;
+    // In a fixed part's frame the other moves at its own bound, the plain sum: no need to
+    // pose anything.
+    let in_frame = |mover: &Part, mover_speed: f64, frame: &Part, frame_speed: f64| {
+        if frame_speed == 0.0 {
+            Ok(plain)
+        } else {
+            relative_bound(mover, mover_speed, frame, frame_speed, start, end)
+        }
+    };
+    let a_in_b = in_frame(a, speed[0], b, speed[1])?;
+    let b_in_a = in_frame(b, speed[1], a, speed[0])?;
     Ok([plain, a_in_b, b_in_a].into_iter().fold(f64::INFINITY, f64::min))
 }
 
@@ -75,19 +84,7 @@ fn relative_bound(mover: &Part, mover_speed: f64, frame: &Part, frame_speed: f64
         .collect::<Result<Vec<_>>>()?;
     let mut growth = (mover_speed + frame_speed) * width / 2.0;
     for _ in 0..GROWTH_ROUNDS {
-        let corners: Vec<Point3<f64>> = boxes
-            .iter()
-            .flat_map(|b| {
-                let b = b.inflated(growth);
-                (0..8).map(move |i| {
-                    Point3::new(
-                        if i & 1 == 0 { b.min.x } else { b.max.x },
-                        if i & 2 == 0 { b.min.y } else { b.max.y },
-                        if i & 4 == 0 { b.min.z } else { b.max.z },
-                    )
-                })
-            })
-            .collect();
+        let corners: Vec<Point3<f64>> = boxes.iter().flat_map(|b| b.inflated(growth).corners()).collect();
         let Some(field) = frame.motion.field_speed_bound(&corners).filter(|f| f.is_finite()) else {
             return Ok(f64::INFINITY);
         };

@@ -67,15 +67,13 @@ pub(super) fn mesh_pair_distance(a: &TriMesh, pose_a: &Pose, b: &TriMesh, pose_b
     // distance found so far, without touching the far triangles.
     let root = searched.local_aabb();
     let walked_from_searched = searched_from_walked.inverse();
-    let (near_mins, near_maxs) = (0..8).fold((DVec3::splat(f64::MAX), DVec3::splat(f64::MIN)), |(lo, hi), k| {
-        let corner = DVec3::new(
-            if k & 1 == 0 { root.mins.x } else { root.maxs.x },
-            if k & 2 == 0 { root.mins.y } else { root.maxs.y },
-            if k & 4 == 0 { root.mins.z } else { root.maxs.z },
-        );
-        let corner = walked_from_searched.transform_point(corner);
-        (lo.min(corner), hi.max(corner))
-    });
+    let (near_mins, near_maxs) = root
+        .vertices()
+        .iter()
+        .map(|corner| walked_from_searched.transform_point(*corner))
+        .fold((DVec3::splat(f64::MAX), DVec3::splat(f64::MIN)), |(lo, hi), c| {
+            (lo.min(c), hi.max(c))
+        });
     let to_searched = |node: &BvhNode| box_distance(node.mins(), node.maxs(), near_mins, near_maxs);
     let bvh = searched.bvh();
     let mut best = f64::MAX;
@@ -99,8 +97,7 @@ pub(super) fn mesh_pair_distance(a: &TriMesh, pose_a: &Pose, b: &TriMesh, pose_b
         f64::MAX,
         |node, _| to_searched(node),
         |leaf, _| {
-            let tri = walked.triangle(leaf);
-            let (mins, maxs) = (tri.a.min(tri.b).min(tri.c), tri.a.max(tri.b).max(tri.c));
+            let (mins, maxs) = bounds(&walked.triangle(leaf));
             Some(box_distance(mins, maxs, near_mins, near_maxs))
         },
     );

@@ -100,6 +100,15 @@ pub enum Error {
         /// Largest input that assembles, a1 + a2 (m).
         max_input_m: f64,
     },
+    /// A dyad of a closed-form loop does not assemble: its two circles do not meet, or its
+    /// links are aligned (a toggle).
+    #[error("the five-bar's dyad {dyad} does not assemble at crank angle {:.3} deg", .crank_rad.to_degrees())]
+    LoopOpen {
+        /// Which dyad (its joint and loop).
+        dyad: &'static str,
+        /// Crank angle (rad).
+        crank_rad: f64,
+    },
     /// The mechanism is at (or within the tolerance of) a toggle (dead-centre) position:
     /// the transmission angle vanishes and the velocity Jacobian is singular.
     #[error(

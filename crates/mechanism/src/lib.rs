@@ -24,6 +24,10 @@
 //! - [`InvertedSliderCrank`] is the driving linkage on its own (toggle detection, condition
 //!   number); [`landing_gear`] synthesises it by the landing-gear method of Yastrebov &
 //!   Polyushkova (1982, doc 004).
+//! - [`five_bar`]: the five-bar double-slotted flap of `001_...` in closed form (three RRR
+//!   dyads), with every derivative to third order through [`jet`]; [`generalised`] turns a
+//!   one-input mechanism's bodies with mass and its lifting surfaces into the equation of
+//!   motion's generalised inertia and force (work-energy, `001_...` section 3.1).
 //! - [`planar`] is a general one-input planar model (bodies; revolute, prismatic,
 //!   pin-in-circular-slot and pin-in-straight-slot joints; a distance or angle driver)
 //!   solved by Newton with the analytic Jacobian, velocities and accelerations from the
@@ -77,9 +81,12 @@ mod deployment;
 pub mod dropped_hinge;
 mod error;
 mod feasibility;
+pub mod five_bar;
 pub mod flap_load;
 pub mod four_bar;
+pub mod generalised;
 pub mod hooked_track;
+pub mod jet;
 mod kinetostatics;
 pub mod landing_gear;
 pub mod link_track;
@@ -106,8 +113,10 @@ pub use angle::{four_times_triangle_area, guarded_acos, ACOS_ROUNDING_TOLERANCE,
 pub use deployment::{sweep_deployment, Deployment, DeploymentSample, DeploymentStop, FlapGapOverlap};
 pub use dropped_hinge::{DroppedHinge, DroppedHingeActuator, DroppedHingeSpec};
 pub use error::{Error, Result, SynthesisDefect};
+pub use five_bar::{DoubleFlapLoads, FiveBarDimensions, FiveBarDoubleFlap, FiveBarPose};
 pub use flap_load::{FlapMass, LinkHardware};
 pub use four_bar::{FourBar, FourBarSpec};
+pub use generalised::{generalise, AeroSurface, Generalised, InertialBody};
 pub use hooked_track::{HookedTrack, HookedTrackSpec};
 pub use kinetostatics::{ExternalMoment, FlapNormalForce, Forces, LoadCase};
 pub use link_track::{LinkTrack, LinkTrackSpec};

@@ -2,6 +2,7 @@
 
 mod common;
 mod finite_differences;
+mod five_bar;
 mod hooked_track;
 mod landing_gear;
 mod planar;

@@ -1,12 +1,13 @@
 //! One pose (position, velocity, acceleration, forces) of the thesis screw-jack track, and a
-//! 1000-sample deployment sweep.
+//! 1000-sample deployment sweep; and a 1000-sample sweep of the `001_...` five-bar double
+//! flap's positions and rates (issue 16: <= 0.2 ms).
 // criterion_group! generates undocumented public functions.
 #![allow(missing_docs)]
 
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec, LoadCase};
+use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec, FiveBarDoubleFlap, LoadCase};
 
 fn pose_and_sweep(c: &mut Criterion) {
     let track =
@@ -24,5 +25,21 @@ fn pose_and_sweep(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, pose_and_sweep);
+fn five_bar_sweep(c: &mut Criterion) {
+    let five_bar = FiveBarDoubleFlap::polimi_case_study().expect("assembles");
+    let (from, to) = (five_bar.stowed_crank_rad, five_bar.deployed_crank_rad);
+    c.bench_function("five_bar_sweep_1000", |b| {
+        b.iter(|| {
+            let mut secondary_rate_sum = 0.0;
+            for i in 0..1000 {
+                let alpha = from + (to - from) * i as f64 / 999.0;
+                let pose = five_bar.pose(black_box(alpha)).expect("poses");
+                secondary_rate_sum += pose.secondary_deflection.d1;
+            }
+            secondary_rate_sum
+        })
+    });
+}
+
+criterion_group!(benches, pose_and_sweep, five_bar_sweep);
 criterion_main!(benches);

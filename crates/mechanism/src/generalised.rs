@@ -18,6 +18,8 @@
 
 use serde::Serialize;
 
+use crate::error::Result;
+
 use crate::jet::{AngleJet, PointJet};
 
 /// A body with mass, where it stands at one input (with the derivatives of its centre and
@@ -113,4 +115,14 @@ pub fn generalise(bodies: &[InertialBody], surfaces: &[AeroSurface], gravity_mps
             + surface.pitching_moment_nm * delta.d2;
     }
     out
+}
+
+/// A one-input mechanism with its loads, as the equation of motion sees it: the dynamics
+/// stage is written against this, never against a kind.
+pub trait OneInputDynamics: Send + Sync {
+    /// The input with the flap stowed and fully deployed (rad for a crank).
+    fn input_travel(&self) -> (f64, f64);
+
+    /// J, Q and their slopes at `input`.
+    fn generalised_at(&self, input: f64) -> Result<Generalised>;
 }

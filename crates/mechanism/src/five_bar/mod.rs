@@ -32,7 +32,7 @@ use nalgebra::Vector2;
 use serde::Serialize;
 
 use crate::error::{Error, Result};
-use crate::generalised::{AeroSurface, InertialBody};
+use crate::generalised::{generalise, AeroSurface, Generalised, InertialBody, OneInputDynamics};
 use crate::jet::{dyad, AngleJet, PointJet};
 
 /// The link lengths and fixed points of the five-bar (m), named as in `001_...` section 2
@@ -402,5 +402,36 @@ impl FiveBarDoubleFlap {
             },
         ];
         (bodies, surfaces)
+    }
+}
+
+/// The five-bar with its flaps' mass and aerodynamic loads: a one-input system for the
+/// equation of motion.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LoadedFiveBar {
+    /// The mechanism.
+    pub mechanism: FiveBarDoubleFlap,
+    /// Masses, inertias and aerodynamic data of the two flaps.
+    pub loads: DoubleFlapLoads,
+}
+
+impl LoadedFiveBar {
+    /// The `001_...` case study with its section 4 loads.
+    pub fn polimi_case_study() -> Result<Self> {
+        let mechanism = FiveBarDoubleFlap::polimi_case_study()?;
+        let loads = DoubleFlapLoads::polimi_case_study(&mechanism.dimensions);
+        Ok(Self { mechanism, loads })
+    }
+}
+
+impl OneInputDynamics for LoadedFiveBar {
+    fn input_travel(&self) -> (f64, f64) {
+        (self.mechanism.stowed_crank_rad, self.mechanism.deployed_crank_rad)
+    }
+
+    fn generalised_at(&self, input: f64) -> Result<Generalised> {
+        let pose = self.mechanism.pose(input)?;
+        let (bodies, surfaces) = self.mechanism.inertial_model(&pose, &self.loads);
+        Ok(generalise(&bodies, &surfaces, self.loads.gravity_mps2))
     }
 }

@@ -229,3 +229,38 @@ fn parameters_out_of_range_are_named() {
     .expect_err("NaN volts");
     assert!(error.to_string().contains("supply.volts"), "{error}");
 }
+
+#[test]
+fn agrees_with_an_independent_recomputation() {
+    // data/validation/001-five-bar-independent.md: scipy's Radau and BDF at rtol 1e-10 on
+    // the same equations, written from the document without this code.
+    let system = five_bar();
+    let supply = SupplyVoltage {
+        volts: 343.1,
+        rise_time_s: 0.05,
+    };
+    let deployment = integrate(
+        &system,
+        &Drive::polimi_case_study(1e-3),
+        &supply,
+        &Integration {
+            relative_tolerance: 1e-9,
+            absolute_tolerance: 1e-11,
+            ..Integration::default()
+        },
+    )
+    .expect("integrates");
+    let time = deployment.deployment_time_s.expect("deploys");
+    println!("breakaway {} s, deployed {} s", deployment.breakaway_time_s, time);
+    assert!(
+        (deployment.breakaway_time_s - 0.0212375).abs() < 1e-7,
+        "{}",
+        deployment.breakaway_time_s
+    );
+    assert!((time - 0.315421).abs() < 2e-6, "{time}");
+    let end = deployment.samples.last().expect("samples");
+    assert!(
+        (end.rate - 1.92862).abs() < 1e-4 && (end.current_a - 151.966).abs() < 2e-3,
+        "{end:?}"
+    );
+}

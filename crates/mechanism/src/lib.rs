@@ -113,7 +113,7 @@ pub use angle::{four_times_triangle_area, guarded_acos, ACOS_ROUNDING_TOLERANCE,
 pub use deployment::{sweep_deployment, Deployment, DeploymentSample, DeploymentStop, FlapGapOverlap};
 pub use dropped_hinge::{DroppedHinge, DroppedHingeActuator, DroppedHingeSpec};
 pub use error::{Error, Result, SynthesisDefect};
-pub use five_bar::{DoubleFlapLoads, FiveBarDimensions, FiveBarDoubleFlap, FiveBarPose, LoadedFiveBar};
+pub use five_bar::{DoubleFlapLoads, FiveBarDimensions, FiveBarDoubleFlap, FiveBarKind, FiveBarPose, LoadedFiveBar};
 pub use flap_load::{FlapMass, LinkHardware};
 pub use four_bar::{FourBar, FourBarSpec};
 pub use generalised::{generalise, AeroSurface, Generalised, InertialBody, OneInputDynamics};

@@ -270,3 +270,70 @@ fn matches_the_independent_recomputation() {
         close(g.torque_at_constant_rate(1.0), torque, "T_m");
     }
 }
+
+fn kind() -> flapwright_mechanism::FiveBarKind {
+    let actuator = flapwright_mechanism::seam::Actuator::Rotary {
+        gear_ratio: 1.0,
+        efficiency: 1.0,
+        nominal_speed_radps: 1.0,
+    };
+    flapwright_mechanism::FiveBarKind::new(
+        flapwright_mechanism::LoadedFiveBar::polimi_case_study().expect("assembles"),
+        actuator,
+    )
+    .expect("the kind builds")
+}
+
+#[test]
+fn behind_the_seam_bodies_carry_their_stowed_points_and_bounds_hold() {
+    use flapwright_mechanism::FlapMechanism;
+    let kind = kind();
+    crate::seam::joints_name_existing(&kind);
+    crate::seam::speed_bounds_hold(&kind, 0.25); // the thesis track's tightness: a link's reference speed and turn rate peak apart
+    let stowed = kind.pose(kind.input_range().stowed).expect("stowed");
+    for body in &stowed.bodies {
+        assert!((body.translation.vector.norm() + body.rotation.angle().abs()) < 1e-12);
+    }
+    assert!(stowed.deflection_rad.abs() < 1e-15);
+    // Every body's displacement carries each stowed named point it holds to where it stands.
+    let stowed_points = stowed.points.clone();
+    for input in kind.input_range().samples(7) {
+        let pose = kind.pose(input).expect("poses");
+        for (b, body) in kind.bodies().iter().enumerate() {
+            for solid in &body.solids {
+                for p in solid.shape.skeleton() {
+                    let name = stowed_points
+                        .iter()
+                        .find(|n| (n.position - p).norm() < 1e-12)
+                        .expect("solids end at named points")
+                        .name;
+                    let now = pose.point(name).expect("named");
+                    assert!((pose.bodies[b] * p - now).norm() < 1e-12, "{} {name}", body.name);
+                }
+            }
+        }
+    }
+    // Deflection and input invert each other.
+    let half = 0.5 * kind.deflection_range_rad();
+    let input = kind.input_at_deflection(half).expect("inverts");
+    assert!((kind.deflection_at_input(input).expect("deflection") - half).abs() < 1e-12);
+}
+
+#[test]
+fn behind_the_seam_statics_agree_with_virtual_work() {
+    use flapwright_mechanism::{FlapMechanism, LoadCase};
+    let kind = kind();
+    for load in [LoadCase::thesis_cruise(), LoadCase::thesis_landing()] {
+        for input in kind.input_range().samples(25) {
+            let statics = kind.kinetostatics(input, &load).expect("statics");
+            let (a, b) = (statics.actuator_load, statics.actuator_load_virtual_work);
+            assert!(
+                (a - b).abs() <= 1e-9 * a.abs().max(b.abs()),
+                "{} at {} deg: equilibrium {a} N m, virtual work {b} N m",
+                load.name,
+                input.to_degrees()
+            );
+            assert!(statics.health.closure_residual_m < 1e-10);
+        }
+    }
+}

@@ -28,12 +28,15 @@
 //! `data/validation/001-five-bar-defects.md`; tests compare with finite differences and
 //! with the corrected printed forms).
 
+mod seam;
+
 use nalgebra::Vector2;
 use serde::Serialize;
 
 use crate::error::{Error, Result};
 use crate::generalised::{generalise, AeroSurface, Generalised, InertialBody, OneInputDynamics};
 use crate::jet::{dyad, AngleJet, PointJet};
+pub use seam::FiveBarKind;
 
 /// The link lengths and fixed points of the five-bar (m), named as in `001_...` section 2
 /// (its Matlab listing, section 4, calls g `q`).

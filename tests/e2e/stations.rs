@@ -298,3 +298,31 @@ fn a_torque_tube_takes_points_or_a_chord_fraction_not_both() {
     );
     crate::bad_input::assert_rejected(&scene, &["structure.torque_tube", "either as path_m"]);
 }
+
+/// `data/scenes/double-slotted-flap.toml`, the five-bar of `001_...`: designed end to end as
+/// a 2D station; the report's kind, crank travel, deflections and the statics' cross-check
+/// at every sample, and no NaN (the mechanism crate checks the figures themselves).
+#[test]
+fn double_slotted_flap_scene_designs_the_five_bar() {
+    let (dir, report) = design("data/scenes/double-slotted-flap.toml");
+    let mechanism = &report["stations"][0]["mechanism"];
+    assert_eq!(mechanism["kind"], "five-bar");
+    assert_eq!(mechanism["input"]["quantity"], "angle");
+    let stowed = mechanism["input"]["stowed"].as_f64().unwrap().to_degrees();
+    let deployed = mechanism["input"]["deployed"].as_f64().unwrap().to_degrees();
+    assert!((stowed - 275.0).abs() < 1e-9 && (deployed - 320.0).abs() < 1e-9);
+    let details = &mechanism["details"];
+    assert!((details["main_deflection_deployed_deg"].as_f64().unwrap() - 32.4268).abs() < 1e-3);
+    let samples = mechanism["load_cases"][0]["samples"].as_array().unwrap();
+    assert!(samples.len() > 10);
+    for sample in samples {
+        let relative = sample["actuator_load_cross_check_relative"].as_f64().unwrap();
+        assert!(relative < 1e-9, "{sample}");
+    }
+    assert!(dir.path().join("out/station-rib.svg").exists());
+    // Without a wing the 3D sections are null by design; the mechanism has no null (NaN).
+    let mut nulls = Vec::new();
+    null_paths(mechanism, String::new(), &mut nulls);
+    nulls.retain(|p| !p.ends_with(".stopped"));
+    assert!(nulls.is_empty(), "no NaN escaped into the mechanism's report: {nulls:?}");
+}

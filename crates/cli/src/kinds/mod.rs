@@ -6,6 +6,7 @@
 
 mod circular_arc_track;
 mod dropped_hinge;
+mod five_bar;
 mod four_bar;
 mod hooked_track;
 mod link_track;
@@ -17,6 +18,7 @@ use serde::Deserialize;
 
 pub use circular_arc_track::CircularArcTrackScene;
 pub use dropped_hinge::DroppedHingeScene;
+pub use five_bar::FiveBarScene;
 pub use four_bar::FourBarScene;
 pub use hooked_track::HookedTrackScene;
 pub use link_track::LinkTrackScene;
@@ -317,6 +319,8 @@ pub enum MechanismScene {
     /// Hooked-track with a screw jack along its rail, from the stowed and landing settings
     /// (`003_...`).
     HookedTrack(HookedTrackScene),
+    /// Five-bar double-slotted flap driven by a crank, as given (`001_...`).
+    FiveBar(FiveBarScene),
 }
 
 impl MechanismScene {
@@ -327,6 +331,7 @@ impl MechanismScene {
         "four-bar",
         "link-track",
         "hooked-track",
+        "five-bar",
     ];
 
     /// The kind behind the variant: everything else reaches the kind through it.
@@ -337,6 +342,7 @@ impl MechanismScene {
             Self::FourBar(m) => m,
             Self::LinkTrack(m) => m,
             Self::HookedTrack(m) => m,
+            Self::FiveBar(m) => m,
         }
     }
 }
@@ -369,6 +375,7 @@ impl<'de> Deserialize<'de> for MechanismScene {
             "four-bar" => variant::<_, D::Error>(table).map(Self::FourBar),
             "link-track" => variant::<_, D::Error>(table).map(Self::LinkTrack),
             "hooked-track" => variant::<_, D::Error>(table).map(Self::HookedTrack),
+            "five-bar" => variant::<_, D::Error>(table).map(Self::FiveBar),
             other => Err(D::Error::custom(crate::scene::parse::nested_error_at(
                 "kind",
                 &format!(

@@ -24,6 +24,7 @@ use crate::mesh::TriMesh;
 
 mod mesh_pair;
 mod penetration;
+mod segment_triangle;
 
 pub use penetration::SAMPLE_BUDGET as PENETRATION_SAMPLE_BUDGET;
 
@@ -298,6 +299,24 @@ pub fn compute_distance(
         }
         _ => None,
     };
+    // Two capsules: their segments' distance in closed form (`segment_triangle`), less the
+    // radii, where parry would iterate GJK on the round support maps.
+    let capsules = a.shape.as_capsule().zip(b.shape.as_capsule());
+    let searched = searched.or_else(|| {
+        let (ca, cb) = capsules?;
+        let pair = segment_triangle::segment_segment(
+            pa.transform_point(ca.segment.a),
+            pa.transform_point(ca.segment.b),
+            pb.transform_point(cb.segment.a),
+            pb.transform_point(cb.segment.b),
+        );
+        let (distance, point_a, point_b) = pair.swept(ca.radius, cb.radius)?;
+        Some(mesh_pair::MeshPairProximity {
+            distance,
+            point_a,
+            point_b,
+        })
+    });
     if let Some(closest) = searched {
         if !closest.distance.is_finite() || closest.distance == f64::MAX {
             return Err(Error::NotFinite {
@@ -318,9 +337,15 @@ pub fn compute_distance(
             b.shape.shape_type()
         ),
     };
-    let distance = query::distance(&pa, &*a.shape, &pb, &*b.shape)
-        .map_err(|_| unsupported("distance"))?
-        .distance;
+    // Two capsules that touch or overlap (clear ones were answered above): the contact
+    // query says where.
+    let distance = if capsules.is_some() {
+        0.0
+    } else {
+        query::distance(&pa, &*a.shape, &pb, &*b.shape)
+            .map_err(|_| unsupported("distance"))?
+            .distance
+    };
     if !distance.is_finite() {
         return Err(Error::NotFinite {
             what: "collision distance (m)",

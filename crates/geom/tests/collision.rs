@@ -229,11 +229,11 @@ fn convex_against_mesh_distance_equals_parry() {
     );
     let (capsule_end, radius) = (Point3::new(0.15, 0.05, -0.02), 0.012);
     let capsule = CollisionShape::capsule(Point3::origin(), capsule_end, radius).unwrap();
-    let parry_capsule = parry3d_f64::shape::Capsule::new(
+    let parry_segment = parry3d_f64::shape::Segment::new(
         glamx::DVec3::ZERO,
         glamx::DVec3::new(capsule_end.x, capsule_end.y, capsule_end.z),
-        radius,
     );
+    let parry_capsule = parry3d_f64::shape::Capsule::new(parry_segment.a, parry_segment.b, radius);
     let ball = CollisionShape::ball(0.02).unwrap();
     let parry_ball = parry3d_f64::shape::Ball::new(0.02);
     let (mut clear, mut touching) = (0, 0);
@@ -252,17 +252,33 @@ fn convex_against_mesh_distance_equals_parry() {
                 );
                 let parry_pose = parry3d_f64::math::Pose::from(pose);
                 let identity = parry3d_f64::math::Pose::IDENTITY;
+                // The capsule's reference is its segment's distance less the radius: parry's
+                // capsule query iterates GJK on the round support map and stops when its
+                // bounds agree to 4.7e-8 of the distance, reading up to that much long (never
+                // short: its points are points of the two shapes); the segment is a polytope,
+                // on which GJK ends on the exact minimum.
+                let segment_reference =
+                    parry3d_f64::query::distance(&parry_pose, &parry_segment, &identity, &parry_flap)
+                        .unwrap()
+                        .distance;
+                let capsule_gjk = parry3d_f64::query::distance(&parry_pose, &parry_capsule, &identity, &parry_flap)
+                    .unwrap()
+                    .distance;
+                assert!(
+                    capsule_gjk >= (segment_reference - radius).max(0.0) - 1e-12
+                        && capsule_gjk <= (segment_reference - radius).max(0.0) * (1.0 + 1e-7) + 1e-12,
+                    "{centre}: parry's capsule {capsule_gjk}, its segment less the radius {}",
+                    segment_reference - radius
+                );
                 for (shape, reference) in [
-                    (
-                        &capsule,
-                        parry3d_f64::query::distance(&parry_pose, &parry_capsule, &identity, &parry_flap),
-                    ),
+                    (&capsule, Ok((segment_reference - radius).max(0.0))),
                     (
                         &ball,
-                        parry3d_f64::query::distance(&parry_pose, &parry_ball, &identity, &parry_flap),
+                        parry3d_f64::query::distance(&parry_pose, &parry_ball, &identity, &parry_flap)
+                            .map(|d| d.distance),
                     ),
                 ] {
-                    let reference = reference.unwrap().distance;
+                    let reference = reference.unwrap();
                     let ours = compute_distance(shape, &pose, &flap, &Isometry3::identity()).unwrap();
                     let swapped = compute_distance(&flap, &Isometry3::identity(), shape, &pose).unwrap();
                     assert!(

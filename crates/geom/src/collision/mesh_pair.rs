@@ -16,6 +16,8 @@ use parry3d_f64::partitioning::{BvhNode, TraversalAction};
 use parry3d_f64::query::{self, ClosestPoints};
 use parry3d_f64::shape::{Capsule, Shape, TriMesh, Triangle};
 
+use super::segment_triangle::{plane_gap, segment_triangle, triangle_triangle};
+
 /// The closest pair of triangles and their closest points, in the frame of the caller's
 /// poses.
 pub(super) struct MeshPairProximity {
@@ -35,10 +37,8 @@ fn box_distance(mins_a: DVec3, maxs_a: DVec3, mins_b: DVec3, maxs_b: DVec3) -> f
     gap.length()
 }
 
-fn triangle_distance(a: &Triangle, b: &Triangle) -> f64 {
-    // Triangle against triangle is a support-map pair, which the default dispatcher always
-    // supports; the fallback only guards against a future dispatcher change.
-    query::distance(&Pose::IDENTITY, a, &Pose::IDENTITY, b).map_or(f64::MAX, |d| d.distance)
+fn corners(triangle: &Triangle) -> [DVec3; 3] {
+    [triangle.a, triangle.b, triangle.c]
 }
 
 /// Smallest distance between mesh `a` at `pose_a` and mesh `b` at `pose_b`, with the
@@ -84,7 +84,14 @@ pub(super) fn mesh_pair_distance(a: &TriMesh, pose_a: &Pose, b: &TriMesh, pose_b
         let found = bvh.find_best(
             *best,
             |node, _| box_distance(mins, maxs, node.mins(), node.maxs()),
-            |leaf, _| Some(triangle_distance(&tri, &searched.triangle(leaf))),
+            |leaf, bound| {
+                // Either triangle's plane may already keep them farther apart than the
+                // best pair found: no need for their exact distance, which is in closed
+                // form (`segment_triangle`; parry's query runs GJK on two triangles).
+                let (near, far) = (corners(&tri), corners(&searched.triangle(leaf)));
+                (plane_gap(&near, &far) < bound && plane_gap(&far, &near) < bound)
+                    .then(|| triangle_triangle(&near, &far).distance())
+            },
         );
         if let Some((leaf, distance)) = found {
             *best = distance;
@@ -124,17 +131,17 @@ pub(super) fn mesh_pair_distance(a: &TriMesh, pose_a: &Pose, b: &TriMesh, pose_b
         };
     };
     let (tri_walked, tri_searched) = (walked_triangle(i), searched.triangle(leaf));
-    let margin = best * (1.0 + 1e-9) + 1e-12;
-    let (p_walked, p_searched) =
-        match query::closest_points(&Pose::IDENTITY, &tri_walked, &Pose::IDENTITY, &tri_searched, margin) {
-            Ok(ClosestPoints::WithinMargin(p, q)) => (p, q),
-            // Touching or crossing triangles: any point of the crossing will do; the
-            // contact query reports one on each.
-            _ => query::contact(&Pose::IDENTITY, &tri_walked, &Pose::IDENTITY, &tri_searched, 0.0)
-                .ok()
-                .flatten()
-                .map_or((tri_walked.center(), tri_walked.center()), |c| (c.point1, c.point2)),
-        };
+    let closest = triangle_triangle(&corners(&tri_walked), &corners(&tri_searched));
+    let (p_walked, p_searched) = if best > 0.0 {
+        (closest.on_first, closest.on_second)
+    } else {
+        // Touching or crossing triangles: any point of the crossing will do; the contact
+        // query reports one on each.
+        query::contact(&Pose::IDENTITY, &tri_walked, &Pose::IDENTITY, &tri_searched, 0.0)
+            .ok()
+            .flatten()
+            .map_or((tri_walked.center(), tri_walked.center()), |c| (c.point1, c.point2))
+    };
     let (p_walked, p_searched) = (
         searched_pose.transform_point(p_walked),
         searched_pose.transform_point(p_searched),
@@ -197,13 +204,30 @@ pub(super) fn convex_mesh_distance(
             .map(|(lo, hi)| box_distance(*lo, *hi, mins, maxs))
             .fold(f64::MAX, f64::min)
     };
+    // A capsule's distance to a triangle in closed form (`segment_triangle`): its segment
+    // in the mesh's frame, and its radius.
+    let capsule = convex.as_shape::<Capsule>().map(|c| {
+        (
+            mesh_from_convex.transform_point(c.segment.a),
+            mesh_from_convex.transform_point(c.segment.b),
+            c.radius,
+        )
+    });
     let found = mesh.bvh().find_best(
         f64::MAX,
         |node, _| lower_bound(node.mins(), node.maxs()),
-        |leaf, _| {
-            query::distance(&mesh_from_convex, convex, &Pose::IDENTITY, &mesh.triangle(leaf))
-                .ok()
-                .map(|d| d.distance)
+        |leaf, bound| {
+            let triangle = mesh.triangle(leaf);
+            match capsule {
+                Some((a, b, radius)) => {
+                    let corners = corners(&triangle);
+                    (plane_gap(&[a, b], &corners) - radius < bound)
+                        .then(|| (segment_triangle(a, b, &corners).distance() - radius).max(0.0))
+                }
+                None => query::distance(&mesh_from_convex, convex, &Pose::IDENTITY, &triangle)
+                    .ok()
+                    .map(|d| d.distance),
+            }
         },
     );
     let Some((leaf, best)) = found else {
@@ -214,13 +238,19 @@ pub(super) fn convex_mesh_distance(
         };
     };
     let triangle = mesh.triangle(leaf);
+    let capsule_points = capsule
+        .and_then(|(a, b, radius)| segment_triangle(a, b, &corners(&triangle)).swept(radius, 0.0))
+        .map(|(_, p, q)| (p, q));
     let margin = best * (1.0 + 1e-9) + 1e-12;
-    let (p, q) = match query::closest_points(&mesh_from_convex, convex, &Pose::IDENTITY, &triangle, margin) {
-        Ok(ClosestPoints::WithinMargin(p, q)) => (p, q),
-        _ => query::contact(&mesh_from_convex, convex, &Pose::IDENTITY, &triangle, 0.0)
-            .ok()
-            .flatten()
-            .map_or((triangle.center(), triangle.center()), |c| (c.point1, c.point2)),
+    let (p, q) = match capsule_points {
+        Some(points) => points,
+        None => match query::closest_points(&mesh_from_convex, convex, &Pose::IDENTITY, &triangle, margin) {
+            Ok(ClosestPoints::WithinMargin(p, q)) => (p, q),
+            _ => query::contact(&mesh_from_convex, convex, &Pose::IDENTITY, &triangle, 0.0)
+                .ok()
+                .flatten()
+                .map_or((triangle.center(), triangle.center()), |c| (c.point1, c.point2)),
+        },
     };
     MeshPairProximity {
         distance: best,

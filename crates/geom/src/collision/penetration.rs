@@ -49,6 +49,74 @@ fn grid(tri: &[DVec3; 3], h: f64) -> (DVec3, DVec3, DVec3, usize, usize) {
     (corner, e1, e2, steps(e1), steps(e2))
 }
 
+/// Grid steps along each edge of a piece of a triangle's grid with its own depth bound: a
+/// piece holds up to 8 x 8 samples for one point query of its centre.
+const PIECE_STEPS: usize = 8;
+
+/// The last column of row `i` of a triangle's grid with `n1` x `n2` steps (points with
+/// u + v <= 1, u = i / n1, v = j / n2).
+fn row_length(i: usize, n1: usize, n2: usize) -> usize {
+    ((1.0 - i as f64 / n1 as f64) * n2 as f64 + 1e-9).floor() as usize
+}
+
+/// Rows and columns (inclusive ranges) of a triangle's sampling grid: corner + e1 i / n1 +
+/// e2 j / n2 for the (i, j) in range with u + v <= 1.
+struct Piece {
+    corner: DVec3,
+    e1: DVec3,
+    e2: DVec3,
+    n1: usize,
+    n2: usize,
+    rows: (usize, usize),
+    columns: (usize, usize),
+}
+
+impl Piece {
+    /// Rows and columns of a triangle's grid (`grid`: corner, e1, e2, n1, n2).
+    fn of(
+        (corner, e1, e2, n1, n2): (DVec3, DVec3, DVec3, usize, usize),
+        rows: (usize, usize),
+        columns: (usize, usize),
+    ) -> Self {
+        Piece {
+            corner,
+            e1,
+            e2,
+            n1,
+            n2,
+            rows,
+            columns,
+        }
+    }
+
+    /// The centre of the parallelogram the piece's rows and columns span, and the largest
+    /// distance from it to the parallelogram's corners (its points are no farther).
+    fn centre_and_reach(&self) -> (DVec3, f64) {
+        let at = |i: usize, j: usize| {
+            self.corner + self.e1 * (i as f64 / self.n1 as f64) + self.e2 * (j as f64 / self.n2 as f64)
+        };
+        let corners = [
+            at(self.rows.0, self.columns.0),
+            at(self.rows.1, self.columns.0),
+            at(self.rows.0, self.columns.1),
+            at(self.rows.1, self.columns.1),
+        ];
+        let centre = (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
+        let reach = corners.iter().map(|c| (*c - centre).length()).fold(0.0, f64::max);
+        (centre, reach)
+    }
+}
+
+/// A bound that is NaN (a point with no nearest surface point, such as a ball's centre)
+/// bounds nothing.
+fn finite_or_infinite(bound: f64) -> f64 {
+    if bound.is_nan() {
+        f64::INFINITY
+    } else {
+        bound
+    }
+}
+
 /// Upper bound on the points of a triangle's grid: sum over i of ((1 - i/n1) n2 + 1).
 fn grid_points(n1: usize, n2: usize) -> usize {
     (n1 + 1) * (n2 + 2) / 2
@@ -101,33 +169,62 @@ pub(super) fn deepest_inside(
     // its samples move onto the true surface by less than the triangle's size). Triangles
     // are sampled deepest bound first and skipped once their bound cannot beat the deepest
     // sample: the same deepest sample, without sampling the shallow part of the overlap.
+    // A triangle with more than `PIECE_STEPS` grid steps along an edge is cut into pieces
+    // of its grid, each with its own bound (`Piece`): a primitive's tessellation has strips
+    // as long as a capsule, whose one bound would reach the whole length.
     let reach_factor = if exact_surface.is_some() { 2.0 } else { 1.0 };
-    let mut bounded: Vec<(f64, &[DVec3; 3])> = candidates
-        .into_iter()
-        .map(|tri| {
+    let depth_at = |point: DVec3| {
+        let projection = host.project_point(host_pose, point, false);
+        let distance = (projection.point - point).length();
+        if projection.is_inside {
+            distance
+        } else {
+            -distance
+        }
+    };
+    let mut bounded: Vec<(f64, Piece)> = Vec::new();
+    for tri in candidates {
+        let tri_grid = grid(tri, h);
+        let (_, _, _, n1, n2) = tri_grid;
+        if n1 < PIECE_STEPS && n2 < PIECE_STEPS {
             let centroid = (tri[0] + tri[1] + tri[2]) / 3.0;
             let reach = tri.iter().map(|v| (*v - centroid).length()).fold(0.0, f64::max);
-            let projection = host.project_point(host_pose, centroid, false);
-            let distance = (projection.point - centroid).length();
-            let depth = if projection.is_inside { distance } else { -distance };
-            // A point with no nearest surface point (a ball's centre) bounds nothing.
-            let bound = depth + reach_factor * reach;
-            (if bound.is_nan() { f64::INFINITY } else { bound }, tri)
-        })
-        .collect();
+            let piece = Piece::of(tri_grid, (0, n1), (0, n2));
+            bounded.push((finite_or_infinite(depth_at(centroid) + reach_factor * reach), piece));
+            continue;
+        }
+        for first_row in (0..=n1).step_by(PIECE_STEPS) {
+            // The longest row of the piece is its first (points with u + v <= 1).
+            let columns = row_length(first_row, n1, n2);
+            for first_column in (0..=columns).step_by(PIECE_STEPS) {
+                let piece = Piece::of(
+                    tri_grid,
+                    (first_row, (first_row + PIECE_STEPS - 1).min(n1)),
+                    (first_column, (first_column + PIECE_STEPS - 1).min(n2)),
+                );
+                // The piece's samples lie in the parallelogram its row and column ranges
+                // span; after projection onto a primitive's surface, a sample q moves by
+                // its distance to that surface, at most the centre's plus |q - centre|.
+                let (centre, reach) = piece.centre_and_reach();
+                let moved = exact_surface.map_or(0.0, |(shape, pose)| {
+                    (shape.project_point(pose, centre, false).point - centre).length()
+                });
+                let bound = depth_at(centre) + moved + reach_factor * reach;
+                bounded.push((finite_or_infinite(bound), piece));
+            }
+        }
+    }
     bounded.sort_by(|a, b| b.0.total_cmp(&a.0));
     let mut deepest: Option<Deepest> = None;
-    for (bound, tri) in bounded {
+    for (bound, piece) in bounded {
         if bound < 0.0 || deepest.is_some_and(|d| bound <= d.depth) {
             break;
         }
-        let (corner, e1, e2, n1, n2) = grid(tri, h);
-        for i in 0..=n1 {
-            let u = i as f64 / n1 as f64;
-            // Points with u + v <= 1 lie in the triangle.
-            let j_max = ((1.0 - u) * n2 as f64 + 1e-9).floor() as usize;
-            for j in 0..=j_max {
-                let mut point = corner + e1 * u + e2 * (j as f64 / n2 as f64);
+        for i in piece.rows.0..=piece.rows.1 {
+            let u = i as f64 / piece.n1 as f64;
+            let last_column = row_length(i, piece.n1, piece.n2).min(piece.columns.1);
+            for j in piece.columns.0..=last_column {
+                let mut point = piece.corner + piece.e1 * u + piece.e2 * (j as f64 / piece.n2 as f64);
                 if let Some((shape, pose)) = exact_surface {
                     point = shape.project_point(pose, point, false).point;
                 }
@@ -160,7 +257,85 @@ pub(super) fn deepest_inside(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use parry3d_f64::shape::Ball;
+    use parry3d_f64::shape::{Ball, Capsule, Cuboid};
+
+    /// The deepest of every grid sample, none skipped: what the bounds must not change.
+    fn deepest_of_every_sample(
+        intruder: &[[DVec3; 3]],
+        exact_surface: Option<(&dyn Shape, &Pose)>,
+        host: &dyn Shape,
+        host_pose: &Pose,
+        h: f64,
+    ) -> f64 {
+        let mut deepest = f64::MIN;
+        for tri in intruder {
+            let (corner, e1, e2, n1, n2) = grid(tri, h);
+            for i in 0..=n1 {
+                for j in 0..=row_length(i, n1, n2) {
+                    let mut point = corner + e1 * (i as f64 / n1 as f64) + e2 * (j as f64 / n2 as f64);
+                    if let Some((shape, pose)) = exact_surface {
+                        point = shape.project_point(pose, point, false).point;
+                    }
+                    let projection = host.project_point(host_pose, point, false);
+                    if projection.is_inside {
+                        deepest = deepest.max((projection.point - point).length());
+                    }
+                }
+            }
+        }
+        deepest
+    }
+
+    #[test]
+    fn pieces_of_long_triangles_keep_the_deepest_sample() {
+        // A long capsule (its tessellation's strips 0.4 m long, 50 pieces at 1 mm) through
+        // a turned box, and one large triangle through a ball: the bounds of the pieces skip
+        // most samples, and the deepest is the deepest of them all.
+        let capsule = Capsule::new(DVec3::new(-0.2, 0.0, 0.0), DVec3::new(0.2, 0.0, 0.0), 0.012);
+        let (vertices, indices) = capsule.to_trimesh(32, 16);
+        let strips: Vec<[DVec3; 3]> = indices.iter().map(|t| t.map(|i| vertices[i as usize])).collect();
+        let capsule_pose = Pose::rotation(DVec3::new(0.1, 0.2, 0.3));
+        let strips_ac: Vec<[DVec3; 3]> = strips
+            .iter()
+            .map(|t| t.map(|v| capsule_pose.transform_point(v)))
+            .collect();
+        let cuboid = Cuboid::new(DVec3::new(0.03, 0.05, 0.05));
+        let cuboid_pose = Pose::from_parts(DVec3::new(0.05, 0.008, 0.0), glamx::DQuat::from_rotation_z(0.4));
+        let h = 1e-3;
+        let longest = strips_ac
+            .iter()
+            .map(|t| {
+                let (_, _, _, n1, n2) = grid(t, h);
+                n1.max(n2)
+            })
+            .max();
+        assert!(longest > Some(4 * PIECE_STEPS), "strips of {longest:?} steps");
+        let found = deepest_inside(
+            &strips_ac,
+            Some((&capsule, &capsule_pose)),
+            &cuboid,
+            &cuboid_pose,
+            &cuboid.compute_aabb(&cuboid_pose),
+            h,
+        )
+        .expect("the capsule crosses the box");
+        let every = deepest_of_every_sample(&strips_ac, Some((&capsule, &capsule_pose)), &cuboid, &cuboid_pose, h);
+        assert_eq!(found.depth, every);
+        assert!(found.depth > 0.005, "{found:?}");
+
+        let triangle = [[
+            DVec3::new(-1.0, -0.5, 0.1),
+            DVec3::new(1.0, -0.4, 0.0),
+            DVec3::new(0.1, 0.9, -0.1),
+        ]];
+        let ball = Ball::new(0.3);
+        let ball_pose = Pose::translation(0.2, 0.1, 0.05);
+        let found = deepest_inside(&triangle, None, &ball, &ball_pose, &ball.compute_aabb(&ball_pose), 0.01)
+            .expect("the triangle crosses the ball");
+        let every = deepest_of_every_sample(&triangle, None, &ball, &ball_pose, 0.01);
+        assert_eq!(found.depth, every);
+        assert!(found.depth > 0.2, "{found:?}");
+    }
 
     #[test]
     fn more_triangles_than_the_budget_allows_are_sampled_at_their_corners() {

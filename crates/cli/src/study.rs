@@ -15,6 +15,7 @@ use std::path::Path;
 
 use anyhow::{anyhow, Context, Result};
 use flapwright_drawing::{Plot, Series};
+use rayon::prelude::*;
 use serde::Serialize;
 use serde_json::Value;
 
@@ -200,11 +201,24 @@ pub fn run(
     stations: &[String],
     out: &StagedDir,
 ) -> Result<Study> {
+    // The kinds are independent designs into their own folders: in parallel (rayon), in
+    // the order asked. Each design also runs its pairs in parallel; running the kinds side by
+    // side lets one kind's serial stages (synthesis searches, a pair that takes long) overlap
+    // the others' work.
+    let variants = kinds
+        .iter()
+        .map(|kind| Ok((kind, variant_text(text, kind, stations)?)))
+        .collect::<Result<Vec<_>>>()?;
+    let designed: Vec<_> = variants
+        .par_iter()
+        .map(|(kind, variant)| {
+            let label = format!("{label} as {kind}");
+            (*kind, design_kind(variant, scene_dir, &label, kind, out))
+        })
+        .collect();
     let mut outcomes = Vec::new();
     let mut scene_name = String::new();
-    for kind in kinds {
-        let variant = variant_text(text, kind, stations)?;
-        let outcome = design_kind(&variant, scene_dir, &format!("{label} as {kind}"), kind, out);
+    for (kind, outcome) in designed {
         match outcome {
             Ok((name, figures)) => {
                 scene_name = name;

@@ -188,6 +188,19 @@ pub fn variant_text(text: &str, kind: &str, stations: &[String]) -> Result<Strin
         outputs.insert(key.into(), toml::Value::Boolean(on));
     }
     table.insert("outputs".into(), toml::Value::Table(outputs));
+    // The study reads only each pair's verdict, so its sweeps stop refining a pair once the
+    // verdict is certain instead of locating its minimum to the tolerance: the same
+    // certified pass or fail (the pair's lower bound still meets the requirement, or a
+    // sample already misses it) for a fraction of the distance evaluations. The kinds'
+    // reports say so (`interference.stopped_at_verdict`), and their pairs'
+    // `min_clearance_m` are the smallest samples, `residual_bound_m` how much lower the
+    // true minimum may be.
+    let interference = table
+        .entry("interference")
+        .or_insert_with(|| toml::Value::Table(toml::Table::new()));
+    if let Some(interference) = interference.as_table_mut() {
+        interference.insert("stop_at_verdict".into(), toml::Value::Boolean(true));
+    }
     toml::to_string(&table).context("writing the study's scene")
 }
 
@@ -550,6 +563,7 @@ flap_mass_kg = 12.0
         let flaps = table["flap"].as_array().unwrap();
         assert_eq!(flaps.len(), 1, "the flap without a studied station goes");
         assert_eq!(table["outputs"]["urdf"].as_bool(), Some(false));
+        assert_eq!(table["interference"]["stop_at_verdict"].as_bool(), Some(true));
         assert!(variant_text(SCENE, "four-bar", &["none".into()]).is_err());
     }
 

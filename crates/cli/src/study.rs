@@ -15,6 +15,7 @@ use std::path::Path;
 
 use anyhow::{anyhow, Context, Result};
 use flapwright_drawing::{Plot, Series};
+use rayon::prelude::*;
 use serde::Serialize;
 use serde_json::Value;
 
@@ -187,6 +188,19 @@ pub fn variant_text(text: &str, kind: &str, stations: &[String]) -> Result<Strin
         outputs.insert(key.into(), toml::Value::Boolean(on));
     }
     table.insert("outputs".into(), toml::Value::Table(outputs));
+    // The study reads only each pair's verdict, so its sweeps stop refining a pair once the
+    // verdict is certain instead of locating its minimum to the tolerance: the same
+    // certified pass or fail (the pair's lower bound still meets the requirement, or a
+    // sample already misses it) for a fraction of the distance evaluations. The kinds'
+    // reports say so (`interference.stopped_at_verdict`), and their pairs'
+    // `min_clearance_m` are the smallest samples, `residual_bound_m` how much lower the
+    // true minimum may be.
+    let interference = table
+        .entry("interference")
+        .or_insert_with(|| toml::Value::Table(toml::Table::new()));
+    if let Some(interference) = interference.as_table_mut() {
+        interference.insert("stop_at_verdict".into(), toml::Value::Boolean(true));
+    }
     toml::to_string(&table).context("writing the study's scene")
 }
 
@@ -200,11 +214,24 @@ pub fn run(
     stations: &[String],
     out: &StagedDir,
 ) -> Result<Study> {
+    // The kinds are independent designs into their own folders: in parallel (rayon), in
+    // the order asked. Each design also runs its pairs in parallel; running the kinds side by
+    // side lets one kind's serial stages (synthesis searches, a pair that takes long) overlap
+    // the others' work.
+    let variants = kinds
+        .iter()
+        .map(|kind| Ok((kind, variant_text(text, kind, stations)?)))
+        .collect::<Result<Vec<_>>>()?;
+    let designed: Vec<_> = variants
+        .par_iter()
+        .map(|(kind, variant)| {
+            let label = format!("{label} as {kind}");
+            (*kind, design_kind(variant, scene_dir, &label, kind, out))
+        })
+        .collect();
     let mut outcomes = Vec::new();
     let mut scene_name = String::new();
-    for kind in kinds {
-        let variant = variant_text(text, kind, stations)?;
-        let outcome = design_kind(&variant, scene_dir, &format!("{label} as {kind}"), kind, out);
+    for (kind, outcome) in designed {
         match outcome {
             Ok((name, figures)) => {
                 scene_name = name;
@@ -536,6 +563,7 @@ flap_mass_kg = 12.0
         let flaps = table["flap"].as_array().unwrap();
         assert_eq!(flaps.len(), 1, "the flap without a studied station goes");
         assert_eq!(table["outputs"]["urdf"].as_bool(), Some(false));
+        assert_eq!(table["interference"]["stop_at_verdict"].as_bool(), Some(true));
         assert!(variant_text(SCENE, "four-bar", &["none".into()]).is_err());
     }
 

@@ -13,7 +13,7 @@ use crate::error::{Error, Result};
 use crate::opening::Opening;
 use crate::part::Part;
 use crate::station::{DeclaredContact, StationPart, StationParts};
-use crate::sweep::{sweep_contact, sweep_pair, JointSeparation, PairClearance, SweepSettings};
+use crate::sweep::{sweep_contact, sweep_pair_for_verdict, JointSeparation, PairClearance, SweepSettings};
 use flapwright_mechanism::seam::BodyRole;
 
 /// What is checked: fixed structure, the flap, and each station's mechanism parts.
@@ -135,6 +135,11 @@ pub struct InterferenceReport {
     pub unchecked_pairs: Vec<UncheckedPair>,
     /// Every pair and every joint passes.
     pub passes: bool,
+    /// Pairs were refined only until their verdict was certain
+    /// ([`SweepSettings::stop_at_verdict`]): their `min_clearance_m` is the smallest sample,
+    /// not the minimum located to the tolerance. Absent when false.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub stopped_at_verdict: bool,
 }
 
 /// A pair to sweep: the station label and the two parts.
@@ -281,8 +286,8 @@ pub fn check_assembly(
     let pairs = jobs
         .into_par_iter()
         .map(|(station, a, b)| {
-            let clearance = sweep_pair(a, b, 0.0, end, settings)?;
             let required_clearance_m = required.clearance_for(station.as_deref());
+            let clearance = sweep_pair_for_verdict(a, b, 0.0, end, settings, required_clearance_m)?;
             let passes = clearance.min_clearance_m - clearance.residual_bound_m >= required_clearance_m;
             Ok(PairResult {
                 station,
@@ -334,5 +339,6 @@ pub fn check_assembly(
         unchecked_pairs: unchecked,
         pairs,
         passes,
+        stopped_at_verdict: settings.stop_at_verdict,
     })
 }

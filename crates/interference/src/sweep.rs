@@ -37,6 +37,14 @@ pub struct SweepSettings {
     /// Stop refining after this many distance evaluations per pair; the residual bound
     /// then says how much is uncertain.
     pub max_evaluations: usize,
+    /// Stop refining a pair as soon as its verdict against its required clearance is
+    /// certain ([`sweep_pair_for_verdict`]): a sample closer than the requirement (it fails
+    /// however the minimum lies), or every interval's certified lower bound at or above it
+    /// (it passes). The verdict is the same certified one; `min_clearance_m` is then only
+    /// the smallest sample, with `residual_bound_m` saying how much lower the true minimum
+    /// may be, rather than the minimum located to the tolerance. For comparisons that read
+    /// only the verdict (the trade study of kinds).
+    pub stop_at_verdict: bool,
 }
 
 impl Default for SweepSettings {
@@ -46,6 +54,7 @@ impl Default for SweepSettings {
             tolerance_m: 1e-3,
             relative_tolerance: 1e-2,
             max_evaluations: 400,
+            stop_at_verdict: false,
         }
     }
 }
@@ -181,13 +190,17 @@ impl Clearances<'_> {
 }
 
 /// Parts that must stay apart: minimise the distance; among overlaps, the deepest first;
-/// once they overlap, refining cannot change the verdict.
-struct SmallestClearance<'p>(Clearances<'p>);
+/// once they overlap, refining cannot change the verdict. With `verdict_at` (the required
+/// clearance, m), refining also stops once the verdict against it is certain.
+struct SmallestClearance<'p> {
+    clearances: Clearances<'p>,
+    verdict_at: Option<f64>,
+}
 
 impl Objective for SmallestClearance<'_> {
     type Sample = Clearance;
     fn evaluate(&self, t: f64) -> Result<Clearance> {
-        self.0.at(t)
+        self.clearances.at(t)
     }
     fn value(&self, sample: &Clearance) -> f64 {
         sample.distance_m
@@ -196,7 +209,10 @@ impl Objective for SmallestClearance<'_> {
         sample.signed_m()
     }
     fn done(&self, best: &Clearance) -> bool {
-        best.distance_m <= 0.0
+        best.distance_m <= 0.0 || self.verdict_at.is_some_and(|required| best.distance_m < required)
+    }
+    fn bound_suffices(&self, lowest_bound: f64) -> bool {
+        self.verdict_at.is_some_and(|required| lowest_bound >= required)
     }
 }
 
@@ -296,14 +312,45 @@ impl Objective for CoreBallSeparation<'_> {
     }
 }
 
-/// Sweeps the clearance between `a` and `b` for deployment `t` in `[start, end]`.
+/// Sweeps the clearance between `a` and `b` for deployment `t` in `[start, end]`, locating
+/// its minimum to the tolerance.
 pub fn sweep_pair(a: &Part, b: &Part, start: f64, end: f64, settings: &SweepSettings) -> Result<PairClearance> {
+    sweep(a, b, start, end, settings, None)
+}
+
+/// As [`sweep_pair`] for a pair that needs `required_clearance_m`: with
+/// [`SweepSettings::stop_at_verdict`], refining stops once the pair certainly passes
+/// (`min_clearance_m - residual_bound_m >= required_clearance_m`) or certainly fails (a
+/// sample closer than that).
+pub fn sweep_pair_for_verdict(
+    a: &Part,
+    b: &Part,
+    start: f64,
+    end: f64,
+    settings: &SweepSettings,
+    required_clearance_m: f64,
+) -> Result<PairClearance> {
+    let verdict_at = settings.stop_at_verdict.then_some(required_clearance_m);
+    sweep(a, b, start, end, settings, verdict_at)
+}
+
+fn sweep(
+    a: &Part,
+    b: &Part,
+    start: f64,
+    end: f64,
+    settings: &SweepSettings,
+    verdict_at: Option<f64>,
+) -> Result<PairClearance> {
     checked_range(start, end, settings)?;
-    let objective = SmallestClearance(Clearances {
-        a,
-        b,
-        resolution_m: settings.tolerance_m,
-    });
+    let objective = SmallestClearance {
+        clearances: Clearances {
+            a,
+            b,
+            resolution_m: settings.tolerance_m,
+        },
+        verdict_at,
+    };
     let found = certified_minimum(start, end, pair_lipschitz(a, b, start, end)?, settings, &objective)?;
     let best = found.sample;
     Ok(PairClearance {

@@ -2,7 +2,7 @@
 
 use approx::assert_relative_eq;
 use flapwright_geom::collision::CollisionShape;
-use flapwright_interference::{sweep_pair, Part, SweepSettings};
+use flapwright_interference::{sweep_pair, sweep_pair_for_verdict, Part, SweepSettings};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 
 use crate::TurnAboutZ;
@@ -190,4 +190,42 @@ fn bad_settings_are_typed_errors() {
         ..SweepSettings::default()
     };
     assert!(sweep_pair(&rod, &plate, -1.0, 1.0, &bad_relative).is_err());
+}
+
+#[test]
+fn stopping_at_the_verdict_keeps_it_certified_and_spends_fewer_evaluations() {
+    // Ball r = 0.1 orbiting the unit circle, fixed ball r = 0.1 at (1.5, 0, 0): over
+    // t in [-1, 1] the closest approach is at t = 0, 1.5 - 1 - 0.2 = 0.3 m.
+    let (a, b) = orbiting_ball_and_fixed_ball(0.1, 1.5);
+    let expected = 0.3;
+    let located = SweepSettings {
+        tolerance_m: 1e-5,
+        relative_tolerance: 0.0,
+        max_evaluations: 100_000,
+        ..SweepSettings::default()
+    };
+    let at_verdict = SweepSettings {
+        stop_at_verdict: true,
+        ..located
+    };
+    let full = sweep_pair(&a, &b, -1.0, 1.0, &located).unwrap();
+    // Without the flag the required clearance changes nothing.
+    assert_eq!(sweep_pair_for_verdict(&a, &b, -1.0, 1.0, &located, 0.1).unwrap(), full);
+    for required in [0.1, 0.29] {
+        // Passes: the certified lower bound meets the requirement, sooner than the minimum
+        // is located to 10 um, and the true minimum still lies within the bound.
+        let pass = sweep_pair_for_verdict(&a, &b, -1.0, 1.0, &at_verdict, required).unwrap();
+        assert!(pass.min_clearance_m - pass.residual_bound_m >= required, "{pass:?}");
+        assert!(
+            pass.min_clearance_m - pass.residual_bound_m <= expected + 1e-12,
+            "{pass:?}"
+        );
+        assert!(pass.evaluations < full.evaluations, "{pass:?} vs {full:?}");
+    }
+    // Fails: a sample below the requirement decides it at once (the 9 initial samples
+    // include t = 0); the full sweep fails it too.
+    let fail = sweep_pair_for_verdict(&a, &b, -1.0, 1.0, &at_verdict, 0.35).unwrap();
+    assert!(fail.min_clearance_m < 0.35, "{fail:?}");
+    assert_eq!(fail.evaluations, 9, "{fail:?}");
+    assert!(full.min_clearance_m - full.residual_bound_m < 0.35, "{full:?}");
 }

@@ -30,36 +30,56 @@ fn edges(polygons: &[Vec<Point2<f64>>]) -> impl Iterator<Item = (Point2<f64>, Po
         .flat_map(|p| p.iter().zip(p.iter().cycle().skip(1)).map(|(a, b)| (*a, *b)))
 }
 
+/// True when `test` holds for an edge of `polygons` (the same edges as [`edges`], each
+/// polygon's closing edge first). A plain loop for the queries the synthesis searches call
+/// most (the iterator chain of [`edges`] took a fifth of the hooked-track search); each
+/// query's answer does not depend on the order of the edges.
+fn any_edge(polygons: &[Vec<Point2<f64>>], mut test: impl FnMut(Point2<f64>, Point2<f64>) -> bool) -> bool {
+    for polygon in polygons {
+        let Some(&last) = polygon.last() else { continue };
+        let mut a = last;
+        for &b in polygon {
+            if test(a, b) {
+                return true;
+            }
+            a = b;
+        }
+    }
+    false
+}
+
 /// True when `p` lies inside `polygons` (even-odd rule).
 pub fn inside(polygons: &[Vec<Point2<f64>>], p: Point2<f64>) -> bool {
     let mut crossings = 0;
-    for (a, b) in edges(polygons) {
+    any_edge(polygons, |a, b| {
         if (a.y > p.y) != (b.y > p.y) {
             let x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
             if x > p.x {
                 crossings += 1;
             }
         }
-    }
+        false
+    });
     crossings % 2 == 1
 }
 
 /// Lowest and highest y where the vertical line at `x` crosses `polygons`.
 pub fn vertical_span(polygons: &[Vec<Point2<f64>>], x: f64) -> Option<(f64, f64)> {
     let mut span: Option<(f64, f64)> = None;
-    for (a, b) in edges(polygons) {
+    any_edge(polygons, |a, b| {
         if (a.x > x) != (b.x > x) {
             let y = a.y + (x - a.x) / (b.x - a.x) * (b.y - a.y);
             span = Some(span.map_or((y, y), |(lo, hi)| (lo.min(y), hi.max(y))));
         }
-    }
+        false
+    });
     span
 }
 
 /// True when the segment `a`-`b` crosses an edge of `polygons` or lies inside them.
 pub fn segment_meets(polygons: &[Vec<Point2<f64>>], a: Point2<f64>, b: Point2<f64>) -> bool {
     let orient = |p: Point2<f64>, q: Point2<f64>, r: Point2<f64>| (q - p).perp(&(r - p));
-    let crosses = edges(polygons).any(|(c, d)| {
+    let crosses = any_edge(polygons, |c, d| {
         let (d1, d2) = (orient(a, b, c), orient(a, b, d));
         let (d3, d4) = (orient(c, d, a), orient(c, d, b));
         (d1 > 0.0) != (d2 > 0.0) && (d3 > 0.0) != (d4 > 0.0)
@@ -80,9 +100,12 @@ pub fn point_segment_distance(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) ->
 
 /// Distance from `p` to the nearest edge of `polygons`, inside or out.
 pub fn boundary_distance(polygons: &[Vec<Point2<f64>>], p: Point2<f64>) -> f64 {
-    edges(polygons)
-        .map(|(a, b)| point_segment_distance(p, a, b))
-        .fold(f64::INFINITY, f64::min)
+    let mut nearest = f64::INFINITY;
+    any_edge(polygons, |a, b| {
+        nearest = nearest.min(point_segment_distance(p, a, b));
+        false
+    });
+    nearest
 }
 
 /// Distance from the segment `a`-`b` to `polygons` (0 where it meets or lies inside them).

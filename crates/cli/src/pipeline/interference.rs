@@ -108,6 +108,7 @@ pub fn assembly(
         tolerance_m: settings.tolerance_m,
         relative_tolerance: settings.relative_tolerance,
         max_evaluations: settings.max_evaluations,
+        stop_at_verdict: settings.stop_at_verdict,
     };
     let assembly = Assembly {
         fixed,

@@ -96,6 +96,13 @@ pub struct InterferenceScene {
     /// wing (a 1/17 model and its full-size aircraft ask the same of their mechanisms).
     #[serde(default)]
     pub required_clearance_percent_flap_chord: Option<f64>,
+    /// Refine each pair only until its verdict against its required clearance is certain
+    /// (`flapwright_interference::SweepSettings::stop_at_verdict`), not until its minimum
+    /// is located to the tolerance: the same certified pass or fail, with each pair's
+    /// `min_clearance_m` then only its smallest sample (`residual_bound_m` says how much
+    /// lower the minimum may be). The trade study sets it: it reads only the verdicts.
+    #[serde(default)]
+    pub stop_at_verdict: bool,
 }
 
 impl InterferenceScene {
@@ -138,6 +145,7 @@ impl Default for InterferenceScene {
             joint_play_m: default_joint_play(),
             opening_margin_m: None,
             required_clearance_percent_flap_chord: None,
+            stop_at_verdict: false,
         }
     }
 }

@@ -28,14 +28,14 @@ pub(super) fn crank_start(o1: Point2<f64>, a1: Point2<f64>, c: Point2<f64>) -> P
 }
 
 /// The bodies and joints. The crank turns at most at the drive's bound; the rocker and the
-/// flap at most |v_A1| / (length x sin μ) with μ the certified smallest transmission angle
-/// (the loop's Cramer solve divides by coupler x rocker x sin μ).
+/// flap at most that times `link_rates`, the certified bounds on their rates per unit crank
+/// rate ([`Loop::rate_bounds`]).
 pub(super) fn bodies_and_joints(
     spec: &FourBarSpec,
     synthesis: &FourBarSynthesis,
     loop_: &Loop,
     drive: &RockerDrive,
-    certified_transmission: f64,
+    link_rates: (f64, f64),
 ) -> (Vec<Body>, Vec<Joint>) {
     let hw = &spec.hardware;
     let (o1, o2, a1, a2) = (loop_.o1, loop_.o2, loop_.a1, loop_.a2);
@@ -44,7 +44,7 @@ pub(super) fn bodies_and_joints(
     let travel = synthesis.crank_rotation_rad[1];
     let crank_rate = drive.rotation_rate_bound(travel);
     let a1_speed = (a1 - o1).norm() * crank_rate;
-    let sine = certified_transmission.sin().max(1e-9);
+    let (rocker_rate, flap_rate) = (link_rates.0 * crank_rate, link_rates.1 * crank_rate);
     let moving = |reference, linear_per_input, angular_per_input| SpeedBound {
         reference,
         linear_per_input,
@@ -66,7 +66,7 @@ pub(super) fn bodies_and_joints(
             name: "flap".into(),
             role: BodyRole::Flap,
             solids: vec![capsule("bracket", a1, a2)],
-            speed_bound: moving(a1, a1_speed, a1_speed / (loop_.coupler * sine)),
+            speed_bound: moving(a1, a1_speed, flap_rate),
         },
         Body {
             name: "crank".into(),
@@ -78,7 +78,7 @@ pub(super) fn bodies_and_joints(
             name: "rocker".into(),
             role: BodyRole::Link,
             solids: vec![capsule("rocker", o2, a2)],
-            speed_bound: moving(o2, 0.0, a1_speed / (loop_.rocker * sine)),
+            speed_bound: moving(o2, 0.0, rocker_rate),
         },
     ];
     bodies.extend(screw_and_nut);

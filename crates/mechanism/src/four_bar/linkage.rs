@@ -85,4 +85,97 @@ impl Loop {
         let flap = -r2.dot(&v1) / det;
         (rocker, flap)
     }
+
+    /// Certified bounds on |ω_r| and |ω_f|, the rocker's and the flap's rotation rates per
+    /// unit crank rate, for every crank turn between 0 and `travel` (rad), given
+    /// `certified_mu`, a certified lower bound on the transmission angle there (rad, > 0);
+    /// `None` where the loop cannot be posed at a sample.
+    ///
+    /// The velocity analysis gives |ω_r| = |r1| |cos∠(c, v1)| / (|r2| sin μ) and
+    /// |ω_f| = |r1| |cos∠(r2, v1)| / (|c| sin μ) (v1 = k x r1 the crank pin's velocity per unit
+    /// crank rate). The bound from μ alone takes both cosines as 1; where the crank and
+    /// rocker stay nearly parallel (a short bracket between pivots close together) that is
+    /// ten times the flap's real rate, and every sweep of the flap against the wing pays for
+    /// it in distance evaluations. Here the deployment is cut into `intervals` pieces of width
+    /// h; on each, the cosines are at most their larger end value plus (1 + W) h / 2 and
+    /// sin μ at least its smaller end value less (W_r + W_f) h / 2, since those angles turn
+    /// no faster than the crank plus the other link (1 + W_f or 1 + W_r) or the two links
+    /// together, and cosine and sine are 1-Lipschitz; W_r, W_f are the bounds from
+    /// `certified_mu` alone, which also cap the result.
+    pub(super) fn rate_bounds(&self, travel: f64, certified_mu: f64, intervals: usize) -> Option<(f64, f64)> {
+        let crank_arm = (self.a1 - self.o1).norm();
+        let sine_floor = certified_mu.sin();
+        let global = (
+            crank_arm / (self.rocker * sine_floor),
+            crank_arm / (self.coupler * sine_floor),
+        );
+        if !(sine_floor > 0.0 && global.0.is_finite() && global.1.is_finite()) {
+            return None;
+        }
+        let intervals = intervals.max(1);
+        let h = travel.abs() / intervals as f64;
+        // |cos∠(c, v1)|, |cos∠(r2, v1)| and sin μ at crank turn `phi`.
+        let shape = |phi: f64| -> Option<(f64, f64, f64)> {
+            let pose = self.at(phi)?;
+            let r1 = pose.a1 - self.o1;
+            let v1 = Vector2::new(-r1.y, r1.x) / crank_arm;
+            let (r2, c) = ((pose.a2 - self.o2) / self.rocker, (pose.a2 - pose.a1) / self.coupler);
+            Some((c.dot(&v1).abs(), r2.dot(&v1).abs(), cross(c, r2).abs()))
+        };
+        let mut ends = shape(0.0)?;
+        let mut bound: (f64, f64) = (0.0, 0.0);
+        for k in 1..=intervals {
+            let next = shape(travel * k as f64 / intervals as f64)?;
+            let rocker_cos = (ends.0.max(next.0) + (1.0 + global.1) * h / 2.0).min(1.0);
+            let flap_cos = (ends.1.max(next.1) + (1.0 + global.0) * h / 2.0).min(1.0);
+            let sine = (ends.2.min(next.2) - (global.0 + global.1) * h / 2.0).max(sine_floor);
+            bound.0 = bound.0.max(crank_arm * rocker_cos / (self.rocker * sine));
+            bound.1 = bound.1.max(crank_arm * flap_cos / (self.coupler * sine));
+            ends = next;
+        }
+        Some((bound.0.min(global.0), bound.1.min(global.1)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A loop whose crank and rocker stay nearly parallel (the transport scene's four-bar at
+    /// `ob-outer`, rounded): the flap turns about as fast as the crank, far below the bound
+    /// from the transmission angle alone.
+    fn parallel_loop() -> Loop {
+        Loop::new(
+            Point2::new(-0.0733, 0.1117),
+            Point2::new(-0.1221, 0.1673),
+            Point2::new(-0.7876, 0.3757),
+            Point2::new(-0.5923, 0.4709),
+        )
+    }
+
+    #[test]
+    fn rate_bounds_hold_at_every_crank_turn_and_beat_the_transmission_angle_alone() {
+        let loop_ = parallel_loop();
+        let travel = 0.611;
+        let mut mu_min = f64::INFINITY;
+        let mut fastest: (f64, f64) = (0.0, 0.0);
+        for k in 0..=20_000 {
+            let pose = loop_.at(travel * k as f64 / 20_000.0).unwrap();
+            mu_min = mu_min.min(pose.transmission);
+            let (rocker, flap) = loop_.rates(&pose);
+            fastest = (fastest.0.max(rocker.abs()), fastest.1.max(flap.abs()));
+        }
+        let certified = 0.9 * mu_min;
+        let (rocker, flap) = loop_.rate_bounds(travel, certified, 256).unwrap();
+        assert!(
+            rocker >= fastest.0 && flap >= fastest.1,
+            "{rocker} {flap} against {fastest:?}"
+        );
+        let crank_arm = (loop_.a1 - loop_.o1).norm();
+        let flap_from_mu = crank_arm / (loop_.coupler * certified.sin());
+        assert!(flap < 0.3 * flap_from_mu, "{flap} against {flap_from_mu}");
+        assert!(flap < 1.5 * fastest.1, "{flap} against the fastest {}", fastest.1);
+        // A turn the loop cannot make has no bound.
+        assert!(loop_.rate_bounds(10.0, certified, 16).is_none());
+    }
 }

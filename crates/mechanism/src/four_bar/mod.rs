@@ -182,6 +182,13 @@ pub struct FourBar {
 
 /// Crank samples of the feasibility check over the deployment.
 pub(super) const LOOP_SAMPLES: usize = 48;
+
+/// Pieces of the deployment on which the rocker's and the flap's rates are certified
+/// (`linkage::Loop::rate_bounds`): 256 closed-form poses, a few microseconds a build. On the
+/// transport scene's four-bar at `ob-outer` (study of that station) the flap mesh's speed
+/// bound falls from 19.8 to 2.8 m per unit drive fraction, and the sweep of the flap against
+/// the wing from 1200 distance evaluations (the budget, uncertified) to 334 (certified).
+pub(super) const RATE_INTERVALS: usize = 256;
 /// Loops, shallowest pivots first, whose screw and struts are placed to pick the shallowest
 /// whole mechanism: at most this many, and no more than [`CLEAR_FINALISTS`] once one is
 /// placed clear of the sections (each placement costs about 4 ms).

@@ -8,7 +8,7 @@ use super::linkage::{Loop, LoopPose};
 use super::search::{candidate, candidates, check_pair, search_failure, Candidate};
 use super::{
     failure, mm, FollowStation, FourBar, FourBarSearch, FourBarSpec, FourBarSynthesis, CLEAR_FINALISTS, FINALISTS,
-    LOOP_SAMPLES,
+    LOOP_SAMPLES, RATE_INTERVALS,
 };
 use crate::error::{Error, Result, SynthesisDefect};
 use crate::placement::{place_screw_jack, strut_top, JackSize, ScrewJackChoice, PLACEMENT_SAMPLES};
@@ -194,6 +194,12 @@ impl FourBar {
         let crank_arm = (loop_.a1 - loop_.o1).norm();
         let rate_bound = |mu: f64| crank_arm / (loop_.rocker * mu.sin()) + crank_arm / (loop_.coupler * mu.sin());
         let certified = (min_transmission - 0.5 * step * rate_bound(0.5 * min_transmission)).max(0.0);
+        // The rocker's and the flap's rates per unit crank rate: certified on
+        // RATE_INTERVALS pieces of the deployment, or from the transmission angle alone.
+        let link_rates = loop_.rate_bounds(travel, certified, RATE_INTERVALS).unwrap_or_else(|| {
+            let sine = certified.sin().max(1e-9);
+            (crank_arm / (loop_.rocker * sine), crank_arm / (loop_.coupler * sine))
+        });
         let hw = spec.hardware;
         // In-plane margin for the 3D check's clearance and the flap's taper across a part's width.
         let margin = hw.link_radius_m;
@@ -301,7 +307,7 @@ impl FourBar {
             nominal_speed_mps,
             search,
         };
-        let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &loop_, &drive, certified);
+        let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &loop_, &drive, link_rates);
         let mut four_bar = Self {
             spec,
             synthesis,

@@ -13,19 +13,18 @@ const LINK: usize = 1;
 const SUPPORT: usize = 2;
 
 /// The bodies and joints. The link turns one radian per radian of input; the flap's pivot
-/// A moves at |A - O| per radian, and the flap turns at most |A'| (1 + 1 / sin μ) / ℓ with μ
-/// the certified smallest transmission angle (see `linkage`: |λ'| <= |A'| / sin μ).
+/// A moves at |A - O| per radian, and the flap turns at most `flap_rate` per radian
+/// ([`Loop::flap_rate_bound`]).
 pub(super) fn bodies_and_joints(
     spec: &LinkTrackSpec,
     synthesis: &LinkTrackSynthesis,
     loop_: &Loop,
-    certified_transmission: f64,
+    flap_rate: f64,
 ) -> (Vec<Body>, Vec<Joint>) {
     let hw = &spec.hardware;
     let (o, a, c) = (loop_.o, loop_.a, loop_.c);
     let capsule = |name: &str, from: Point2<f64>, to: Point2<f64>| BodySolid::capsule(name, from, to, hw.link_radius_m);
     let arm = (a - o).norm();
-    let sine = certified_transmission.sin().max(1e-9);
     let [track_start, track_end] = synthesis.track_ends_m;
     let bodies = vec![
         Body {
@@ -38,7 +37,7 @@ pub(super) fn bodies_and_joints(
             speed_bound: SpeedBound {
                 reference: a,
                 linear_per_input: arm,
-                angular_per_input: arm * (1.0 + 1.0 / sine) / loop_.span,
+                angular_per_input: flap_rate,
             },
         },
         Body {

@@ -41,6 +41,12 @@ use crate::seam::{
 
 const KIND: &str = "link-track";
 
+/// Pieces of the deployment on which the flap's rate is certified
+/// (`linkage::Loop::flap_rate_bound`): 256 closed-form poses a build. On the transport
+/// scene's link-track at `ob-outer` (study of that station) the flap mesh's speed bound
+/// falls from 3.3 to 1.5 m per unit drive fraction.
+const RATE_INTERVALS: usize = 256;
+
 /// The designer's choices for a link-track at one station (station frame, m).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LinkTrackSpec {
@@ -268,7 +274,12 @@ impl LinkTrack {
             actuator: spec.rotary.actuator_for(travel),
             search: counts,
         };
-        let (bodies, joints) = bodies::bodies_and_joints(&spec, &synthesis, &loop_, certified);
+        // The flap's rate: certified on RATE_INTERVALS pieces of the deployment, or from the
+        // transmission angle alone.
+        let flap_rate = loop_
+            .flap_rate_bound(travel, certified, RATE_INTERVALS)
+            .unwrap_or_else(|| arm * (1.0 + 1.0 / certified.sin().max(1e-9)) / loop_.span);
+        let (bodies, joints) = bodies::bodies_and_joints(&spec, &synthesis, &loop_, flap_rate);
         Ok(Self {
             spec,
             synthesis,

@@ -31,7 +31,11 @@ const TIME_LIMIT: Duration = Duration::from_secs(60);
 /// Address-space bound of one run, KiB (the default scene needs about 200 MB).
 const MEMORY_LIMIT_KIB: u64 = 4 * 1024 * 1024;
 
-const SCENES: &[&str] = &["small-aircraft.toml", "thesis-case-study.toml", "double-slotted-flap.toml"];
+const SCENES: &[&str] = &[
+    "small-aircraft.toml",
+    "thesis-case-study.toml",
+    "double-slotted-flap.toml",
+];
 
 /// Values put in place of a scene value: extremes, wrong types, and plain ones.
 const VALUES: &[&str] = &[

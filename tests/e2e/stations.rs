@@ -324,5 +324,8 @@ fn double_slotted_flap_scene_designs_the_five_bar() {
     let mut nulls = Vec::new();
     null_paths(mechanism, String::new(), &mut nulls);
     nulls.retain(|p| !p.ends_with(".stopped"));
-    assert!(nulls.is_empty(), "no NaN escaped into the mechanism's report: {nulls:?}");
+    assert!(
+        nulls.is_empty(),
+        "no NaN escaped into the mechanism's report: {nulls:?}"
+    );
 }

@@ -56,7 +56,8 @@ pub struct StationFigures {
     pub setting_misses: Vec<SettingMiss>,
     /// Smallest and largest transmission angle over the deployment (deg).
     pub transmission_angle_deg: [f64; 2],
-    /// Every checked pair of the station's parts keeps the required clearance.
+    /// Every checked pair of the station's parts, and of the flap it moves, keeps the
+    /// required clearance.
     pub clearance_passes: bool,
     /// Gap and overlap (% of the local chord) against deflection (deg), first load case.
     pub gap_overlap: Vec<[f64; 3]>,
@@ -377,6 +378,9 @@ fn station_figures(report: &Value, station: &Value) -> StationFigures {
         })
         .collect();
     let prefix = format!("{name}.");
+    // The flap this station moves is the kind's result too: each kind moves it on its own
+    // path, so the flap's pairs (against the wing, spars, tube) count with the station's.
+    let flap = station["flap"].as_str();
     let interference = &report["interference"];
     let clearance_passes = interference["pairs"]
         .as_array()
@@ -385,7 +389,7 @@ fn station_figures(report: &Value, station: &Value) -> StationFigures {
         .filter(|p| {
             [&p["part_a"], &p["part_b"]]
                 .iter()
-                .any(|n| n.as_str().is_some_and(|n| n.starts_with(&prefix)))
+                .any(|n| n.as_str().is_some_and(|n| n.starts_with(&prefix) || Some(n) == flap))
         })
         .all(|p| p["passes"] == true)
         && interference["declared_contacts"]
@@ -526,6 +530,19 @@ pub fn table(study: &Study) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_clearance_verdict_counts_the_flap_the_station_moves() {
+        let pair = |a: &str, b: &str, passes: bool| serde_json::json!({"part_a": a, "part_b": b, "passes": passes});
+        let station = serde_json::json!({"name": "s1", "flap": "outboard"});
+        let report = |pairs: Vec<Value>| serde_json::json!({"interference": {"pairs": pairs, "declared_contacts": []}});
+        let clear = report(vec![pair("s1.link", "wing", true), pair("outboard", "wing", true)]);
+        assert!(station_figures(&clear, &station).clearance_passes);
+        let flap_too_close = report(vec![pair("s1.link", "wing", true), pair("outboard", "wing", false)]);
+        assert!(!station_figures(&flap_too_close, &station).clearance_passes);
+        let other_flap = report(vec![pair("s1.link", "wing", true), pair("inboard", "wing", false)]);
+        assert!(station_figures(&other_flap, &station).clearance_passes);
+    }
 
     const SCENE: &str = r#"
 name = "s"

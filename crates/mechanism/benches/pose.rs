@@ -28,12 +28,22 @@ fn pose_and_sweep(c: &mut Criterion) {
 fn five_bar_sweep(c: &mut Criterion) {
     let five_bar = FiveBarDoubleFlap::polimi_case_study().expect("assembles");
     let (from, to) = (five_bar.stowed_crank_rad, five_bar.deployed_crank_rad);
+    c.bench_function("five_bar_sweep_1000_to_third_order", |b| {
+        b.iter(|| {
+            let mut secondary_jerk_sum = 0.0;
+            for i in 0..1000 {
+                let alpha = from + (to - from) * i as f64 / 999.0;
+                secondary_jerk_sum += five_bar.pose(black_box(alpha)).expect("poses").secondary_deflection.d3;
+            }
+            secondary_jerk_sum
+        })
+    });
     c.bench_function("five_bar_sweep_1000", |b| {
         b.iter(|| {
             let mut secondary_rate_sum = 0.0;
             for i in 0..1000 {
                 let alpha = from + (to - from) * i as f64 / 999.0;
-                let pose = five_bar.pose(black_box(alpha)).expect("poses");
+                let pose = five_bar.pose_and_rates(black_box(alpha)).expect("poses");
                 secondary_rate_sum += pose.secondary_deflection.d1;
             }
             secondary_rate_sum

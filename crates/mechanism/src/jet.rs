@@ -83,22 +83,31 @@ impl PointJet {
     /// The direction angle of the vector (rad) with its derivatives: for a vector u,
     /// ω = (u x u') / |u|², and its derivatives by the quotient rule.
     pub fn angle(&self) -> AngleJet {
+        self.angle_to_order(3)
+    }
+
+    /// [`PointJet::angle`] with only the first `order` derivatives (1 to 3; the others 0):
+    /// a sweep of positions and rates skips the higher ones.
+    pub fn angle_to_order(&self, order: usize) -> AngleJet {
         let (u, u1, u2, u3) = (self.p, self.d1, self.d2, self.d3);
         let n = u.norm_squared();
-        let n1 = 2.0 * u.dot(&u1);
-        let n2 = 2.0 * (u1.norm_squared() + u.dot(&u2));
-        let c = cross(u, u1);
-        let c1 = cross(u, u2);
-        let c2 = cross(u1, u2) + cross(u, u3);
-        let w1 = c / n;
-        let w2 = (c1 - w1 * n1) / n;
-        let w3 = (c2 - 2.0 * w2 * n1 - w1 * n2) / n;
-        AngleJet {
+        let w1 = cross(u, u1) / n;
+        let mut jet = AngleJet {
             value: u.y.atan2(u.x),
             d1: w1,
-            d2: w2,
-            d3: w3,
+            d2: 0.0,
+            d3: 0.0,
+        };
+        if order >= 2 {
+            let n1 = 2.0 * u.dot(&u1);
+            jet.d2 = (cross(u, u2) - w1 * n1) / n;
+            if order >= 3 {
+                let n2 = 2.0 * (u1.norm_squared() + u.dot(&u2));
+                let c2 = cross(u1, u2) + cross(u, u3);
+                jet.d3 = (c2 - 2.0 * jet.d2 * n1 - w1 * n2) / n;
+            }
         }
+        jet
     }
 
     /// Dot product of two jets (the product rule to third order).
@@ -182,17 +191,30 @@ impl AngleJet {
 /// the two links are aligned (a toggle). Returns `None` when the circles do not meet or the
 /// links are aligned; the caller names the loop.
 pub fn dyad(p: &PointJet, from_p: f64, q: &PointJet, from_q: f64, branch: f64) -> Option<DyadJet> {
+    dyad_to_order(p, from_p, q, from_q, branch, 3)
+}
+
+/// [`dyad`] with only the first `order` derivatives (1 to 3; the others 0).
+pub fn dyad_to_order(
+    p: &PointJet,
+    from_p: f64,
+    q: &PointJet,
+    from_q: f64,
+    branch: f64,
+    order: usize,
+) -> Option<DyadJet> {
     let pq = q.p - p.p;
     let distance = pq.norm();
     if distance.is_nan() || distance <= 0.0 {
         return None;
     }
-    let along = (from_p * from_p - from_q * from_q + distance * distance) / (2.0 * distance);
+    let inverse_distance = 1.0 / distance;
+    let along = 0.5 * (from_p * from_p - from_q * from_q + distance * distance) * inverse_distance;
     let h2 = from_p * from_p - along * along;
     if h2.is_nan() || h2 < 0.0 {
         return None;
     }
-    let e = pq / distance;
+    let e = pq * inverse_distance;
     let x = p.p + e * along + Vector2::new(-e.y, e.x) * (branch * h2.sqrt());
     let (up, uq) = (x - p.p, x - q.p);
     let det = cross(up, uq);
@@ -200,16 +222,27 @@ pub fn dyad(p: &PointJet, from_p: f64, q: &PointJet, from_q: f64, branch: f64) -
         return None;
     }
     // Solves up · v = bp, uq · v = bq by Cramer's rule.
-    let solve = |bp: f64, bq: f64| Vector2::new(bp * uq.y - bq * up.y, up.x * bq - uq.x * bp) / det;
+    let inverse_det = 1.0 / det;
+    let solve = |bp: f64, bq: f64| Vector2::new(bp * uq.y - bq * up.y, up.x * bq - uq.x * bp) * inverse_det;
     let d1 = solve(up.dot(&p.d1), uq.dot(&q.d1));
-    let (wp, wq) = (d1 - p.d1, d1 - q.d1);
-    let d2 = solve(up.dot(&p.d2) - wp.norm_squared(), uq.dot(&q.d2) - wq.norm_squared());
-    let d3 = solve(
-        up.dot(&p.d3) - 3.0 * wp.dot(&(d2 - p.d2)),
-        uq.dot(&q.d3) - 3.0 * wq.dot(&(d2 - q.d2)),
-    );
+    let mut point = PointJet {
+        p: x,
+        d1,
+        d2: Vector2::zeros(),
+        d3: Vector2::zeros(),
+    };
+    if order >= 2 {
+        let (wp, wq) = (d1 - p.d1, d1 - q.d1);
+        point.d2 = solve(up.dot(&p.d2) - wp.norm_squared(), uq.dot(&q.d2) - wq.norm_squared());
+        if order >= 3 {
+            point.d3 = solve(
+                up.dot(&p.d3) - 3.0 * wp.dot(&(point.d2 - p.d2)),
+                uq.dot(&q.d3) - 3.0 * wq.dot(&(point.d2 - q.d2)),
+            );
+        }
+    }
     Some(DyadJet {
-        point: PointJet { p: x, d1, d2, d3 },
+        point,
         sine_between_links: det / (from_p * from_q),
     })
 }

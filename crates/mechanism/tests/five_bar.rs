@@ -337,3 +337,22 @@ fn behind_the_seam_statics_agree_with_virtual_work() {
         }
     }
 }
+
+#[test]
+fn positions_and_rates_alone_are_those_of_the_full_pose() {
+    let mechanism = case_study();
+    for alpha in crank_samples(&mechanism, 17) {
+        let (full, rates) = (
+            mechanism.pose(alpha).expect("full"),
+            mechanism.pose_and_rates(alpha).expect("rates"),
+        );
+        for (a, b) in [
+            (full.main_deflection, rates.main_deflection),
+            (full.secondary_deflection, rates.secondary_deflection),
+        ] {
+            assert_eq!((a.value, a.d1), (b.value, b.d1));
+            assert_eq!((b.d2, b.d3), (0.0, 0.0));
+        }
+        assert_eq!((full.h.p, full.h.d1), (rates.h.p, rates.h.d1));
+    }
+}

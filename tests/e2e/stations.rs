@@ -320,6 +320,17 @@ fn double_slotted_flap_scene_designs_the_five_bar() {
         assert!(relative < 1e-9, "{sample}");
     }
     assert!(dir.path().join("out/station-rib.svg").exists());
+    // [dynamics]: the document's motor deploys it; the independent recomputation
+    // (data/validation/001-five-bar-independent.md) has 0.0212375 s and 0.315421 s.
+    let dynamics = &report["stations"][0]["dynamics"];
+    assert!((dynamics["breakaway_time_s"].as_f64().unwrap() - 0.0212375).abs() < 1e-6);
+    assert!((dynamics["deployment_time_s"].as_f64().unwrap() - 0.315421).abs() < 1e-5);
+    let energy = &dynamics["energy"];
+    let residual = energy["residual_j"].as_f64().unwrap() / energy["supplied_j"].as_f64().unwrap();
+    assert!(residual.abs() < 1e-5, "energy residual {residual}");
+    assert!(dynamics["counts"]["steps"].as_u64().unwrap() > 10);
+    assert!(dynamics["samples"].as_array().unwrap().len() > 10);
+    assert!(dir.path().join("out/dynamics-rib.svg").exists());
     // Without a wing the 3D sections are null by design; the mechanism has no null (NaN).
     let mut nulls = Vec::new();
     null_paths(mechanism, String::new(), &mut nulls);
@@ -327,5 +338,21 @@ fn double_slotted_flap_scene_designs_the_five_bar() {
     assert!(
         nulls.is_empty(),
         "no NaN escaped into the mechanism's report: {nulls:?}"
+    );
+}
+
+/// `[dynamics]` on a kind without an equation of motion is an error naming the station.
+#[test]
+fn dynamics_on_a_kind_without_masses_names_the_station() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(repo_root().join("data/scenes/thesis-case-study.toml")).unwrap()
+        + "\n[dynamics]\nmotor = { resistance_ohm = 2.0, inductance_h = 1e-3, torque_constant_nm_per_a = 20.0 }\nsupply = { volts = 100.0 }\n";
+    std::fs::write(dir.path().join("scene.toml"), text).unwrap();
+    let output = run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);
+    assert!(!output.status.success());
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("station outer (circular-arc-track)") && stderr.contains("[dynamics]"),
+        "{stderr}"
     );
 }

@@ -12,6 +12,7 @@ use crate::report::{Exports, PartReport, Report, SceneInfo, StageTiming, Station
 use crate::scene::Scene;
 
 pub mod animation;
+pub mod dynamics;
 pub mod exports;
 pub mod flap_position;
 pub mod flight_loads;
@@ -203,6 +204,18 @@ pub fn design_with_progress(
             Ok(())
         })?;
     }
+    let mut dynamics_runs = Vec::new();
+    if let (true, Some(settings)) = (full, &scene.dynamics) {
+        dynamics_runs = stages.run("dynamics", || dynamics::run_all(settings, &records))?;
+        for (station, run) in &dynamics_runs {
+            if run.run.deployment_time_s.is_none() {
+                warnings.push(format!(
+                    "dynamics: station {station} did not deploy within {} s or {} steps",
+                    settings.max_time_s, settings.max_steps
+                ));
+            }
+        }
+    }
     let mut sizing_report = None;
     if full && outputs.sizing && outputs.kinematics {
         let (sized, notes) = stages.run("sizing", || sizing::size_all(scene, &records, &tube_path_ac))?;
@@ -238,22 +251,31 @@ pub fn design_with_progress(
     }
     if full && outputs.svg {
         exported.svg = stages.run("svg", || {
-            exports::write_svgs(scene, &records, interference_report.as_ref(), out)
+            let mut files = exports::write_svgs(scene, &records, interference_report.as_ref(), out)?;
+            files.extend(dynamics::write_plots(&scene.name, &dynamics_runs, out)?);
+            Ok(files)
         })?;
     }
     drop(meshed);
     let station_reports: Vec<StationReport> = records
         .into_iter()
-        .map(|record| StationReport {
-            plane: record
-                .placed
-                .as_ref()
-                .map(|p| flapwright_planes::StationReport::new(&p.station, &p.sections)),
-            name: record.station,
-            flap: record.flap,
-            flap_position: record.flap_position,
-            mechanism: record.kinematics,
-            fairing: record.fairing,
+        .map(|record| {
+            let dynamics = dynamics_runs
+                .iter()
+                .position(|(station, _)| *station == record.station)
+                .map(|i| dynamics_runs.swap_remove(i).1);
+            StationReport {
+                plane: record
+                    .placed
+                    .as_ref()
+                    .map(|p| flapwright_planes::StationReport::new(&p.station, &p.sections)),
+                name: record.station,
+                flap: record.flap,
+                flap_position: record.flap_position,
+                mechanism: record.kinematics,
+                fairing: record.fairing,
+                dynamics,
+            }
         })
         .collect();
 

@@ -85,6 +85,9 @@ pub struct StationReport {
     pub mechanism: Option<crate::pipeline::mechanisms::MechanismReport>,
     /// Fairing depth: how far the mechanism reaches below the lower wing/flap contour.
     pub fairing: Option<flapwright_interference::FairingDepth>,
+    /// The deployment under the `[dynamics]` motor (absent without `[dynamics]`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dynamics: Option<crate::pipeline::dynamics::DynamicsReport>,
 }
 
 /// Export files, relative to the output folder.

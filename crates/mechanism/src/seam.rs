@@ -542,6 +542,12 @@ pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
     fn members(&self) -> Vec<Member> {
         Vec::new()
     }
+
+    /// The equation of motion in the input, when the kind models its bodies' masses and
+    /// its loads (the dynamics stage drives it with a motor); None for a kind that does not.
+    fn dynamics(&self) -> Option<&dyn crate::generalised::OneInputDynamics> {
+        None
+    }
 }
 
 /// A solid where it stands at `pose` (station frame).

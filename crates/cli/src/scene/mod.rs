@@ -7,6 +7,7 @@
 //! (`wing.sections[2].chord_m = -1: must be > 0`).
 
 mod airfoil_ref;
+mod dynamics;
 mod key_path;
 pub(crate) mod parse;
 mod settings;
@@ -15,6 +16,7 @@ mod validate;
 mod wing;
 
 pub use airfoil_ref::{load_airfoil, AirfoilRef, AirfoilSource};
+pub use dynamics::DynamicsScene;
 pub use key_path::Location;
 pub use settings::{InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene, StlSetting};
 pub use station::{LoadCaseScene, LoadsScene, StationScene};
@@ -68,4 +70,6 @@ pub struct Scene {
     /// Custom materials, referred to by name from `[sizing]`.
     #[serde(default)]
     pub materials: Vec<MaterialScene>,
+    /// Drive dynamics: a DC motor deploying each station whose kind models its masses.
+    pub dynamics: Option<DynamicsScene>,
 }

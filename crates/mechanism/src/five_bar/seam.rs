@@ -24,6 +24,7 @@ use nalgebra::{Isometry2, Point2, Rotation2, Translation2, Vector2};
 use super::{FiveBarDoubleFlap, FiveBarPose, LoadedFiveBar};
 use crate::error::{Error, Result};
 use crate::flap_load::{FlapMass, FlapWrench};
+use crate::generalised::OneInputDynamics;
 use crate::jet::PointJet;
 use crate::kinetostatics::LoadCase;
 use crate::rocker_drive::cross;
@@ -472,5 +473,9 @@ impl FlapMechanism for FiveBarKind {
 
     fn warnings(&self) -> Vec<String> {
         Vec::new()
+    }
+
+    fn dynamics(&self) -> Option<&dyn OneInputDynamics> {
+        Some(&self.loaded)
     }
 }

@@ -225,6 +225,9 @@ impl Scene {
         check.loads(self);
         check.sizing(self);
         check.interference(self);
+        if let Some(dynamics) = &self.dynamics {
+            dynamics.check(&mut check);
+        }
         check.resolution(self);
         if check.problems.is_empty() {
             // The work estimate trusts the values: only for an otherwise valid scene.

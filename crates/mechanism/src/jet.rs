@@ -57,7 +57,8 @@ impl PointJet {
     /// The point at `radius` along angle `angle` from the origin, r (cos a, sin a): a crank
     /// turned by its input.
     pub fn polar(radius: f64, angle: AngleJet) -> Self {
-        let u = Vector2::new(angle.value.cos(), angle.value.sin());
+        let (sin, cos) = angle.value.sin_cos();
+        let u = Vector2::new(cos, sin);
         let n = Vector2::new(-u.y, u.x);
         let (w1, w2, w3) = (angle.d1, angle.d2, angle.d3);
         // d/dq u = w n, d/dq n = -w u.
@@ -83,12 +84,13 @@ impl PointJet {
     /// The direction angle of the vector (rad) with its derivatives: for a vector u,
     /// ω = (u x u') / |u|², and its derivatives by the quotient rule.
     pub fn angle(&self) -> AngleJet {
-        self.angle_to_order(3)
+        self.angle_to_order::<3>()
     }
 
-    /// [`PointJet::angle`] with only the first `order` derivatives (1 to 3; the others 0):
+    /// [`PointJet::angle`] with only the first `ORDER` derivatives (1 to 3; the others 0):
     /// a sweep of positions and rates skips the higher ones.
-    pub fn angle_to_order(&self, order: usize) -> AngleJet {
+    #[inline]
+    pub fn angle_to_order<const ORDER: usize>(&self) -> AngleJet {
         let (u, u1, u2, u3) = (self.p, self.d1, self.d2, self.d3);
         let n = u.norm_squared();
         let w1 = cross(u, u1) / n;
@@ -98,10 +100,10 @@ impl PointJet {
             d2: 0.0,
             d3: 0.0,
         };
-        if order >= 2 {
+        if ORDER >= 2 {
             let n1 = 2.0 * u.dot(&u1);
             jet.d2 = (cross(u, u2) - w1 * n1) / n;
-            if order >= 3 {
+            if ORDER >= 3 {
                 let n2 = 2.0 * (u1.norm_squared() + u.dot(&u2));
                 let c2 = cross(u1, u2) + cross(u, u3);
                 jet.d3 = (c2 - 2.0 * jet.d2 * n1 - w1 * n2) / n;
@@ -191,31 +193,37 @@ impl AngleJet {
 /// the two links are aligned (a toggle). Returns `None` when the circles do not meet or the
 /// links are aligned; the caller names the loop.
 pub fn dyad(p: &PointJet, from_p: f64, q: &PointJet, from_q: f64, branch: f64) -> Option<DyadJet> {
-    dyad_to_order(p, from_p, q, from_q, branch, 3)
+    dyad_to_order::<3>(p, from_p, q, from_q, branch)
 }
 
-/// [`dyad`] with only the first `order` derivatives (1 to 3; the others 0).
-pub fn dyad_to_order(
+/// [`dyad`] with only the first `ORDER` derivatives (1 to 3; the others 0). `ORDER` is a
+/// constant so that a sweep of positions and rates compiles without the higher orders.
+///
+/// The position is written with the squared distance D² = |Q - P|² alone:
+/// X = P + a (Q - P) + b h (Q - P)⊥ with a = (r_P² - r_Q² + D²) / (2 D²) and
+/// h² = r_P² / D² - a², one division and one square root on the path to X, where the
+/// textbook form (the distance, then the foot along the unit direction) takes two of each.
+#[inline]
+pub fn dyad_to_order<const ORDER: usize>(
     p: &PointJet,
     from_p: f64,
     q: &PointJet,
     from_q: f64,
     branch: f64,
-    order: usize,
 ) -> Option<DyadJet> {
     let pq = q.p - p.p;
-    let distance = pq.norm();
-    if distance.is_nan() || distance <= 0.0 {
+    let distance_squared = pq.norm_squared();
+    if distance_squared.is_nan() || distance_squared <= 0.0 {
         return None;
     }
-    let inverse_distance = 1.0 / distance;
-    let along = 0.5 * (from_p * from_p - from_q * from_q + distance * distance) * inverse_distance;
-    let h2 = from_p * from_p - along * along;
+    let inverse_distance_squared = 1.0 / distance_squared;
+    let from_p_squared = from_p * from_p;
+    let along = 0.5 * (from_p_squared - from_q * from_q + distance_squared) * inverse_distance_squared;
+    let h2 = from_p_squared * inverse_distance_squared - along * along;
     if h2.is_nan() || h2 < 0.0 {
         return None;
     }
-    let e = pq * inverse_distance;
-    let x = p.p + e * along + Vector2::new(-e.y, e.x) * (branch * h2.sqrt());
+    let x = p.p + pq * along + Vector2::new(-pq.y, pq.x) * (branch * h2.sqrt());
     let (up, uq) = (x - p.p, x - q.p);
     let det = cross(up, uq);
     if det == 0.0 || !det.is_finite() {
@@ -231,10 +239,10 @@ pub fn dyad_to_order(
         d2: Vector2::zeros(),
         d3: Vector2::zeros(),
     };
-    if order >= 2 {
+    if ORDER >= 2 {
         let (wp, wq) = (d1 - p.d1, d1 - q.d1);
         point.d2 = solve(up.dot(&p.d2) - wp.norm_squared(), uq.dot(&q.d2) - wq.norm_squared());
-        if order >= 3 {
+        if ORDER >= 3 {
             point.d3 = solve(
                 up.dot(&p.d3) - 3.0 * wp.dot(&(point.d2 - p.d2)),
                 uq.dot(&q.d3) - 3.0 * wq.dot(&(point.d2 - q.d2)),

@@ -296,32 +296,36 @@ impl FiveBarDoubleFlap {
 
     /// The mechanism at crank angle `crank_rad`, with every derivative to third order.
     pub fn pose(&self, crank_rad: f64) -> Result<FiveBarPose> {
-        self.pose_to_order(crank_rad, 3)
+        self.pose_to_order::<3>(crank_rad)
     }
 
     /// Positions and rates only (the second and third derivatives left 0): what a sweep
     /// of the deployment's kinematics needs, in half the time.
     pub fn pose_and_rates(&self, crank_rad: f64) -> Result<FiveBarPose> {
-        self.pose_to_order(crank_rad, 1)
+        self.pose_to_order::<1>(crank_rad)
     }
 
-    fn pose_to_order(&self, crank_rad: f64, order: usize) -> Result<FiveBarPose> {
+    #[inline]
+    fn pose_to_order<const ORDER: usize>(&self, crank_rad: f64) -> Result<FiveBarPose> {
         let dims = &self.dimensions;
         let open = |dyad: &'static str| Error::LoopOpen { dyad, crank_rad };
         let alpha = AngleJet::input(crank_rad);
         let a = PointJet::polar(dims.a, alpha);
         let c = PointJet::fixed(self.hinge_c());
         let b = PointJet::fixed(self.pivot_b());
-        let g_dyad = dyad_to_order(&a, dims.b, &c, dims.c, self.branches.g, order).ok_or_else(|| open("G (loop 1)"))?;
+        let g_dyad =
+            dyad_to_order::<ORDER>(&a, dims.b, &c, dims.c, self.branches.g).ok_or_else(|| open("G (loop 1)"))?;
         let g = g_dyad.point;
-        let d_dyad = dyad_to_order(&b, dims.d, &g, dims.p, self.branches.d, order).ok_or_else(|| open("D (loop 2)"))?;
+        let d_dyad =
+            dyad_to_order::<ORDER>(&b, dims.d, &g, dims.p, self.branches.d).ok_or_else(|| open("D (loop 2)"))?;
         let d = d_dyad.point;
         let e = g + (g - d) * (dims.g / dims.p);
         // G - C = i c e^{-iδ}: the chord direction e^{-iδ} = -i (G - C)/c, and F - C is
         // c₁ along it.
         let main_chord_direction = (g - c).perp() * (-1.0 / dims.c);
         let f = c + main_chord_direction * dims.main_chord;
-        let h_dyad = dyad_to_order(&e, dims.h, &f, dims.z, self.branches.h, order).ok_or_else(|| open("H (loop 3)"))?;
+        let h_dyad =
+            dyad_to_order::<ORDER>(&e, dims.h, &f, dims.z, self.branches.h).ok_or_else(|| open("H (loop 3)"))?;
         let h = h_dyad.point;
         let secondary_chord_direction = (h - f).perp() * (-1.0 / dims.z);
         let trailing_edge = f + secondary_chord_direction * dims.secondary_chord;
@@ -334,14 +338,16 @@ impl FiveBarDoubleFlap {
             f,
             h,
             trailing_edge,
-            main_deflection: main_chord_direction.angle_to_order(order).negated(),
-            secondary_deflection: secondary_chord_direction.angle_to_order(order).negated(),
+            main_deflection: main_chord_direction.angle_to_order::<ORDER>().negated(),
+            secondary_deflection: secondary_chord_direction.angle_to_order::<ORDER>().negated(),
             toggle_sine: [g_dyad, d_dyad, h_dyad]
                 .iter()
                 .map(|j| j.sine_between_links.abs())
                 .fold(f64::INFINITY, f64::min),
         };
-        if !pose.secondary_deflection.d3.is_finite() || !pose.main_deflection.d3.is_finite() {
+        // Every derivative computed (the ones beyond ORDER are 0): a NaN anywhere shows.
+        let finite = |angle: &AngleJet| (angle.value + angle.d1 + angle.d2 + angle.d3).is_finite();
+        if !finite(&pose.secondary_deflection) || !finite(&pose.main_deflection) {
             return Err(Error::NonFinite {
                 quantity: "five-bar derivatives",
                 input_m: crank_rad,

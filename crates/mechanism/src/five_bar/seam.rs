@@ -103,7 +103,7 @@ impl FiveBarKind {
         let stowed = named_points(mechanism, &stowed_pose);
         let at = |name: &str| point_named(&stowed, name);
         let mut bodies = Vec::new();
-        for (index, (name, role, _, solids)) in BODY_POINTS.iter().enumerate() {
+        for ((name, role, _, solids), speed_bound) in BODY_POINTS.iter().zip(speed_bounds(mechanism)?) {
             bodies.push(Body {
                 name: (*name).into(),
                 role: *role,
@@ -111,7 +111,7 @@ impl FiveBarKind {
                     .iter()
                     .map(|(solid, from, to)| BodySolid::capsule(solid, at(from), at(to), SOLID_RADIUS_M))
                     .collect(),
-                speed_bound: speed_bound(mechanism, index)?,
+                speed_bound,
             });
         }
         let pin = |name: &str, description: &str, ends: [JointEnd; 2], touching: &[(&str, &str)]| {
@@ -265,36 +265,47 @@ fn displacement(from: [Point2<f64>; 2], to: [Point2<f64>; 2]) -> Isometry2<f64> 
     Isometry2::from_parts(Translation2::from(translation), rotation.into())
 }
 
-fn speed_bound(mechanism: &FiveBarDoubleFlap, body: usize) -> Result<SpeedBound> {
-    let (_, _, [reference, other], _) = BODY_POINTS[body];
-    let samples = 2001;
+/// Every body's speed bound (in [`BODY_POINTS`] order), from one pass over the sampled
+/// poses.
+fn speed_bounds(mechanism: &FiveBarDoubleFlap) -> Result<Vec<SpeedBound>> {
+    const SAMPLES: usize = 2001;
     let (from, to) = (mechanism.stowed_crank_rad, mechanism.deployed_crank_rad);
-    let spacing = (to - from).abs() / (samples - 1) as f64;
-    let (mut speed, mut speed_change, mut turn, mut turn_change) = (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
-    for k in 0..samples {
-        let pose = mechanism.pose(from + (to - from) * k as f64 / (samples - 1) as f64)?;
-        let r = jet_named(mechanism, &pose, reference);
-        let angle = (jet_named(mechanism, &pose, other) - r).angle();
-        speed = speed.max(r.d1.norm());
-        speed_change = speed_change.max(r.d2.norm());
-        turn = turn.max(angle.d1.abs());
-        turn_change = turn_change.max(angle.d2.abs());
+    let spacing = (to - from).abs() / (SAMPLES - 1) as f64;
+    // Per body: largest |r'|, |r''|, |ω|, |ω'|.
+    let mut largest = vec![[0.0_f64; 4]; BODY_POINTS.len()];
+    for k in 0..SAMPLES {
+        let pose = mechanism.pose(from + (to - from) * k as f64 / (SAMPLES - 1) as f64)?;
+        for ((_, _, [reference, other], _), largest) in BODY_POINTS.iter().zip(&mut largest) {
+            let r = jet_named(mechanism, &pose, reference);
+            let angle = (jet_named(mechanism, &pose, other) - r).angle();
+            let now = [r.d1.norm(), r.d2.norm(), angle.d1.abs(), angle.d2.abs()];
+            for (held, value) in largest.iter_mut().zip(now) {
+                *held = held.max(value);
+            }
+        }
     }
     let stowed = mechanism.pose(from)?;
-    let moves = speed > 0.0 || turn > 0.0;
-    Ok(if moves {
-        SpeedBound {
-            reference: to_station(mechanism, jet_named(mechanism, &stowed, reference).p),
-            linear_per_input: if speed > 0.0 {
-                speed + spacing * speed_change
-            } else {
-                0.0
+    Ok(BODY_POINTS
+        .iter()
+        .zip(largest)
+        .map(
+            |((_, _, [reference, _], _), [speed, speed_change, turn, turn_change])| {
+                if speed > 0.0 || turn > 0.0 {
+                    SpeedBound {
+                        reference: to_station(mechanism, jet_named(mechanism, &stowed, reference).p),
+                        linear_per_input: if speed > 0.0 {
+                            speed + spacing * speed_change
+                        } else {
+                            0.0
+                        },
+                        angular_per_input: turn + spacing * turn_change,
+                    }
+                } else {
+                    SpeedBound::FIXED
+                }
             },
-            angular_per_input: turn + spacing * turn_change,
-        }
-    } else {
-        SpeedBound::FIXED
-    })
+        )
+        .collect())
 }
 
 impl FlapMechanism for FiveBarKind {

@@ -311,6 +311,8 @@ fn double_slotted_flap_scene_designs_the_five_bar() {
     let stowed = mechanism["input"]["stowed"].as_f64().unwrap().to_degrees();
     let deployed = mechanism["input"]["deployed"].as_f64().unwrap().to_degrees();
     assert!((stowed - 275.0).abs() < 1e-9 && (deployed - 320.0).abs() < 1e-9);
+    // A direct drive (rotary.turns = 0.125, an eighth of a turn over the crank's 45 deg).
+    assert!((mechanism["actuator"]["gear_ratio"].as_f64().unwrap() - 1.0).abs() < 1e-12);
     let details = &mechanism["details"];
     assert!((details["main_deflection_deployed_deg"].as_f64().unwrap() - 32.4268).abs() < 1e-3);
     let samples = mechanism["load_cases"][0]["samples"].as_array().unwrap();

@@ -221,12 +221,16 @@ impl Default for RotaryDriveScene {
 
 /// A gearbox's efficiency.
 const GEAR_EFFICIENCY: (f64, f64) = (0.1, 1.0);
+/// Drive-shaft turns of a rotary actuator over a deployment: from a direct drive (the
+/// shaft turns with its output, a fraction of a turn: 0.125 for a crank turned 45 deg) to
+/// a thousand.
+const ROTARY_TURNS: (f64, f64) = (0.01, 1000.0);
 
 impl RotaryDriveScene {
     /// Checks the keys under `{path}.rotary`.
     pub fn check(&self, checker: &mut dyn KeyChecker, path: &str) {
         for (key, value, (min, max)) in [
-            ("turns", self.turns, SCREW_TURNS),
+            ("turns", self.turns, ROTARY_TURNS),
             ("deployment_time_s", self.deployment_time_s, DEPLOYMENT_TIME_S),
             ("efficiency", self.efficiency, GEAR_EFFICIENCY),
         ] {

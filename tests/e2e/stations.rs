@@ -343,9 +343,63 @@ fn double_slotted_flap_scene_designs_the_five_bar() {
     );
 }
 
-/// `[dynamics]` on a kind without an equation of motion is an error naming the station.
+/// `[dynamics]` on a kind without an equation of its own deploys the flap as a rigid body on
+/// massless links (the default scene's circular-arc tracks): every station deploys, the
+/// energy balance closes, and the load's work over the deployment equals the kinematics
+/// stage's own integral of the actuator load over the stroke (an independent route: the
+/// statics swept at the report's samples, trapezoids).
 #[test]
-fn dynamics_on_a_kind_without_masses_names_the_station() {
+fn dynamics_deploys_any_kind_as_a_rigid_flap() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(repo_root().join("data/scenes/small-aircraft.toml")).unwrap()
+        + "\n[dynamics]\nmotor = { resistance_ohm = 0.5, inductance_h = 1e-3, torque_constant_nm_per_a = 0.1 }\nsupply = { volts = 28.0 }\n";
+    std::fs::write(dir.path().join("scene.toml"), text).unwrap();
+    let output = run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let report: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
+    for station in report["stations"].as_array().unwrap() {
+        let dynamics = &station["dynamics"];
+        assert_eq!(dynamics["model"]["type"], "rigid-flap", "{}", station["name"]);
+        assert!(dynamics["model"]["inertia_kgm2"].as_f64().unwrap() > 0.0);
+        assert!(
+            dynamics["deployment_time_s"].as_f64().is_some(),
+            "{} deploys",
+            station["name"]
+        );
+        let energy = &dynamics["energy"];
+        let supplied = energy["supplied_j"].as_f64().unwrap();
+        assert!((energy["residual_j"].as_f64().unwrap() / supplied).abs() < 1e-5);
+        let case = &station["mechanism"]["load_cases"][0];
+        assert_eq!(case["load_case"], dynamics["model"]["load_case"]);
+        let samples: Vec<(f64, f64)> = case["samples"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| (s["input"].as_f64().unwrap(), s["actuator_load"].as_f64().unwrap()))
+            .collect();
+        let swept_work: f64 = samples
+            .windows(2)
+            .map(|w| (w[1].0 - w[0].0) * (w[0].1 + w[1].1) / 2.0)
+            .sum();
+        let load_work = energy["load_work_j"].as_f64().unwrap();
+        // Trapezoids on the report's samples: their error is about 1e-4 of the work here.
+        assert!(
+            (load_work + swept_work).abs() < 1e-3 * swept_work.abs(),
+            "load work {load_work} against the swept statics' {swept_work}"
+        );
+        assert!(dir
+            .path()
+            .join(format!("out/dynamics-{}.svg", station["name"].as_str().unwrap()))
+            .exists());
+    }
+}
+
+/// A rigid flap's moment of inertia comes from its section in the station plane: a 2D
+/// scene without a wing cannot give one, and the error names the station and what is
+/// missing.
+#[test]
+fn dynamics_without_a_flap_section_names_the_station() {
     let dir = tempfile::tempdir().unwrap();
     let text = std::fs::read_to_string(repo_root().join("data/scenes/thesis-case-study.toml")).unwrap()
         + "\n[dynamics]\nmotor = { resistance_ohm = 2.0, inductance_h = 1e-3, torque_constant_nm_per_a = 20.0 }\nsupply = { volts = 100.0 }\n";
@@ -354,7 +408,7 @@ fn dynamics_on_a_kind_without_masses_names_the_station() {
     assert!(!output.status.success());
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(
-        stderr.contains("station outer (circular-arc-track)") && stderr.contains("[dynamics]"),
+        stderr.contains("station outer (circular-arc-track)") && stderr.contains("flap's section"),
         "{stderr}"
     );
 }

@@ -206,7 +206,7 @@ pub fn design_with_progress(
     }
     let mut dynamics_runs = Vec::new();
     if let (true, Some(settings)) = (full, &scene.dynamics) {
-        dynamics_runs = stages.run("dynamics", || dynamics::run_all(settings, &records))?;
+        dynamics_runs = stages.run("dynamics", || dynamics::run_all(scene, settings, &records))?;
         for (station, run) in &dynamics_runs {
             if run.run.deployment_time_s.is_none() {
                 warnings.push(format!(

@@ -28,6 +28,8 @@
 //!   dyads), with every derivative to third order through [`jet`]; [`generalised`] turns a
 //!   one-input mechanism's bodies with mass and its lifting surfaces into the equation of
 //!   motion's generalised inertia and force (work-energy, `001_...` section 3.1).
+//! - [`rigid_flap`]: the same for any kind from its poses and statics, its flap the one body
+//!   with mass, driven through its actuator's shaft ([`RigidFlapDynamics`]).
 //! - [`planar`] is a general one-input planar model (bodies; revolute, prismatic,
 //!   pin-in-circular-slot and pin-in-straight-slot joints; a distance or angle driver)
 //!   solved by Newton with the analytic Jacobian, velocities and accelerations from the
@@ -96,6 +98,7 @@ pub mod placement;
 pub mod planar;
 mod planar_solve;
 pub mod precision;
+pub mod rigid_flap;
 pub mod rocker_drive;
 mod rotary_actuator;
 mod screw_jack;
@@ -123,6 +126,7 @@ pub use link_track::{LinkTrack, LinkTrackSpec};
 pub use outline::StationOutline;
 pub use planar_solve::PlanarSolution;
 pub use precision::PrecisionPosition;
+pub use rigid_flap::RigidFlapDynamics;
 pub use rotary_actuator::RotaryDrive;
 pub use screw_jack::{ScrewDrive, ScrewJack, ScrewTorques};
 pub use seam::FlapMechanism;

@@ -544,8 +544,15 @@ pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
     }
 
     /// The equation of motion in the input, when the kind models its bodies' masses and
-    /// its loads (the dynamics stage drives it with a motor); None for a kind that does not.
+    /// its loads itself (the dynamics stage drives it with a motor); None for a kind that
+    /// leaves it to [`crate::rigid_flap`], from its flap's mass and its own poses and statics.
     fn dynamics(&self) -> Option<&dyn crate::generalised::OneInputDynamics> {
+        None
+    }
+
+    /// The flap share this station carries, whose weight the statics hold: what
+    /// [`crate::rigid_flap`] needs besides the poses. None for a kind that does not say.
+    fn flap_mass(&self) -> Option<crate::flap_load::FlapMass> {
         None
     }
 }

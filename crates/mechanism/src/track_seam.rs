@@ -369,6 +369,15 @@ impl FlapMechanism for CircularArcTrack {
         }
     }
 
+    fn flap_mass(&self) -> Option<crate::flap_load::FlapMass> {
+        let spec = self.spec();
+        Some(crate::flap_load::FlapMass {
+            mass_kg: spec.flap_mass_kg,
+            centre_of_mass_stowed_m: spec.centre_of_mass_stowed_m,
+            gravity_mps2: nalgebra::Vector2::new(0.0, -spec.gravity_mps2),
+        })
+    }
+
     fn warnings(&self) -> Vec<String> {
         self.synthesis().warnings.iter().map(|w| w.to_string()).collect()
     }

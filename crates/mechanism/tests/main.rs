@@ -7,6 +7,7 @@ mod hooked_track;
 mod landing_gear;
 mod planar;
 mod properties;
+mod rigid_flap;
 mod seam;
 mod synthesised;
 mod thesis_appendix_c;

@@ -570,6 +570,10 @@ impl FlapMechanism for DroppedHinge {
         members::members(self)
     }
 
+    fn flap_mass(&self) -> Option<FlapMass> {
+        Some(self.spec.flap_mass)
+    }
+
     fn warnings(&self) -> Vec<String> {
         let mut warnings = Vec::new();
         if let Some(at) = self.synthesis.flap_through_lip_at_rad {

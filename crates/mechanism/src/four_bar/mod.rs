@@ -419,6 +419,10 @@ impl FlapMechanism for FourBar {
         ]
     }
 
+    fn flap_mass(&self) -> Option<FlapMass> {
+        Some(self.spec.flap_mass)
+    }
+
     fn warnings(&self) -> Vec<String> {
         let mut warnings = Vec::new();
         if !self.synthesis.actuator_clear {

@@ -499,6 +499,10 @@ impl FlapMechanism for HookedTrack {
         }
     }
 
+    fn flap_mass(&self) -> Option<FlapMass> {
+        Some(self.spec.flap_mass)
+    }
+
     fn warnings(&self) -> Vec<String> {
         let mut warnings = Vec::new();
         if !self.synthesis.placement_clear {

@@ -510,6 +510,10 @@ impl FlapMechanism for LinkTrack {
         }]
     }
 
+    fn flap_mass(&self) -> Option<FlapMass> {
+        Some(self.spec.flap_mass)
+    }
+
     fn warnings(&self) -> Vec<String> {
         let mut warnings = Vec::new();
         if !self.synthesis.placement_clear {

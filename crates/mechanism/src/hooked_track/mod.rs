@@ -90,6 +90,20 @@ pub struct HookedTrackSearch {
     pub feasible: usize,
 }
 
+impl HookedTrackSearch {
+    /// Adds another search's counts to these.
+    fn add(&mut self, other: &Self) {
+        self.candidates += other.candidates;
+        self.no_hook += other.no_hook;
+        self.hook_radius += other.hook_radius;
+        self.rail_through_section += other.rail_through_section;
+        self.toggle += other.toggle;
+        self.branch_or_order += other.branch_or_order;
+        self.region += other.region;
+        self.feasible += other.feasible;
+    }
+}
+
 /// What synthesis computed.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct HookedTrackSynthesis {
@@ -170,13 +184,26 @@ impl HookedTrack {
     pub fn synthesise(spec: HookedTrackSpec) -> Result<Self> {
         let flap_chord = crate::feasibility::settings_and_flap_chord(&[spec.takeoff, spec.landing], &spec.outline)
             .map_err(|(defect, detail)| failure(defect, detail))?;
+        use rayon::prelude::*;
         let mut counts = HookedTrackSearch::default();
         let candidates = search::candidates(&spec);
+        // The candidates are checked in parallel, each with its own counts; the results are
+        // then taken in the candidates' order, so the choice and the counts are the same as
+        // a serial search's, whatever the threads.
+        let outcomes: Vec<_> = candidates
+            .par_iter()
+            .map(|candidate| {
+                let mut own = HookedTrackSearch::default();
+                let outcome = search::check(&spec, *candidate, flap_chord, &mut own);
+                (own, outcome)
+            })
+            .collect();
         let mut best: Option<search::Found> = None;
         let mut last_failure = None;
-        for candidate in &candidates {
+        for (own, outcome) in outcomes {
+            counts.add(&own);
             counts.candidates += 1;
-            match search::check(&spec, *candidate, flap_chord, &mut counts) {
+            match outcome {
                 Ok(found) => {
                     counts.feasible += 1;
                     if best.is_none_or(|b| found.cost() < b.cost()) {

@@ -97,14 +97,25 @@ impl<'a> RigidFlapDynamics<'a> {
         Ok((flap * self.mass.centre_of_mass_stowed_m, flap.rotation.angle()))
     }
 
-    /// J at `q`: m |c'|² + I θ'².
-    fn inertia(&self, q: f64) -> Result<f64> {
+    /// J at `q`: m |c'|² + I θ'². The nested stencils of one evaluation fall on the grid
+    /// `base + k h`: `poses` keeps what was posed there (k, centre, angle), so the 25 points
+    /// of J's five values cost 9 poses.
+    fn inertia(&self, q: f64, base: f64, poses: &mut Vec<(i64, Point2<f64>, f64)>) -> Result<f64> {
         let h = RELATIVE_STEP * self.travel;
         let samples = stencil_points(q, h, self.travel);
         let mut centres = [Point2::origin(); 5];
         let mut angles = [0.0; 5];
         for (k, &at) in samples.points.iter().enumerate() {
-            (centres[k], angles[k]) = self.centre_and_angle(at)?;
+            let grid = ((at - base) / h).round() as i64;
+            let posed = match poses.iter().find(|(g, _, _)| *g == grid) {
+                Some(&(_, centre, angle)) => (centre, angle),
+                None => {
+                    let (centre, angle) = self.centre_and_angle(base + grid as f64 * h)?;
+                    poses.push((grid, centre, angle));
+                    (centre, angle)
+                }
+            };
+            (centres[k], angles[k]) = posed;
         }
         // Differences from the point's own angle, wrapped to (-π, π]: no jump at the ±π cut.
         let turned = angles.map(|a| (a - angles[samples.at]).sin().atan2((a - angles[samples.at]).cos()));
@@ -190,8 +201,10 @@ impl OneInputDynamics for RigidFlapDynamics<'_> {
         let outer = stencil_points(q, h, self.travel);
         let mut inertias = [0.0; 5];
         let mut forces = [0.0; 5];
+        let base = outer.points[outer.at];
+        let mut poses = Vec::with_capacity(9);
         for (k, &at) in outer.points.iter().enumerate() {
-            inertias[k] = self.inertia(at)?;
+            inertias[k] = self.inertia(at, base, &mut poses)?;
             forces[k] = self.force(at)?;
         }
         let generalised = Generalised {

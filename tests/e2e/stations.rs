@@ -350,14 +350,9 @@ fn double_slotted_flap_scene_designs_the_five_bar() {
 /// statics swept at the report's samples, trapezoids).
 #[test]
 fn dynamics_deploys_any_kind_as_a_rigid_flap() {
-    let dir = tempfile::tempdir().unwrap();
     let text = std::fs::read_to_string(repo_root().join("data/scenes/small-aircraft.toml")).unwrap()
         + "\n[dynamics]\nmotor = { resistance_ohm = 0.5, inductance_h = 1e-3, torque_constant_nm_per_a = 0.1 }\nsupply = { volts = 28.0 }\n";
-    std::fs::write(dir.path().join("scene.toml"), text).unwrap();
-    let output = run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
-    let report: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
+    let (dir, report) = crate::synthesised_kinds::designed(&text);
     for station in report["stations"].as_array().unwrap() {
         let dynamics = &station["dynamics"];
         assert_eq!(dynamics["model"]["type"], "rigid-flap", "{}", station["name"]);
@@ -400,11 +395,9 @@ fn dynamics_deploys_any_kind_as_a_rigid_flap() {
 /// missing.
 #[test]
 fn dynamics_without_a_flap_section_names_the_station() {
-    let dir = tempfile::tempdir().unwrap();
     let text = std::fs::read_to_string(repo_root().join("data/scenes/thesis-case-study.toml")).unwrap()
         + "\n[dynamics]\nmotor = { resistance_ohm = 2.0, inductance_h = 1e-3, torque_constant_nm_per_a = 20.0 }\nsupply = { volts = 100.0 }\n";
-    std::fs::write(dir.path().join("scene.toml"), text).unwrap();
-    let output = run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);
+    let (_dir, output) = crate::synthesised_kinds::design(&text);
     assert!(!output.status.success());
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(

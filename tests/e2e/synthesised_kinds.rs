@@ -6,7 +6,7 @@ use serde_json::Value;
 
 use crate::{repo_root, run_flapwright};
 
-fn design(scene_text: &str) -> (tempfile::TempDir, std::process::Output) {
+pub(crate) fn design(scene_text: &str) -> (tempfile::TempDir, std::process::Output) {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("scene.toml"), scene_text).unwrap();
     let output = run_flapwright(dir.path(), &["design", "scene.toml", "--out", "out"]);
@@ -14,7 +14,7 @@ fn design(scene_text: &str) -> (tempfile::TempDir, std::process::Output) {
 }
 
 /// Designs `scene_text`, which must succeed, and reads its report.
-fn designed(scene_text: &str) -> (tempfile::TempDir, Value) {
+pub(crate) fn designed(scene_text: &str) -> (tempfile::TempDir, Value) {
     let (dir, output) = design(scene_text);
     assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
     let report = serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();

@@ -11,12 +11,12 @@ use anyhow::{anyhow, Context, Result};
 use flapwright_drawing::{Plot, Series};
 use flapwright_dynamics::{integrate, DynamicsRun};
 use flapwright_mechanism::generalised::OneInputDynamics;
-use flapwright_mechanism::{ExternalMoment, LoadCase, RigidFlapDynamics};
+use flapwright_mechanism::RigidFlapDynamics;
 use nalgebra::Point2;
 use serde::Serialize;
 
 use crate::output::StagedDir;
-use crate::pipeline::mechanisms::{load_cases, StationRecord};
+use crate::pipeline::mechanisms::{load_cases, weight_only, StationRecord};
 use crate::scene::{DynamicsScene, Scene};
 
 /// A station's deployment under the motor.
@@ -97,15 +97,7 @@ pub fn run_all(
             let radius_of_gyration_squared = polar_radius_of_gyration_squared(&flap)
                 .ok_or_else(|| named("the flap's section in the station plane (a moment of inertia from its area)"))?;
             let inertia_kgm2 = mass.mass_kg * radius_of_gyration_squared;
-            let load = load_cases(scene, record)
-                .into_iter()
-                .next()
-                .unwrap_or_else(|| LoadCase {
-                    name: "weight-only".into(),
-                    external_moment: ExternalMoment::Constant(0.0),
-                    include_inertia: false,
-                    flap_normal_force: None,
-                });
+            let load = load_cases(scene, record).into_iter().next().unwrap_or_else(weight_only);
             let system = RigidFlapDynamics::new(mechanism, mass, inertia_kgm2, &load)
                 .with_context(|| format!("station {}: the rigid flap's equation of motion", record.station))?;
             deploy(

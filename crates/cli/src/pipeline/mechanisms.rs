@@ -370,6 +370,16 @@ pub fn load_cases(scene: &Scene, record: &StationRecord) -> Vec<LoadCase> {
         .collect()
 }
 
+/// The load case of a scene without any: the flap's weight alone.
+pub fn weight_only() -> LoadCase {
+    LoadCase {
+        name: "weight-only".into(),
+        external_moment: ExternalMoment::Constant(0.0),
+        include_inertia: false,
+        flap_normal_force: None,
+    }
+}
+
 /// Sweeps one station under every load case (a weight-only case when the scene has none).
 pub fn sweep_station(
     mechanism: &StationRecord,
@@ -377,12 +387,7 @@ pub fn sweep_station(
     samples: usize,
     warnings: &mut Vec<String>,
 ) -> Result<MechanismReport> {
-    let weight_only = [LoadCase {
-        name: "weight-only".into(),
-        external_moment: ExternalMoment::Constant(0.0),
-        include_inertia: false,
-        flap_normal_force: None,
-    }];
+    let weight_only = [weight_only()];
     let cases = if cases.is_empty() { &weight_only[..] } else { cases };
     let seam = mechanism.mechanism.as_ref();
     for warning in seam.warnings() {

@@ -179,7 +179,7 @@ pub fn design_with_progress(
                 ));
             }
             interference_report = Some(checked);
-            let flap_names: Vec<String> = scene.flap.iter().map(|f| f.name.clone()).collect();
+            let flap_names: Vec<String> = scene.flap.iter().flat_map(|f| f.part_names()).collect();
             stages.run("fairing", || {
                 interference::fairing_depths(&mut records, &flap_names, &scene.resolution)
             })?;

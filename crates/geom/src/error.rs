@@ -126,6 +126,15 @@ pub enum Error {
         /// y(outboard) - y(inboard) (m).
         spanwise_m: f64,
     },
+    /// An aft element on a flap cut out of the wing section (it needs the flap's own
+    /// section to nest in).
+    #[error(
+        "flap {flap:?}: an aft element needs the flap's own section (section = an airfoil), not the wing's cut-out"
+    )]
+    AftElementNeedsOwnSection {
+        /// Flap name.
+        flap: String,
+    },
     /// Two flaps overlapping in span, or a flap of zero span.
     #[error("flap {flap:?}: span [{y_inboard_m}, {y_outboard_m}] m is empty or overlaps flap {other:?}")]
     FlapSpanConflict {

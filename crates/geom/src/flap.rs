@@ -83,6 +83,38 @@ pub struct FlapSpec {
     /// shroud stops short where its underside would come closer to the flap than
     /// [`SHROUD_CLEARANCE_CHORD_FRACTION`].
     pub shroud_chord_fraction: f64,
+    /// The aft element of a two-element (double-slotted) flap, nested under the main
+    /// element's trailing edge; None: a single-element flap.
+    pub aft_element: Option<AftElementSpec>,
+}
+
+/// The aft element (second flap or vane) of a two-element flap. Its section is nested in
+/// the flap's own section the way a flap is nested in the wing: trailing edges coinciding,
+/// chord line pointing at the flap's mean line at `1 - chord_fraction` of the flap chord;
+/// the main element is the flap's section cut by a cove wall ahead of it, with a shroud
+/// over its nose. Both fractions are of the whole flap's chord.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AftElementSpec {
+    /// Aft element section, unit chord.
+    pub airfoil: Airfoil,
+    /// Aft element chord as a fraction of the flap chord.
+    pub chord_fraction: f64,
+    /// How far the main element's upper skin reaches aft over the aft element's nose
+    /// (fraction of the flap chord); 0: a straight cove wall.
+    pub shroud_chord_fraction: f64,
+}
+
+/// Smallest and largest accepted aft-element chord (fraction of the flap chord).
+pub const AFT_ELEMENT_CHORD_FRACTION_RANGE: (f64, f64) = (0.1, 0.7);
+
+/// A flap's stowed section split into its elements (wing-section unit-chord u, v), each a
+/// closed polygon as [`Flap::stowed_outline`] gives one.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FlapElementOutlines {
+    /// The main element: the whole flap for a single-element flap.
+    pub main: Vec<Point2<f64>>,
+    /// The aft element of a two-element flap.
+    pub aft: Option<Vec<Point2<f64>>>,
 }
 
 /// Skin thickness of a shroud at the cove wall (fraction of the local chord).
@@ -130,6 +162,22 @@ impl Flap {
         wing.locate(spec.y_outboard_m, &format!("flap {:?} outboard end", spec.name))?;
         if let FlapSectionSpec::OwnSection { airfoil } = &spec.section {
             airfoil.validate()?;
+        }
+        if let Some(aft) = &spec.aft_element {
+            if matches!(spec.section, FlapSectionSpec::CutOut) {
+                return Err(Error::AftElementNeedsOwnSection {
+                    flap: spec.name.clone(),
+                });
+            }
+            aft.airfoil.validate()?;
+            let (lo, hi) = AFT_ELEMENT_CHORD_FRACTION_RANGE;
+            require_range("flap aft_element chord_fraction", aft.chord_fraction, lo, hi)?;
+            require_range(
+                "flap aft_element shroud_chord_fraction",
+                aft.shroud_chord_fraction,
+                0.0,
+                MAX_SHROUD_CHORD_FRACTION,
+            )?;
         }
         let (lo, hi) = FLAP_CHORD_FRACTION_RANGE;
         require_range("flap chord_fraction_inboard", spec.chord_fraction_inboard, lo, hi)?;
@@ -234,18 +282,38 @@ impl Flap {
             }
             FlapSectionSpec::OwnSection { airfoil } => {
                 let flap = airfoil.resampled(points_per_side)?;
-                let trailing_edge = wing_airfoil.trailing_edge_midpoint();
-                let front = Point2::new(front_u, wing_airfoil.mean_line_y(front_u)?);
-                let direction: Vector2<f64> = (trailing_edge - front).normalize();
-                let rotation = Rotation2::new(direction.y.atan2(direction.x));
-                // Flap chord runs x_f = 0..1; x_f = 1 sits on the wing trailing edge.
-                Ok(flap
-                    .points
-                    .iter()
-                    .map(|p| trailing_edge + rotation * (Vector2::new(p.x - 1.0, p.y) * chord_fraction))
-                    .collect())
+                let to_wing = NestedPlacement::new(wing_airfoil, chord_fraction)?;
+                Ok(flap.points.iter().map(|p| to_wing.apply(p)).collect())
             }
         }
+    }
+
+    /// The stowed section at `y_m` split into its elements (wing-section unit-chord u, v):
+    /// for a two-element flap, the main element cut at a cove ahead of the aft element, and
+    /// the aft element nested under its trailing edge; otherwise the whole flap as the main
+    /// element. Each element has the same point count at every y.
+    pub fn element_outlines(
+        &self,
+        y_m: f64,
+        wing_airfoil: &Airfoil,
+        points_per_side: usize,
+    ) -> Result<FlapElementOutlines> {
+        let (Some(aft), FlapSectionSpec::OwnSection { airfoil }) = (&self.spec.aft_element, &self.spec.section) else {
+            return Ok(FlapElementOutlines {
+                main: self.stowed_outline(y_m, wing_airfoil, points_per_side)?,
+                aft: None,
+            });
+        };
+        let flap = airfoil.resampled(points_per_side)?;
+        let aft_airfoil = aft.airfoil.resampled(points_per_side)?;
+        let in_flap = NestedPlacement::new(&flap, aft.chord_fraction)?;
+        let aft_in_flap: Vec<Point2<f64>> = aft_airfoil.points.iter().map(|p| in_flap.apply(p)).collect();
+        let main_in_flap = cut_host_outline(&flap, &aft_in_flap, aft.shroud_chord_fraction, points_per_side)?;
+        let to_wing = NestedPlacement::new(wing_airfoil, self.chord_fraction_at(y_m))?;
+        Ok(FlapElementOutlines {
+            main: main_in_flap.iter().map(|p| to_wing.apply(p)).collect(),
+            aft: Some(aft_in_flap.iter().map(|p| to_wing.apply(p)).collect()),
+        })
     }
 
     fn outline_error(&self, airfoil: &Airfoil) -> Error {
@@ -253,6 +321,35 @@ impl Flap {
             name: airfoil.name.clone(),
             reason: "flap cut-out station lies outside the wing section",
         }
+    }
+}
+
+/// Where an element with its own section sits nested in its host (the flap in the wing, the
+/// aft element in the flap): trailing edges coinciding, its chord (a `chord_fraction` of
+/// the host's) pointing at the host's mean line at `1 - chord_fraction`. Maps the element's
+/// unit-chord points (x from its leading edge) to the host's.
+struct NestedPlacement {
+    trailing_edge: Point2<f64>,
+    rotation: Rotation2<f64>,
+    chord_fraction: f64,
+}
+
+impl NestedPlacement {
+    fn new(host: &Airfoil, chord_fraction: f64) -> Result<Self> {
+        let trailing_edge = host.trailing_edge_midpoint();
+        let front_u = 1.0 - chord_fraction;
+        let front = Point2::new(front_u, host.mean_line_y(front_u)?);
+        let direction: Vector2<f64> = (trailing_edge - front).normalize();
+        Ok(Self {
+            trailing_edge,
+            rotation: Rotation2::new(direction.y.atan2(direction.x)),
+            chord_fraction,
+        })
+    }
+
+    /// The element's x = 1 sits on the host's trailing edge.
+    fn apply(&self, p: &Point2<f64>) -> Point2<f64> {
+        self.trailing_edge + self.rotation * (Vector2::new(p.x - 1.0, p.y) * self.chord_fraction)
     }
 }
 
@@ -267,8 +364,21 @@ pub(crate) fn cut_wing_outline(
     points_per_side: usize,
 ) -> Result<Vec<Point2<f64>>> {
     let flap_outline = flap.stowed_outline(y_m, airfoil, points_per_side)?;
-    let cove_u = cove_chord_fraction(&flap_outline);
-    let fraction = flap.spec.shroud_chord_fraction;
+    cut_host_outline(airfoil, &flap_outline, flap.spec.shroud_chord_fraction, points_per_side)
+}
+
+/// A host section (`airfoil`, unit chord) cut for the element nested in it (`nested`, in
+/// the host's coordinates): the airfoil back to a cove wall at the element's foremost point
+/// less [`COVE_GAP_CHORD_FRACTION`], and, with a shroud of `fraction` of the host chord, the
+/// upper skin on aft over the element's nose and its underside back to the wall. The wing
+/// is cut so for its flap, a two-element flap's main element for its aft element.
+fn cut_host_outline(
+    airfoil: &Airfoil,
+    nested: &[Point2<f64>],
+    fraction: f64,
+    points_per_side: usize,
+) -> Result<Vec<Point2<f64>>> {
+    let cove_u = cove_chord_fraction(nested);
     if fraction <= 0.0 {
         return crate::mesher::truncated_outline(airfoil, cove_u, points_per_side);
     }
@@ -281,11 +391,11 @@ pub(crate) fn cut_wing_outline(
         SHROUD_THICKNESS_CHORD_FRACTION
             + (SHROUD_TRAILING_EDGE_CHORD_FRACTION - SHROUD_THICKNESS_CHORD_FRACTION) * along
     };
-    // The flap's top at u: the highest crossing of its outline.
-    let flap_top = |u: f64| {
-        flap_outline
+    // The nested element's top at u: the highest crossing of its outline.
+    let nested_top = |u: f64| {
+        nested
             .iter()
-            .zip(flap_outline.iter().cycle().skip(1))
+            .zip(nested.iter().cycle().skip(1))
             .filter(|(a, b)| (a.x - u) * (b.x - u) <= 0.0 && a.x != b.x)
             .map(|(a, b)| a.y + (u - a.x) / (b.x - a.x) * (b.y - a.y))
             .fold(f64::NEG_INFINITY, f64::max)
@@ -294,7 +404,7 @@ pub(crate) fn cut_wing_outline(
         for k in 0..=32 {
             let u = front_u + (tip - front_u) * k as f64 / 32.0;
             let underside = airfoil.surface_y(u, Surface::Upper)? - thickness_at(u, tip);
-            if underside - flap_top(u) < SHROUD_CLEARANCE_CHORD_FRACTION {
+            if underside - nested_top(u) < SHROUD_CLEARANCE_CHORD_FRACTION {
                 return Ok(false);
             }
         }

@@ -68,7 +68,7 @@ pub use collision::{
     MassProperties, Proximity,
 };
 pub use error::{Error, Result};
-pub use flap::{Flap, FlapSectionSpec, FlapSpec, HingeSpec};
+pub use flap::{AftElementSpec, Flap, FlapElementOutlines, FlapSectionSpec, FlapSpec, HingeSpec};
 pub use mesh::{Aabb, MeshCheck, TriMesh};
 pub use parts::{MeshResolution, Part, PartKind, SectionOutline, WingModel};
 pub use rigid_fit::{fit_rigid_motion, FitSpeedGain, RigidFit};

@@ -128,22 +128,35 @@ impl<'a> Mesher<'a> {
         Ok(mesh)
     }
 
-    pub(crate) fn flap(&self, flap: &Flap) -> Result<TriMesh> {
+    /// The flap's main element (the whole flap for a single-element one) and its aft
+    /// element, if it has one.
+    pub(crate) fn flap(&self, flap: &Flap) -> Result<(TriMesh, Option<TriMesh>)> {
         let (a, b) = flap.body_span_m(&self.model.wing)?;
         let stations = self.stations(a, b);
         let mut sections = Vec::with_capacity(stations.len());
-        let mut outlines = Vec::with_capacity(stations.len());
+        let mut mains = Vec::with_capacity(stations.len());
+        let mut afts = Vec::with_capacity(stations.len());
         for &y in &stations {
             let section = self.section(y)?;
-            outlines.push(flap.stowed_outline(y, &section.airfoil, self.resolution.points_per_side)?);
+            let elements = flap.element_outlines(y, &section.airfoil, self.resolution.points_per_side)?;
+            mains.push(elements.main);
+            afts.extend(elements.aft);
             sections.push(section);
         }
-        let rings: Vec<_> = sections
-            .iter()
-            .zip(&consistent_trailing_edges(outlines))
-            .map(|(s, o)| self.to_ac(s, o))
-            .collect();
-        loft_closed(&rings, "flap")
+        let loft = |outlines: Vec<Vec<Point2<f64>>>, what: &'static str| {
+            let rings: Vec<_> = sections
+                .iter()
+                .zip(&consistent_trailing_edges(outlines))
+                .map(|(s, o)| self.to_ac(s, o))
+                .collect();
+            loft_closed(&rings, what)
+        };
+        let aft = if afts.is_empty() {
+            None
+        } else {
+            Some(loft(afts, "flap aft element")?)
+        };
+        Ok((loft(mains, "flap")?, aft))
     }
 }
 

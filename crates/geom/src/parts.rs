@@ -47,18 +47,43 @@ impl Default for MeshResolution {
 pub enum PartKind {
     /// Main wing skin (a shell: surface queries are right for it).
     WingSkin,
-    /// A flap body (stowed).
+    /// A flap body (stowed): a two-element flap's main element.
     Flap,
+    /// The aft element of a two-element flap (stowed), named `<flap>-aft`
+    /// ([`aft_element_name`]).
+    AftElement,
     /// A spar plate (solid).
     Spar,
     /// The torque tube (solid).
     TorqueTube,
 }
 
+/// The part name of the aft element of the flap called `flap`.
+pub fn aft_element_name(flap: &str) -> String {
+    format!("{flap}{AFT_ELEMENT_SUFFIX}")
+}
+
+/// What [`aft_element_name`] appends to the flap's name.
+const AFT_ELEMENT_SUFFIX: &str = "-aft";
+
+impl Part {
+    /// The flap this part is an element of, and whether it is the aft element: the flap's
+    /// own name for a [`PartKind::Flap`], the name [`aft_element_name`] was given for a
+    /// [`PartKind::AftElement`]; None for the wing's structure.
+    pub fn flap_element(&self) -> Option<(&str, bool)> {
+        match self.kind {
+            PartKind::Flap => Some((self.name.as_str(), false)),
+            PartKind::AftElement => self.name.strip_suffix(AFT_ELEMENT_SUFFIX).map(|flap| (flap, true)),
+            PartKind::WingSkin | PartKind::Spar | PartKind::TorqueTube => None,
+        }
+    }
+}
+
 /// One meshed part.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Part {
-    /// Name: "wing", the flap's name, the spar's name, or "torque-tube".
+    /// Name: "wing", the flap's name, its aft element's ([`aft_element_name`]), the spar's
+    /// name, or "torque-tube".
     pub name: String,
     /// Kind.
     pub kind: PartKind,
@@ -174,11 +199,19 @@ impl WingModel {
             mesh: mesher.wing_skin()?,
         }];
         for flap in &self.flaps {
+            let (main, aft) = mesher.flap(flap)?;
             parts.push(Part {
                 name: flap.spec().name.clone(),
                 kind: PartKind::Flap,
-                mesh: mesher.flap(flap)?,
+                mesh: main,
             });
+            if let Some(mesh) = aft {
+                parts.push(Part {
+                    name: aft_element_name(&flap.spec().name),
+                    kind: PartKind::AftElement,
+                    mesh,
+                });
+            }
         }
         for spar in &self.spars {
             let stations = mesher.stations(spar.y_start_m, spar.y_end_m);
@@ -235,7 +268,7 @@ pub struct SectionOutline {
 }
 
 impl WingModel {
-    /// Outlines of the wing skin, each stowed flap and each spar cut by the plane y = `y_m`
+    /// Outlines of the wing skin, each stowed flap (and aft element) and each spar cut by the plane y = `y_m`
     /// (the torque tube is not included), with `points_per_side` airfoil points per side:
     /// the same polygons the meshes are lofted through at that station.
     pub fn compute_section_outlines(&self, y_m: f64, points_per_side: usize) -> Result<Vec<SectionOutline>> {
@@ -268,14 +301,21 @@ impl WingModel {
         for flap in &self.flaps {
             let (a, b) = flap.body_span_m(&self.wing)?;
             if y_m >= a && y_m <= b {
-                let outline =
-                    consistent_trailing_edges(vec![flap.stowed_outline(y_m, &section.airfoil, points_per_side)?])
-                        .remove(0);
+                let elements = flap.element_outlines(y_m, &section.airfoil, points_per_side)?;
+                let main = consistent_trailing_edges(vec![elements.main]).remove(0);
                 outlines.push(SectionOutline {
                     name: flap.spec().name.clone(),
                     kind: PartKind::Flap,
-                    points_ac: mesher.to_ac(&section, &outline),
+                    points_ac: mesher.to_ac(&section, &main),
                 });
+                if let Some(aft) = elements.aft {
+                    let aft = consistent_trailing_edges(vec![aft]).remove(0);
+                    outlines.push(SectionOutline {
+                        name: aft_element_name(&flap.spec().name),
+                        kind: PartKind::AftElement,
+                        points_ac: mesher.to_ac(&section, &aft),
+                    });
+                }
             }
         }
         for spar in &self.spars {

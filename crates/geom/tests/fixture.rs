@@ -73,6 +73,7 @@ pub fn model() -> WingModel {
             section: FlapSectionSpec::OwnSection { airfoil: n63212() },
             side_gap_m: None,
             shroud_chord_fraction: 0.0,
+            aft_element: None,
         },
         FlapSpec {
             name: "outboard-flap".into(),
@@ -87,6 +88,7 @@ pub fn model() -> WingModel {
             section: FlapSectionSpec::CutOut,
             side_gap_m: None,
             shroud_chord_fraction: 0.0,
+            aft_element: None,
         },
     ];
     let spars = vec![

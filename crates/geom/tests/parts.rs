@@ -116,6 +116,7 @@ fn flap(y_inboard_m: f64, y_outboard_m: f64) -> FlapSpec {
         section: FlapSectionSpec::CutOut,
         side_gap_m: None,
         shroud_chord_fraction: 0.0,
+        aft_element: None,
     }
 }
 
@@ -221,6 +222,7 @@ mod random_wings {
                 section: if own_section { FlapSectionSpec::OwnSection { airfoil: tip } } else { FlapSectionSpec::CutOut },
                 side_gap_m: None,
             shroud_chord_fraction: 0.0,
+            aft_element: None,
             };
             let spar = SparSpec { name: "spar".into(), chord_fraction: 0.2, thickness_m: 0.01 * scale * taper, y_start_m: 0.2 * scale, y_end_m: 4.0 * scale };
             let model = WingModel::try_new(spec, vec![flap], vec![spar], None).unwrap();

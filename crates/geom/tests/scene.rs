@@ -54,6 +54,7 @@ pub fn scene_model(points_per_side: usize) -> WingModel {
         },
         side_gap_m: Some(0.040),
         shroud_chord_fraction: 0.0,
+        aft_element: None,
     };
     let spar = |name: &str, chord_fraction: f64| SparSpec {
         name: name.into(),

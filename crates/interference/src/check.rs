@@ -27,6 +27,10 @@ pub struct Assembly {
     /// The flaps' meshes, each moving with its carrying station's flap displacement; a part
     /// is named after its flap.
     pub flaps: Vec<Part>,
+    /// The aft elements of two-element flaps, each with the name of its flap: moving with
+    /// its carrying stations' aft-flap body (or fixed to the main element where a kind has
+    /// none); a part is named `<flap>-aft`.
+    pub aft_elements: Vec<(String, Part)>,
     /// Per station: every solid of the mechanism's bodies, with its role.
     pub stations: Vec<StationParts>,
 }
@@ -67,6 +71,8 @@ const NO_OPENING: &str =
     "no opening was cut in the skin for this station, so its parts cannot be checked against the skin";
 /// Why a part joined to the flap by a joint is not checked against the flap itself.
 const NO_SLOT: &str = "joined to the flap by design, and no slot was cut in the flap for this station";
+/// Why a part joined to an aft element by a joint is not checked against it.
+const NO_AFT_SLOT: &str = "joined to the flap's aft element by design, and no slot was cut in it for this station";
 
 /// A pair the check leaves out, and why (listed so nothing is skipped silently).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -158,6 +164,19 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
             jobs.push((None, flap, other));
         }
     }
+    // An aft element against the structure, every flap (its own main element: the slot
+    // between them must stay open) and every other aft element.
+    for (i, (_, aft)) in assembly.aft_elements.iter().enumerate() {
+        for fixed in &assembly.fixed {
+            jobs.push((None, aft, fixed));
+        }
+        for flap in &assembly.flaps {
+            jobs.push((None, aft, flap));
+        }
+        for (_, other) in &assembly.aft_elements[i + 1..] {
+            jobs.push((None, aft, other));
+        }
+    }
     let structure: Vec<&Part> = assembly
         .fixed
         .iter()
@@ -211,6 +230,32 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
                     (None, _) => jobs.push((name(), &part.part, flap)),
                     (Some(_), Some(slotted)) => jobs.push((name(), &part.part, slotted)),
                     (Some(_), None) => skip(&part.part, flap, NO_SLOT),
+                }
+            }
+        }
+        // Against the aft element of the flap it carries: not the body that moves it (the
+        // aft-flap body, or the flap body for a kind without one); what is joined to that
+        // body against the aft element with the station's slot cut; everything else whole.
+        let aft_body = station
+            .parts
+            .iter()
+            .find(|p| p.role == BodyRole::AftFlap)
+            .map(|p| p.body)
+            .or(flap_body);
+        for (flap, aft) in &assembly.aft_elements {
+            let carried = station.flap.as_deref() == Some(flap.as_str());
+            for part in &station.parts {
+                if !carried {
+                    jobs.push((name(), &part.part, aft));
+                } else if Some(part.body) == aft_body {
+                    continue;
+                } else if aft_body.and_then(|b| station.joint_between(b, part.body)).is_some() {
+                    match &station.slotted_aft_element {
+                        Some(slotted) => jobs.push((name(), &part.part, slotted)),
+                        None => skip(&part.part, aft, NO_AFT_SLOT),
+                    }
+                } else {
+                    jobs.push((name(), &part.part, aft));
                 }
             }
         }

@@ -14,12 +14,12 @@
 use std::sync::Arc;
 
 use flapwright_geom::{fit_rigid_motion, FitSpeedGain, RigidFit};
-use flapwright_mechanism::seam::{BodyRole, FlapMechanism};
+use flapwright_mechanism::seam::FlapMechanism;
 use nalgebra::{Isometry3, Point2, Point3};
 
 use crate::error::{Error, Result};
 use crate::part::Motion;
-use crate::station::lift;
+use crate::station::{lift, FlapElement};
 
 /// Largest number of section points a carrier contributes to the fit (evenly picked):
 /// enough to weigh the whole section, few enough for a pose in microseconds.
@@ -60,6 +60,8 @@ impl std::fmt::Debug for FlapCarrier {
 #[derive(Debug, Clone)]
 pub struct FittedFlapMotion {
     carriers: Vec<FlapCarrier>,
+    /// Each carrier's body that moves the element ([`FlapElement::carrier`]).
+    carrier_bodies: Vec<usize>,
     /// The fitted points stowed, aircraft frame, in carrier order.
     stowed_ac: Vec<Point3<f64>>,
     /// m per unit τ, for the `query` points given at construction.
@@ -70,14 +72,20 @@ pub struct FittedFlapMotion {
 }
 
 impl FittedFlapMotion {
-    /// The motion of the flap carried by `carriers` (two or more stations, each with a
-    /// section), with a speed bound valid for `query_ac` (the flap's vertices, stowed).
+    /// The motion of the flap (its main or aft `element`) carried by `carriers` (two or
+    /// more stations, each with a section of that element), with a speed bound valid for
+    /// `query_ac` (the element's vertices, stowed).
     ///
     /// # Errors
     /// [`Error::NoFlapBody`] when a carrier's mechanism has no flap body,
     /// [`Error::FlapFit`] when the sections cannot fix a rigid motion (fewer than three
     /// points in all, or all on one line).
-    pub fn try_new(flap: &str, carriers: Vec<FlapCarrier>, query_ac: &[Point3<f64>]) -> Result<Self> {
+    pub fn try_new(
+        flap: &str,
+        element: FlapElement,
+        carriers: Vec<FlapCarrier>,
+        query_ac: &[Point3<f64>],
+    ) -> Result<Self> {
         let fit_error = |source| Error::FlapFit {
             flap: flap.to_string(),
             source,
@@ -89,13 +97,12 @@ impl FittedFlapMotion {
         // How fast the fitted points move: each its station's flap body bound at its radius;
         // the gain bounds the fitted body by their root mean square.
         let (mut sum_squares, mut count) = (0.0_f64, 0usize);
+        let mut carrier_bodies = Vec::with_capacity(carriers.len());
         for carrier in &carriers {
-            let body = carrier
-                .mechanism
-                .bodies()
-                .iter()
-                .find(|b| b.role == BodyRole::Flap)
+            let (index, body) = element
+                .carrier(carrier.mechanism.as_ref())
                 .ok_or_else(|| Error::NoFlapBody { part: flap.to_string() })?;
+            carrier_bodies.push(index);
             let travel = carrier.mechanism.input_range().travel().abs();
             for p in &carrier.section_st {
                 let reach = (p - body.speed_bound.reference).norm();
@@ -109,6 +116,7 @@ impl FittedFlapMotion {
         fit_rigid_motion(&stowed_ac, &stowed_ac).map_err(fit_error)?;
         Ok(Self {
             carriers,
+            carrier_bodies,
             stowed_ac,
             speed_bound: FIT_SPEED_MARGIN * gain * root_mean_square,
             root_mean_square,
@@ -124,10 +132,10 @@ impl FittedFlapMotion {
     /// points to their positions) and how far the carriers' sections are from it.
     pub fn fit_at(&self, fraction: f64) -> std::result::Result<RigidFit, flapwright_mechanism::Error> {
         let mut targets = Vec::with_capacity(self.stowed_ac.len());
-        for carrier in &self.carriers {
+        for (carrier, &body) in self.carriers.iter().zip(&self.carrier_bodies) {
             let mechanism = &carrier.mechanism;
             let pose = mechanism.pose(mechanism.input_range().at_fraction(fraction))?;
-            let moved = carrier.aircraft_from_station * lift(&pose.flap);
+            let moved = carrier.aircraft_from_station * lift(&FlapElement::displacement(body, &pose));
             targets.extend(carrier.section_st.iter().map(|p| moved * Point3::new(p.x, p.y, 0.0)));
         }
         // The stowed points were fitted at construction, so only a non-finite pose fails.

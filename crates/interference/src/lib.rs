@@ -61,7 +61,7 @@ pub use fairing::{fairing_depth, FairingDepth, PlanarCapsule};
 pub use flap_motion::{fit_points, FittedFlapMotion, FlapCarrier, FIT_POINTS_PER_CARRIER, FIT_SPEED_MARGIN};
 pub use opening::{cut_opening, station_opening, OpenedSurface, Opening, OPENING_SAMPLES, UPWARD_FACE_COS};
 pub use part::{Fixed, Motion, Part};
-pub use station::{flap_part, planar_parts, station_parts, DeclaredContact, StationPart, StationParts};
+pub use station::{flap_part, planar_parts, station_parts, DeclaredContact, FlapElement, StationPart, StationParts};
 pub use sweep::{
     sweep_contact, sweep_pair, sweep_pair_for_verdict, JointSeparation, PairClearance, SweepSettings,
     JOINT_PENETRATION_GRID_M,

@@ -76,6 +76,9 @@ pub struct StationParts {
     /// Its flap with the slot cut (a sheet moving with the flap): the parts joined to the
     /// flap are checked against it.
     pub slotted_flap: Option<Part>,
+    /// Its flap's aft element with the same slot cut: the parts joined to the body that
+    /// moves it are checked against it.
+    pub slotted_aft_element: Option<Part>,
 }
 
 impl StationParts {
@@ -85,14 +88,16 @@ impl StationParts {
     }
 
     /// Cuts `opening` in each of `skins` (the part and its mesh, aircraft frame) and in the
-    /// station's flap (`flap`: the moving part and its stowed mesh), placed by
-    /// `aircraft_from_station`; the parts are then checked against what is left.
+    /// station's flap (`flap`: the moving part and its stowed mesh) and its aft element
+    /// (`aft_element`, likewise), placed by `aircraft_from_station`; the parts are then
+    /// checked against what is left.
     pub fn cut_openings(
         &mut self,
         mut opening: Opening,
         aircraft_from_station: &Isometry3<f64>,
         skins: &[(&Part, &TriMesh)],
         flap: Option<(&Part, &TriMesh)>,
+        aft_element: Option<(&Part, &TriMesh)>,
     ) -> Result<()> {
         let sheet = |part: &Part, mesh: &TriMesh, surface: OpenedSurface| -> Result<(Part, f64)> {
             let (left, removed_m2) = cut_opening(mesh, aircraft_from_station, &opening, surface);
@@ -111,17 +116,23 @@ impl StationParts {
             opened.push(sheet);
             skin_area_m2 += removed_m2;
         }
-        let slotted = match flap {
-            Some((part, mesh)) => {
-                let (sheet, removed_m2) = sheet(part, mesh, OpenedSurface::Flap)?;
-                opening.flap_area_m2 = removed_m2;
-                Some(sheet)
-            }
-            None => None,
+        let mut flap_area_m2 = 0.0;
+        let mut slot = |element: Option<(&Part, &TriMesh)>| -> Result<Option<Part>> {
+            element
+                .map(|(part, mesh)| {
+                    let (sheet, removed_m2) = sheet(part, mesh, OpenedSurface::Flap)?;
+                    flap_area_m2 += removed_m2;
+                    Ok(sheet)
+                })
+                .transpose()
         };
+        let slotted = slot(flap)?;
+        let slotted_aft = slot(aft_element)?;
+        opening.flap_area_m2 = flap_area_m2;
         opening.skin_area_m2 = skin_area_m2;
         self.opened_skins = opened;
         self.slotted_flap = slotted;
+        self.slotted_aft_element = slotted_aft;
         self.opening = Some(opening);
         Ok(())
     }
@@ -164,16 +175,46 @@ impl BodyMotion {
     fn displacement(&self, fraction: f64) -> std::result::Result<Isometry2<f64>, flapwright_mechanism::Error> {
         let input = self.mechanism.input_range().at_fraction(fraction);
         let pose = self.mechanism.pose(input)?;
-        Ok(if self.body == FLAP_MESH {
-            pose.flap
-        } else {
-            pose.bodies[self.body]
-        })
+        Ok(FlapElement::displacement(self.body, &pose))
     }
 }
 
 /// Marks the motion of a flap's 3D mesh: it follows the pose's flap displacement.
-const FLAP_MESH: usize = usize::MAX;
+pub(crate) const FLAP_MESH: usize = usize::MAX;
+
+/// Which element of a flap a 3D part is: what moves it is written in roles.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FlapElement {
+    /// The flap, or a two-element flap's main element: moves with the pose's flap
+    /// displacement (the [`BodyRole::Flap`] body).
+    Main,
+    /// A two-element flap's aft element: moves with the [`BodyRole::AftFlap`] body, or
+    /// with the main element where the kind has none (the aft element fixed to it).
+    Aft,
+}
+
+impl FlapElement {
+    /// The body that carries the element in `mechanism`: its index ([`FLAP_MESH`] for the
+    /// pose's flap displacement) and the body, for its speed bound.
+    pub(crate) fn carrier(self, mechanism: &dyn FlapMechanism) -> Option<(usize, &flapwright_mechanism::seam::Body)> {
+        let bodies = mechanism.bodies();
+        let aft = match self {
+            Self::Main => None,
+            Self::Aft => flapwright_mechanism::seam::aft_flap_body(bodies),
+        };
+        match aft {
+            Some(k) => Some((k, &bodies[k])),
+            None => bodies.iter().find(|b| b.role == BodyRole::Flap).map(|b| (FLAP_MESH, b)),
+        }
+    }
+
+    /// The element's displacement from stowed in `pose`, for the body index
+    /// [`FlapElement::carrier`] gave.
+    pub(crate) fn displacement(body: usize, pose: &flapwright_mechanism::seam::MechanismPose) -> Isometry2<f64> {
+        pose.aft_flap((body != FLAP_MESH).then_some(body))
+    }
+}
 
 impl Motion for BodyMotion {
     fn pose_ac(&self, fraction: f64) -> std::result::Result<Isometry3<f64>, flapwright_mechanism::Error> {
@@ -201,21 +242,20 @@ impl Motion for BodyMotion {
     }
 }
 
-/// A flap's 3D mesh moving with the flap displacement of the station that carries it
-/// (`mechanism`, placed by `aircraft_from_station`); `vertices_ac` bound its speed: the
-/// flap body's bound at the vertex farthest from the station z line through its reference
-/// point.
+/// A flap's 3D mesh (its main or aft `element`) moving with the displacement of the body
+/// that carries it at the station (`mechanism`, placed by `aircraft_from_station`);
+/// `vertices_ac` bound its speed: that body's bound at the vertex farthest from the
+/// station z line through its reference point.
 pub fn flap_part(
     name: &str,
+    element: FlapElement,
     shape: CollisionShape,
     vertices_ac: &[Point3<f64>],
     aircraft_from_station: &Isometry3<f64>,
     mechanism: &Arc<dyn FlapMechanism>,
 ) -> Result<Part> {
-    let flap_body = mechanism
-        .bodies()
-        .iter()
-        .find(|b| b.role == BodyRole::Flap)
+    let (body, flap_body) = element
+        .carrier(mechanism.as_ref())
         .ok_or_else(|| Error::NoFlapBody { part: name.to_string() })?;
     let bound = &flap_body.speed_bound;
     // The lifted planar motion turns about the station's z axis: a point's speed grows
@@ -234,7 +274,7 @@ pub fn flap_part(
         shape,
         BodyMotion {
             mechanism: Arc::clone(mechanism),
-            body: FLAP_MESH,
+            body,
             aircraft_from_station: *aircraft_from_station,
             station_from_aircraft: aircraft_from_station.inverse(),
             offset: Isometry3::identity(),
@@ -349,6 +389,7 @@ pub fn station_parts(
         opening: None,
         opened_skins: Vec::new(),
         slotted_flap: None,
+        slotted_aft_element: None,
     })
 }
 

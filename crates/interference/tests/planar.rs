@@ -95,10 +95,18 @@ fn a_flap_mesh_bound_counts_the_distance_from_the_axis_not_the_span() {
     let near = [Point3::new(-0.35, 0.33, 0.0), Point3::new(0.1, 0.3, 0.0)];
     let far: Vec<Point3<f64>> = near.iter().map(|p| p + nalgebra::Vector3::new(0.0, 0.0, 2.0)).collect();
     let shape = || flapwright_geom::collision::CollisionShape::ball(0.01).unwrap();
-    let at_station =
-        flapwright_interference::flap_part("flap", shape(), &near, &Isometry3::identity(), &track).unwrap();
+    let at_station = flapwright_interference::flap_part(
+        "flap",
+        flapwright_interference::FlapElement::Main,
+        shape(),
+        &near,
+        &Isometry3::identity(),
+        &track,
+    )
+    .unwrap();
     let spanwise = flapwright_interference::flap_part(
         "flap",
+        flapwright_interference::FlapElement::Main,
         shape(),
         &[near.as_slice(), far.as_slice()].concat(),
         &Isometry3::identity(),

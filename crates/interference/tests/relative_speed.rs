@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use flapwright_geom::collision::{compute_distance, CollisionShape};
 use flapwright_interference::{
-    flap_part, station_parts, sweep_pair, FittedFlapMotion, FlapCarrier, Motion, Part, SweepSettings,
+    flap_part, station_parts, sweep_pair, FittedFlapMotion, FlapCarrier, FlapElement, Motion, Part, SweepSettings,
 };
 use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec, FlapMechanism};
 use nalgebra::{Isometry3, Point2, Point3, Vector3};
@@ -85,6 +85,7 @@ fn a_mechanism_bodys_field_bound_holds_off_the_body() {
     let shape = CollisionShape::ball(0.01).unwrap();
     let flap = flap_part(
         "flap",
+        FlapElement::Main,
         shape,
         &[Point3::new(-0.3, 0.3, 0.0)],
         &Isometry3::identity(),
@@ -119,7 +120,8 @@ fn a_fitted_flaps_field_bound_holds_off_the_flap() {
         .iter()
         .flat_map(|&z| section.iter().map(move |p| Point3::new(p.x, p.y, z)))
         .collect();
-    let motion = FittedFlapMotion::try_new("flap", vec![carrier(0.0), carrier(2.0)], &vertices).unwrap();
+    let motion =
+        FittedFlapMotion::try_new("flap", FlapElement::Main, vec![carrier(0.0), carrier(2.0)], &vertices).unwrap();
     // Near the first station's plane, where its parts are, and beyond the flap's far end.
     let mut points = grid_around(Point3::new(-0.3, 0.2, 0.0));
     points.extend(grid_around(Point3::new(-0.3, 0.2, 2.5)));

@@ -190,8 +190,13 @@ impl Actuator {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum BodyRole {
-    /// The flap and what is rigid with it (fittings, pins, brackets).
+    /// The flap and what is rigid with it (fittings, pins, brackets): a two-element flap's
+    /// main element.
     Flap,
+    /// The aft element of a two-element flap (second flap or vane) and what is rigid with
+    /// it, where the mechanism moves it relative to the main element; a kind without such
+    /// a body carries the aft element fixed to the main one.
+    AftFlap,
     /// A link between pivots.
     Link,
     /// A track or slot fixed to the wing.
@@ -452,6 +457,20 @@ impl MechanismPose {
     pub fn point(&self, name: &str) -> Option<Point2<f64>> {
         self.points.iter().find(|p| p.name == name).map(|p| p.position)
     }
+
+    /// The displacement of a two-element flap's aft element: that of the body
+    /// [`aft_flap_body`] found, or the main element's ([`MechanismPose::flap`]) where there
+    /// is none (the aft element fixed to the main one).
+    pub fn aft_flap(&self, aft_body: Option<usize>) -> Isometry2<f64> {
+        aft_body.map_or(self.flap, |k| self.bodies[k])
+    }
+}
+
+/// The index of the body that moves a two-element flap's aft element (the one with
+/// [`BodyRole::AftFlap`]), None where the kind has none: the aft element then stays fixed
+/// to the main element.
+pub fn aft_flap_body(bodies: &[Body]) -> Option<usize> {
+    bodies.iter().position(|b| b.role == BodyRole::AftFlap)
 }
 
 /// How far a pose is from failing.

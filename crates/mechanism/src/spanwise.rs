@@ -97,7 +97,7 @@ pub fn spanwise_layout(mechanism: &dyn FlapMechanism) -> Result<Vec<Vec<f64>>> {
         .flat_map(|(b, body)| (0..body.solids.len()).map(move |s| (b, s)))
         .collect();
     let priority = |role: BodyRole| match role {
-        BodyRole::Flap => 0,
+        BodyRole::Flap | BodyRole::AftFlap => 0,
         BodyRole::Link => 1,
         BodyRole::Carriage => 2,
         BodyRole::Track => 3,

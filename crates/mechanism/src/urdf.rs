@@ -49,6 +49,7 @@
 //!     flap_name: "flap".into(),
 //!     owns_flap: true,
 //!     flap_mesh: Some("meshes/flap.stl".into()),
+//!     aft_element: None,
 //!     flap_inertia: None,
 //!     bodies: vec![],
 //! }];
@@ -67,8 +68,10 @@
 //! Geometry and inertia: each body's link shows its solids ([`BodyGeometry`]: mesh files
 //! in the aircraft frame, stowed) as visual and collision elements, and carries the body's
 //! mass, centre of mass and inertia ([`RigidInertia`], aircraft frame, turned into the
-//! link frame here); the flap link its mesh and [`StationMechanism3d::flap_inertia`]. A
-//! body without geometry gets an empty link (mass 0).
+//! link frame here); the flap link its mesh and [`StationMechanism3d::flap_inertia`]; a
+//! two-element flap's aft element a link of its own, fixed to the link of the body that
+//! moves it ([`StationMechanism3d::aft_element`]). A body without geometry gets an empty
+//! link (mass 0).
 //!
 //! Limitations: joint efforts are 0 (unknown here); joint and velocity limits are the
 //! extremes of 129 samples of the deployment (widened by half the largest step) at the
@@ -125,6 +128,11 @@ pub struct StationMechanism3d<'a> {
     /// Flap mesh filename (relative to the URDF), vertices in the aircraft frame with the
     /// flap stowed; only on the owning station.
     pub flap_mesh: Option<String>,
+    /// A two-element flap's aft element: its link's name and mesh (vertices in the aircraft
+    /// frame, stowed); only on the owning station. Its link hangs fixed off the link of
+    /// the body that moves it (`seam::aft_flap_body`), or off the flap's where the kind has
+    /// none.
+    pub aft_element: Option<MeshRef>,
     /// The flap's mass properties (owning station only; stowed, aircraft frame).
     pub flap_inertia: Option<RigidInertia>,
     /// What each body's link shows and weighs; bodies not listed get empty links.

@@ -75,6 +75,7 @@ fn two_stations<'a>(inner: &'a CircularArcTrack, outer: &'a CircularArcTrack) ->
             flap_name: "flap".to_owned(),
             owns_flap: true,
             flap_mesh: Some("meshes/flap.stl".to_owned()),
+            aft_element: None,
             flap_inertia: None,
             bodies: Vec::new(),
         },
@@ -85,6 +86,7 @@ fn two_stations<'a>(inner: &'a CircularArcTrack, outer: &'a CircularArcTrack) ->
             flap_name: "flap".to_owned(),
             owns_flap: false,
             flap_mesh: None,
+            aft_element: None,
             flap_inertia: None,
             bodies: Vec::new(),
         },
@@ -187,6 +189,7 @@ fn bad_inputs_are_named_errors() {
         flap_name: "flap".to_owned(),
         owns_flap,
         flap_mesh: flap_mesh.map(str::to_owned),
+        aft_element: None,
         flap_inertia: None,
         bodies: Vec::new(),
     };
@@ -240,6 +243,7 @@ fn trajectory_serialises_with_its_documented_keys() {
         flap_name: "flap".to_owned(),
         owns_flap: true,
         flap_mesh: None,
+        aft_element: None,
         flap_inertia: None,
         bodies: Vec::new(),
     }];

@@ -58,6 +58,8 @@ fn materials() -> Vec<Material> {
         colour("carriage", [0.55, 0.25, 0.65, 1.0]),
         colour("actuator", [0.95, 0.80, 0.15, 1.0]),
         colour("support", [0.45, 0.30, 0.20, 1.0]),
+        colour("flap-aft-element", [0.55, 0.68, 0.85, 1.0]),
+        colour("aft-flap-fitting", [0.85, 0.55, 0.20, 1.0]),
     ]
 }
 
@@ -67,12 +69,14 @@ fn material_of_kind(kind: PartKind) -> usize {
         PartKind::Spar => 1,
         PartKind::TorqueTube => 2,
         PartKind::Flap => 3,
+        PartKind::AftElement => 10,
     }
 }
 
 fn material_of_role(role: BodyRole) -> usize {
     match role {
         BodyRole::Flap => 4,
+        BodyRole::AftFlap => 11,
         BodyRole::Link => 5,
         BodyRole::Track => 6,
         BodyRole::Carriage => 7,
@@ -125,7 +129,7 @@ pub fn write_gltf(
     let mut bodies = Vec::new();
     let mut motions: Vec<Option<std::sync::Arc<dyn Motion>>> = Vec::new();
     for part in meshed {
-        let motion: Option<std::sync::Arc<dyn Motion>> = if part.kind == PartKind::Flap {
+        let motion: Option<std::sync::Arc<dyn Motion>> = if part.flap_element().is_some() {
             let shape =
                 CollisionShape::from_mesh(&part.mesh).with_context(|| format!("collision shape of {}", part.name))?;
             let flap = crate::pipeline::interference::moving_flap(part, shape, records)?;

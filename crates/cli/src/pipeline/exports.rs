@@ -45,7 +45,7 @@ pub fn write_urdf(
     records: &[StationRecord],
     out: &StagedDir,
 ) -> Result<UrdfExport> {
-    let flap_names: Vec<&str> = scene.flap.iter().map(|f| f.name.as_str()).collect();
+    let flap_names: Vec<String> = scene.flap.iter().flat_map(|f| f.part_names()).collect();
     let mesh = |p: &PartReport| {
         p.stl_file.clone().map(|filename| MeshRef {
             name: p.name.clone(),
@@ -56,7 +56,7 @@ pub fn write_urdf(
         name: "wing_structure".into(),
         meshes: parts
             .iter()
-            .filter(|p| !flap_names.contains(&p.name.as_str()))
+            .filter(|p| !flap_names.contains(&p.name))
             .filter_map(mesh)
             .collect(),
     };
@@ -85,6 +85,17 @@ pub fn write_urdf(
                         .iter()
                         .find(|p| p.name == flap_name)
                         .and_then(|p| p.stl_file.clone())
+                } else {
+                    None
+                },
+                aft_element: if owns_flap {
+                    let aft = flapwright_geom::parts::aft_element_name(&flap_name);
+                    parts.iter().find(|p| p.name == aft).and_then(|p| {
+                        p.stl_file.clone().map(|filename| MeshRef {
+                            name: aft.clone(),
+                            filename,
+                        })
+                    })
                 } else {
                     None
                 },
@@ -194,6 +205,14 @@ fn style_of(part: &str, flap_names: &[String]) -> PartStyle {
     }
 }
 
+/// A station's own flap section, stowed (station frame, m): the main element's polygons
+/// and the aft element's, each moved by the body that carries it.
+#[derive(Default)]
+struct FlapOutlines {
+    main: Vec<Vec<Point2<f64>>>,
+    aft: Vec<Vec<Point2<f64>>>,
+}
+
 /// The mechanism at actuator input `input`, from the seam: each moving body's solids as
 /// links (skeletons), its named points as joints, the flap outline displaced with the flap.
 /// The stowed snapshot also draws the fixed support structure (struts, trusses); fixed
@@ -202,9 +221,10 @@ fn snapshot(
     mechanism: &dyn FlapMechanism,
     label: &str,
     input: f64,
-    flap_outline: &[Vec<Point2<f64>>],
+    flap_outline: &FlapOutlines,
 ) -> Result<MechanismSnapshot> {
     let pose = mechanism.pose(input)?;
+    let aft = pose.aft_flap(flapwright_mechanism::seam::aft_flap_body(mechanism.bodies()));
     let with_supports = label == "stowed";
     let links = mechanism
         .bodies()
@@ -222,8 +242,15 @@ fn snapshot(
         label: label.into(),
         deflection_deg: pose.deflection_rad.to_degrees(),
         flap_outline: flap_outline
+            .main
             .iter()
             .map(|polygon| polygon.iter().map(|p| pose.flap * p).collect())
+            .chain(
+                flap_outline
+                    .aft
+                    .iter()
+                    .map(|polygon| polygon.iter().map(|p| aft * p).collect()),
+            )
             .collect(),
         links,
         joints: pose
@@ -245,7 +272,7 @@ pub fn write_svgs(
     interference: Option<&InterferenceReport>,
     out: &StagedDir,
 ) -> Result<Vec<String>> {
-    let flap_names: Vec<String> = scene.flap.iter().map(|f| f.name.clone()).collect();
+    let flap_names: Vec<String> = scene.flap.iter().flat_map(|f| f.part_names()).collect();
     let mut files = Vec::new();
     for record in records {
         let mechanism = record.mechanism.as_ref();
@@ -295,13 +322,27 @@ pub fn write_svgs(
                 (!s.polygons.is_empty()).then_some(s)
             })
             .collect();
-        // The station's own flap moves with its mechanism; a neighbouring flap the plane cuts
-        // stays drawn where it is stowed.
-        let flap_outline: Vec<Vec<Point2<f64>>> = sections
-            .iter()
-            .filter(|s| matches!(s.kind, PartStyle::Flap) && record.flap.as_deref() == Some(s.part.as_str()))
-            .flat_map(|s| s.polygons.clone())
-            .collect();
+        // The station's own flap moves with its mechanism (a two-element flap's aft element
+        // with the body that carries it); a neighbouring flap the plane cuts stays drawn
+        // where it is stowed.
+        let own = |part: &str| record.flap.as_deref() == Some(part);
+        let own_aft = |part: &str| {
+            record
+                .flap
+                .as_deref()
+                .is_some_and(|flap| part == flapwright_geom::parts::aft_element_name(flap))
+        };
+        let outline_of = |wanted: &dyn Fn(&str) -> bool| -> Vec<Vec<Point2<f64>>> {
+            sections
+                .iter()
+                .filter(|s| matches!(s.kind, PartStyle::Flap) && wanted(&s.part))
+                .flat_map(|s| s.polygons.clone())
+                .collect()
+        };
+        let flap_outline = FlapOutlines {
+            main: outline_of(&own),
+            aft: outline_of(&own_aft),
+        };
         // The flap's settings (validation keeps them within the rotation range); a station
         // without a flap shows the middle and the end of its range.
         let (takeoff, landing) = record
@@ -332,7 +373,12 @@ pub fn write_svgs(
         ];
         let mut swept = Vec::new();
         for k in 0..=20 {
-            let s = snapshot(mechanism, "", input.at_fraction(k as f64 / 20.0), &[])?;
+            let s = snapshot(
+                mechanism,
+                "",
+                input.at_fraction(k as f64 / 20.0),
+                &FlapOutlines::default(),
+            )?;
             swept.extend(s.links.into_iter().flat_map(|l| l.points));
         }
         let envelope = vec![convex_hull(swept)];
@@ -377,11 +423,16 @@ pub fn write_svgs(
                 part: Some(part),
                 at_parameter,
                 ..
-            }) => snapshot(mechanism, "", input.at_fraction(*at_parameter), &[])?
-                .links
-                .into_iter()
-                .filter(|link| &link.name == part)
-                .collect(),
+            }) => snapshot(
+                mechanism,
+                "",
+                input.at_fraction(*at_parameter),
+                &FlapOutlines::default(),
+            )?
+            .links
+            .into_iter()
+            .filter(|link| &link.name == part)
+            .collect(),
             _ => Vec::new(),
         };
         let station_from_aircraft = record

@@ -72,6 +72,36 @@ pub struct FlapPositionReport {
     /// [`rigid_flap_settings`]); empty for a flap with one station.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub rigid_flap: Vec<RigidFlapSetting>,
+    /// A two-element flap's second slot: the aft element behind the main element.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub aft_slot: Option<AftSlotReport>,
+}
+
+/// The second slot of a two-element flap: gap and overlap of the aft element behind the
+/// main element (the `003_...` definitions with the main element as the wing: the lip is
+/// the main element's upper trailing edge), at the same settings, in the main element's
+/// frame (the aft element's displacement relative to the main element's).
+#[derive(Debug, Clone, Serialize)]
+pub struct AftSlotReport {
+    /// The main element's trailing edge (upper lip of its cove), stowed, station frame (m).
+    pub trailing_edge_st_m: [f64; 2],
+    /// The flap's local chord the percentages refer to (m): the main element's nose to the
+    /// aft element's trailing edge, stowed.
+    pub flap_chord_m: f64,
+    /// Stowed, take-off and landing.
+    pub settings: Vec<AftSlotSetting>,
+}
+
+/// The second slot at one setting.
+#[derive(Debug, Clone, Serialize)]
+pub struct AftSlotSetting {
+    /// "stowed", "takeoff" or "landing".
+    pub setting: String,
+    /// The aft element's rotation relative to the main element (deg, trailing edge down).
+    pub relative_deflection_deg: f64,
+    /// Gap and overlap (m and % of the flap chord).
+    #[serde(flatten)]
+    pub position: GapOverlap,
 }
 
 /// How the rigid flap moves one station's setting from where the station's own gap and
@@ -253,7 +283,7 @@ pub fn synthesis_context(
         wing: placed.polygons_of(|name| name == "wing"),
         flap: placed.polygons_of(|name| name == flap.name),
         // Spars and the torque tube; other flaps' sections are not structure.
-        structure: placed.polygons_of(|name| name != "wing" && !flaps.iter().any(|f| f.name == name)),
+        structure: placed.polygons_of(|name| name != "wing" && !flaps.iter().any(|f| f.owns_part(name))),
         lip: None,
         lip_clearance_m: 0.0,
     };
@@ -329,43 +359,80 @@ fn flap_position(
         return Ok(None);
     };
     let seam = record.mechanism.as_ref();
-    let settings = [
+    let named = [
         ("stowed", 0.0),
         ("takeoff", flap.settings.takeoff_deg),
         ("landing", flap.settings.landing_deg),
-    ]
-    .into_iter()
-    .map(|(setting, deflection_deg)| {
-        // A rigid flap's setting is at its rotation as this plane sees it.
-        let deflection_deg = record
-            .rigid_flap
-            .iter()
-            .find(|r| r.setting == setting)
-            .map_or(deflection_deg, |r| r.deflection_in_plane_deg);
-        // Where the mechanism puts the flap at this deflection: any planar motion.
-        let pose = seam.pose(seam.input_at_deflection(deflection_deg.to_radians())?)?;
-        let (target_gap_percent_chord, target_overlap_percent_chord) = flap.settings.targets(setting);
-        let sealed_gap_m = target_gap_percent_chord.and_then(|gap| {
-            let (gap_m, sealed) =
-                structural_gap_m(gap, measure.chord_m(), flap.settings.sealed_gap_m(required_clearance_m));
-            sealed.then_some(gap_m)
-        });
-        Ok(SettingPosition {
-            sealed_gap_m,
-            setting: setting.into(),
-            deflection_deg,
-            position: measure.at_displacement(&pose.flap),
-            target_gap_percent_chord,
-            target_overlap_percent_chord,
+    ];
+    let mut aft_settings = Vec::new();
+    let aft_measure = match &record.placed {
+        Some(placed) if flap.aft_element.is_some() => {
+            let aft_name = flapwright_geom::parts::aft_element_name(&flap.name);
+            let (main, aft) = (
+                placed.polygons_of(|name| name == flap.name),
+                placed.polygons_of(|name| name == aft_name),
+            );
+            if main.is_empty() || aft.is_empty() {
+                None
+            } else {
+                Some(
+                    FlapBehindWing::new(&main, &aft)
+                        .with_context(|| format!("second slot of flap {} at station {}", flap.name, record.station))?,
+                )
+            }
+        }
+        _ => None,
+    };
+    let aft_body = flapwright_mechanism::seam::aft_flap_body(seam.bodies());
+    let settings = named
+        .into_iter()
+        .map(|(setting, deflection_deg)| {
+            // A rigid flap's setting is at its rotation as this plane sees it.
+            let deflection_deg = record
+                .rigid_flap
+                .iter()
+                .find(|r| r.setting == setting)
+                .map_or(deflection_deg, |r| r.deflection_in_plane_deg);
+            // Where the mechanism puts the flap at this deflection: any planar motion.
+            let pose = seam.pose(seam.input_at_deflection(deflection_deg.to_radians())?)?;
+            if let Some(aft_measure) = &aft_measure {
+                let relative = pose.flap.inverse() * pose.aft_flap(aft_body);
+                aft_settings.push(AftSlotSetting {
+                    setting: setting.into(),
+                    relative_deflection_deg: relative.rotation.angle().to_degrees(),
+                    position: aft_measure.at_displacement(&relative),
+                });
+            }
+            let (target_gap_percent_chord, target_overlap_percent_chord) = flap.settings.targets(setting);
+            let sealed_gap_m = target_gap_percent_chord.and_then(|gap| {
+                let (gap_m, sealed) =
+                    structural_gap_m(gap, measure.chord_m(), flap.settings.sealed_gap_m(required_clearance_m));
+                sealed.then_some(gap_m)
+            });
+            Ok(SettingPosition {
+                sealed_gap_m,
+                setting: setting.into(),
+                deflection_deg,
+                position: measure.at_displacement(&pose.flap),
+                target_gap_percent_chord,
+                target_overlap_percent_chord,
+            })
         })
-    })
-    .collect::<Result<Vec<_>>>()?;
+        .collect::<Result<Vec<_>>>()?;
     let te = measure.trailing_edge();
     Ok(Some(FlapPositionReport {
         trailing_edge_st_m: [te.x, te.y],
         local_chord_m: measure.chord_m(),
         settings,
         rigid_flap: record.rigid_flap.clone(),
+        aft_slot: aft_measure.map(|measure| {
+            let te = measure.trailing_edge();
+            AftSlotReport {
+                trailing_edge_st_m: [te.x, te.y],
+                flap_chord_m: measure.chord_m(),
+                settings: aft_settings,
+            }
+        }),
     }))
 }
 

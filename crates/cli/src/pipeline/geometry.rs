@@ -3,7 +3,7 @@
 use std::path::Path;
 
 use anyhow::{Context, Result};
-use flapwright_geom::flap::{FlapSectionSpec, FlapSpec, HingeSpec};
+use flapwright_geom::flap::{AftElementSpec, FlapSectionSpec, FlapSpec, HingeSpec};
 use flapwright_geom::parts::{MeshResolution, Part, PartKind, WingModel};
 use flapwright_geom::structure::{SparSpec, TorqueTubeSpec};
 use flapwright_geom::wing::{PanelSpec, SweepReference, WingSectionSpec, WingSpec};
@@ -78,7 +78,17 @@ pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) ->
                         .with_context(|| format!("flap[{i}].airfoil"))?,
                 },
             };
+            let aft_element = match &f.aft_element {
+                None => None,
+                Some(aft) => Some(AftElementSpec {
+                    airfoil: crate::scene::load_airfoil(&aft.airfoil, scene_dir, pps)
+                        .with_context(|| format!("flap[{i}].aft_element.airfoil"))?,
+                    chord_fraction: aft.chord_fraction,
+                    shroud_chord_fraction: aft.shroud_chord_fraction.unwrap_or(0.0),
+                }),
+            };
             Ok(FlapSpec {
+                aft_element,
                 name: f.name.clone(),
                 y_inboard_m: f.y_inboard_m,
                 y_outboard_m: f.y_outboard_m,
@@ -201,6 +211,7 @@ fn kind_name(kind: PartKind) -> &'static str {
     match kind {
         PartKind::WingSkin => "wing-skin",
         PartKind::Flap => "flap",
+        PartKind::AftElement => "flap-aft-element",
         PartKind::Spar => "spar",
         PartKind::TorqueTube => "torque-tube",
     }

@@ -7,7 +7,7 @@ use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::parts::{Part as MeshPart, PartKind};
 use flapwright_interference::{
     check_assembly, fairing_depth, fit_points, flap_part, planar_parts, station_opening, station_parts, Assembly,
-    FittedFlapMotion, FlapCarrier, InterferenceReport, Part, Requirements, SweepSettings,
+    FittedFlapMotion, FlapCarrier, FlapElement, InterferenceReport, Part, Requirements, SweepSettings,
 };
 
 use crate::pipeline::mechanisms::StationRecord;
@@ -41,9 +41,11 @@ pub fn assembly(
     let mut fixed = Vec::new();
     let mut skins = Vec::new();
     let mut flaps = Vec::new();
+    let mut aft_elements = Vec::new();
     // Meshes the openings are cut in: skins, then each flap (by name).
     let mut skin_meshes: Vec<&flapwright_geom::TriMesh> = Vec::new();
     let mut flap_meshes: Vec<&flapwright_geom::TriMesh> = Vec::new();
+    let mut aft_meshes: Vec<&flapwright_geom::TriMesh> = Vec::new();
     for part in meshed {
         let shape =
             CollisionShape::from_mesh(&part.mesh).with_context(|| format!("collision shape of {}", part.name))?;
@@ -51,6 +53,14 @@ pub fn assembly(
             PartKind::Flap => {
                 flaps.push(moving_flap(part, shape, records)?);
                 flap_meshes.push(&part.mesh);
+            }
+            PartKind::AftElement => {
+                let flap = part
+                    .flap_element()
+                    .map(|(flap, _)| flap.to_string())
+                    .unwrap_or_default();
+                aft_elements.push((flap, moving_flap(part, shape, records)?));
+                aft_meshes.push(&part.mesh);
             }
             kind => {
                 if kind == PartKind::WingSkin {
@@ -99,7 +109,11 @@ pub fn assembly(
                 let index = flaps.iter().position(|f| f.name == name)?;
                 Some((&flaps[index], flap_meshes[index]))
             });
-            parts.cut_openings(opening, frame, &skin_parts, flap)?;
+            let aft_element = r.flap.as_deref().and_then(|name| {
+                let index = aft_elements.iter().position(|(flap, _)| flap == name)?;
+                Some((&aft_elements[index].1, aft_meshes[index]))
+            });
+            parts.cut_openings(opening, frame, &skin_parts, flap, aft_element)?;
             Ok(parts)
         })
         .collect::<Result<Vec<_>>>()?;
@@ -114,6 +128,7 @@ pub fn assembly(
         fixed,
         skins,
         flaps,
+        aft_elements,
         stations,
     };
     // A share of each station's local flap chord, where the scene asks for one.
@@ -123,7 +138,7 @@ pub fn assembly(
             .filter_map(|r| {
                 let placed = r.placed.as_ref()?;
                 let flap = r.flap.as_deref()?;
-                let chord = local_chord_m(&placed.polygons_of(|name| name == flap));
+                let chord = local_chord_m(&whole_flap_polygons(placed, flap));
                 Some((r.station.clone(), percent / 100.0 * chord))
             })
             .filter(|(_, clearance)| *clearance > settings.required_clearance_m)
@@ -138,15 +153,17 @@ pub fn assembly(
     Ok((assembly, required, sweep))
 }
 
-/// The flap `part` (its collision `shape`) moving as its stations move it: exactly with
-/// the one station's flap displacement, or by the rigid motion fitted to several.
+/// The flap element `part` (a flap or an aft element, its collision `shape`) moving as its
+/// stations move it: exactly with the one station's displacement of the body carrying it,
+/// or by the rigid motion fitted to several.
 pub fn moving_flap(part: &MeshPart, shape: CollisionShape, records: &[StationRecord]) -> Result<Part> {
+    let (flap, element) = flap_element(part)?;
     let carriers: Vec<&StationRecord> = records
         .iter()
-        .filter(|record| record.flap.as_deref() == Some(part.name.as_str()))
+        .filter(|record| record.flap.as_deref() == Some(flap))
         .collect();
     let Some(first) = carriers.first() else {
-        anyhow::bail!("flap {} has no station", part.name);
+        anyhow::bail!("flap {flap} has no station");
     };
     if carriers.len() == 1 {
         let placed = first
@@ -156,22 +173,33 @@ pub fn moving_flap(part: &MeshPart, shape: CollisionShape, records: &[StationRec
         // One station: the flap follows its planar displacement exactly.
         Ok(flap_part(
             &part.name,
+            element,
             shape,
             &part.mesh.vertices,
             placed.station.frame.aircraft_from_station(),
             &first.mechanism,
         )?)
     } else {
-        let motion = fitted_flap_motion(&part.name, &carriers, &part.mesh.vertices)?;
+        let motion = fitted_flap_motion(&part.name, element, &carriers, &part.mesh.vertices)?;
         Ok(Part::moving(part.name.clone(), shape, motion))
     }
 }
 
-/// The rigid motion of a flap carried by several stations, fitted to their sections as
-/// their mechanisms move them (`flapwright_interference::FittedFlapMotion`), with a speed
-/// bound for `vertices_ac`.
+/// The flap a meshed flap element belongs to, and which element it is.
+fn flap_element(part: &MeshPart) -> Result<(&str, FlapElement)> {
+    match part.flap_element() {
+        Some((flap, false)) => Ok((flap, FlapElement::Main)),
+        Some((flap, true)) => Ok((flap, FlapElement::Aft)),
+        None => anyhow::bail!("part {} is not a flap element", part.name),
+    }
+}
+
+/// The rigid motion of a flap element (the part `part`: the flap, or its aft element)
+/// carried by several stations, fitted to its sections as their mechanisms move them
+/// (`flapwright_interference::FittedFlapMotion`), with a speed bound for `vertices_ac`.
 pub fn fitted_flap_motion(
-    flap: &str,
+    part: &str,
+    element: FlapElement,
     carriers: &[&StationRecord],
     vertices_ac: &[nalgebra::Point3<f64>],
 ) -> Result<FittedFlapMotion> {
@@ -186,11 +214,18 @@ pub fn fitted_flap_motion(
                 station: record.station.clone(),
                 aircraft_from_station: *placed.station.frame.aircraft_from_station(),
                 mechanism: record.mechanism.clone(),
-                section_st: fit_points(&placed.polygons_of(|name| name == flap)),
+                section_st: fit_points(&placed.polygons_of(|name| name == part)),
             })
         })
         .collect::<Result<Vec<_>>>()?;
-    Ok(FittedFlapMotion::try_new(flap, carriers, vertices_ac)?)
+    Ok(FittedFlapMotion::try_new(part, element, carriers, vertices_ac)?)
+}
+
+/// The section polygons of `flap` at `placed`: its main element's and its aft element's,
+/// whose chordwise extent together is the local flap chord.
+fn whole_flap_polygons(placed: &PlacedStation, flap: &str) -> Vec<Vec<nalgebra::Point2<f64>>> {
+    let aft = flapwright_geom::parts::aft_element_name(flap);
+    placed.polygons_of(|name| name == flap || name == aft)
 }
 
 /// The chordwise extent of a section cut (station x, m): the local chord of a flap.
@@ -220,9 +255,11 @@ pub fn fairing_depths(
         // The wing and every flap cut by the plane bound the fairing; the station's own flap
         // gives the chord the depth is a share of.
         let is_flap = |name: &str| flap_names.iter().any(|f| f == name);
-        let own_flap = |name: &str| record.flap.as_deref() == Some(name);
         let contour = station.polygons_of(|name| name == "wing" || is_flap(name));
-        let flap_chord_m = local_chord_m(&station.polygons_of(own_flap));
+        let flap_chord_m = record
+            .flap
+            .as_deref()
+            .map_or(0.0, |flap| local_chord_m(&whole_flap_polygons(station, flap)));
         let samples = resolution.fairing_samples;
         let parameters: Vec<f64> = (0..samples).map(|i| i as f64 / (samples - 1) as f64).collect();
         let points = resolution.fairing_points_per_capsule;

@@ -161,8 +161,9 @@ pub fn write_stl(solids: &[MechanismSolid], write_stl: bool, out: &StagedDir) ->
         .collect()
 }
 
-/// Rewrites each flap's STL file with the flap at its first station's drive fraction in
-/// `fractions`, moved as the check moves it; updates the part's bounds in `parts`.
+/// Rewrites each flap's (and aft element's) STL file with it at its first station's drive
+/// fraction in `fractions`, moved as the check moves it; updates the part's bounds in
+/// `parts`.
 pub fn move_flap_files(
     meshed: &[flapwright_geom::parts::Part],
     records: &[StationRecord],
@@ -170,14 +171,8 @@ pub fn move_flap_files(
     parts: &mut [crate::report::PartReport],
     out: &StagedDir,
 ) -> Result<()> {
-    for part in meshed
-        .iter()
-        .filter(|p| p.kind == flapwright_geom::parts::PartKind::Flap)
-    {
-        let Some(first) = records
-            .iter()
-            .position(|r| r.flap.as_deref() == Some(part.name.as_str()))
-        else {
+    for (part, flap) in meshed.iter().filter_map(|p| Some((p, p.flap_element()?.0))) {
+        let Some(first) = records.iter().position(|r| r.flap.as_deref() == Some(flap)) else {
             continue;
         };
         let shape = flapwright_geom::CollisionShape::from_mesh(&part.mesh)

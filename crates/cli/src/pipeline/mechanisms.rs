@@ -273,7 +273,12 @@ pub fn flaps_on_several_stations(records: &[StationRecord]) -> Vec<(&str, Vec<&S
 pub fn flap_agreement(records: &[StationRecord]) -> Vec<String> {
     let mut warnings = Vec::new();
     for (flap, carriers) in flaps_on_several_stations(records) {
-        let Ok(motion) = crate::pipeline::interference::fitted_flap_motion(flap, &carriers, &[]) else {
+        let Ok(motion) = crate::pipeline::interference::fitted_flap_motion(
+            flap,
+            flapwright_interference::FlapElement::Main,
+            &carriers,
+            &[],
+        ) else {
             continue;
         };
         let (mut worst, mut at) = (0.0_f64, 0.0);

@@ -74,8 +74,13 @@ pub fn attachment_residuals(records: &mut [StationRecord]) -> Result<()> {
                     .map(move |a| frame.aircraft_point_from_station(&a.position))
             })
             .collect();
-        let motion = crate::pipeline::interference::fitted_flap_motion(flap, &carriers, &attachments_ac)
-            .with_context(|| format!("the fitted motion of flap {flap}"))?;
+        let motion = crate::pipeline::interference::fitted_flap_motion(
+            flap,
+            flapwright_interference::FlapElement::Main,
+            &carriers,
+            &attachments_ac,
+        )
+        .with_context(|| format!("the fitted motion of flap {flap}"))?;
         let poses = (0..=RESIDUAL_SAMPLES)
             .map(|k| Ok(motion.fit_at(k as f64 / RESIDUAL_SAMPLES as f64)?.motion))
             .collect::<Result<Vec<_>>>()?;

@@ -87,11 +87,46 @@ pub struct FlapScene {
     /// How far the wing's upper skin reaches aft over the stowed flap's nose (fraction of
     /// the local chord); absent: no shroud.
     pub shroud_chord_fraction: Option<f64>,
+    /// The aft element of a two-element (double-slotted) flap, nested under the main
+    /// element's trailing edge; absent: a single-element flap.
+    pub aft_element: Option<AftElementScene>,
     /// The flap rotation axis.
     pub hinge: HingeScene,
     /// Flap settings, deg of rotation about the hinge axis (trailing edge down positive).
     #[serde(default)]
     pub settings: SettingsScene,
+}
+
+impl FlapScene {
+    /// The names of the flap's parts: its own (the main element) and its aft element's.
+    pub fn part_names(&self) -> Vec<String> {
+        let mut names = vec![self.name.clone()];
+        if self.aft_element.is_some() {
+            names.push(flapwright_geom::parts::aft_element_name(&self.name));
+        }
+        names
+    }
+
+    /// Whether `part` is one of the flap's parts ([`FlapScene::part_names`]).
+    pub fn owns_part(&self, part: &str) -> bool {
+        part == self.name
+            || (self.aft_element.is_some() && part == flapwright_geom::parts::aft_element_name(&self.name))
+    }
+}
+
+/// `[flap.aft_element]`: the second element of a double-slotted flap, nested in the flap's
+/// own section as the flap is in the wing (trailing edges together); the mechanism's
+/// aft-flap body moves it, or it stays fixed to the main element when the kind has none.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AftElementScene {
+    /// Its section (`"NACA 0009"`, a `.dat` file).
+    pub airfoil: String,
+    /// Its chord as a fraction of the flap chord.
+    pub chord_fraction: f64,
+    /// How far the main element's upper skin reaches aft over its nose (fraction of the
+    /// flap chord); absent: no shroud.
+    pub shroud_chord_fraction: Option<f64>,
 }
 
 /// `[flap.hinge]`: either two points or a chord fraction and depth.

@@ -66,7 +66,7 @@ const BODY_POINTS: [BodyLayout; 7] = [
     ),
     (
         "secondary-flap",
-        BodyRole::Flap,
+        BodyRole::AftFlap,
         ["F", "L"],
         &[("secondary-arm", "F", "H"), ("secondary-chord", "F", "L")],
     ),

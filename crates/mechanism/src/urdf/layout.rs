@@ -328,6 +328,16 @@ pub(crate) fn validate_stations(stations: &[StationMechanism3d]) -> Result<()> {
                 station: station.name.clone(),
             });
         }
+        if let Some(aft) = &station.aft_element {
+            if !station.owns_flap {
+                return Err(Error::FlapMeshOnNonOwningStation {
+                    station: station.name.clone(),
+                    flap: aft.name.clone(),
+                });
+            }
+            validate_name("aft element", &aft.name)?;
+            validate_mesh_path(&aft.filename)?;
+        }
         if let Some(mesh) = &station.flap_mesh {
             if !station.owns_flap {
                 return Err(Error::FlapMeshOnNonOwningStation {

@@ -113,6 +113,7 @@ fn placements_at_gimbal_lock_survive_the_file() {
             flap_name: "flap".to_owned(),
             owns_flap: true,
             flap_mesh: None,
+            aft_element: None,
             flap_inertia: None,
             bodies: Vec::new(),
         };

@@ -179,6 +179,33 @@ impl Checker<'_> {
         if let Some(airfoil) = &flap.airfoil {
             self.airfoil(&format!("{path}.airfoil"), airfoil);
         }
+        if let Some(aft) = &flap.aft_element {
+            let aft_path = format!("{path}.aft_element");
+            if flap.airfoil.is_none() {
+                self.fail(
+                    aft_path.clone(),
+                    "needs the flap's own section: give the flap an `airfoil` (a flap cut out of the wing section has no section of its own to nest the aft element in)".to_string(),
+                );
+            }
+            self.airfoil(&format!("{aft_path}.airfoil"), &aft.airfoil);
+            let (min, max) = flapwright_geom::flap::AFT_ELEMENT_CHORD_FRACTION_RANGE;
+            self.in_range(
+                &format!("{aft_path}.chord_fraction"),
+                aft.chord_fraction,
+                min,
+                max,
+                false,
+            );
+            if let Some(shroud) = aft.shroud_chord_fraction {
+                self.in_range(
+                    &format!("{aft_path}.shroud_chord_fraction"),
+                    shroud,
+                    0.0,
+                    flapwright_geom::flap::MAX_SHROUD_CHORD_FRACTION,
+                    false,
+                );
+            }
+        }
         let hinge = &flap.hinge;
         let hinge_path = format!("{path}.hinge");
         match (hinge.inboard_point_m, hinge.outboard_point_m, hinge.chord_fraction) {

@@ -35,6 +35,7 @@ const SCENES: &[&str] = &[
     "small-aircraft.toml",
     "thesis-case-study.toml",
     "double-slotted-flap.toml",
+    "double-slotted-wing.toml",
 ];
 
 /// Values put in place of a scene value: extremes, wrong types, and plain ones.

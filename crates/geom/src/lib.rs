@@ -5,7 +5,8 @@
 //! [`Airfoil`] sections (analytic [`Naca`] 4/5-digit, or Selig/Lednicer `.dat` files) are
 //! placed along the span by a [`WingSpec`] (sections, panels with sweep and dihedral,
 //! twist) into a [`Wing`]. A [`WingModel`] adds [`FlapSpec`]s (cut-out or own section,
-//! hinge axis), [`SparSpec`]s and a [`TorqueTubeSpec`], and
+//! hinge axis, and for a two-element flap an [`AftElementSpec`] nested under the main
+//! element's trailing edge), [`SparSpec`]s and a [`TorqueTubeSpec`], and
 //! [`WingModel::compute_parts`] meshes every [`Part`] as a closed, outward-oriented
 //! [`TriMesh`]; [`WingModel::compute_section_outlines`] gives the same polygons cut at any
 //! spanwise station. Meshes are written with [`io::stl::write_binary`] and turned into
@@ -34,9 +35,11 @@
 //! # Limitations
 //!
 //! - The cove is a straight wall at the flap's foremost point less
-//!   [`flap::COVE_GAP_CHORD_FRACTION`]; there is no shroud (the upper skin does not extend
-//!   over the flap). The flap is narrower than its cut-out at each side by
-//!   [`FlapSpec::side_gap_m`], by default [`flap::SIDE_GAP_CHORD_FRACTION`] of the chord.
+//!   [`flap::COVE_GAP_CHORD_FRACTION`], with a shroud over the flap's nose where
+//!   [`FlapSpec::shroud_chord_fraction`] asks for one; a two-element flap's main element is
+//!   cut for its aft element the same way (so the aft element needs the flap's own section).
+//!   The flap is narrower than its cut-out at each side by [`FlapSpec::side_gap_m`], by
+//!   default [`flap::SIDE_GAP_CHORD_FRACTION`] of the chord; both elements span the same.
 //! - Spars are plates normal to the chord line; the torque tube has mitred joints.
 //! - Between stations, surfaces are ruled (straight lines between corresponding points).
 //!

@@ -8,5 +8,6 @@ mod naca;
 mod parts;
 mod penetration;
 mod scene;
+mod two_element;
 mod volume;
 mod wing;

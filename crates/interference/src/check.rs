@@ -1,6 +1,7 @@
 //! The whole-wing interference check: which pairs are checked (station parts against the
-//! structure, jacks against the flap, the flap against the structure, parts of different
-//! stations against each other), which are left out and why, and joints (contacts by
+//! structure, jacks against the flap, the flap against the structure, a two-element flap's
+//! aft element against the structure, its main element and the station parts, parts of
+//! different stations against each other), which are left out and why, and joints (contacts by
 //! design) checked to stay joined within the joint's play instead of being skipped.
 
 use rayon::prelude::*;

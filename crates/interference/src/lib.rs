@@ -12,7 +12,9 @@
 //! - [`sweep_contact`] → [`JointSeparation`]: largest separation of parts joined by design.
 //! - [`check_assembly`] → [`InterferenceReport`]: every station part against the fixed
 //!   structure, parts not on or pinned to the flap against the flap, the flap against the
-//!   structure, and the parts of different stations against each other (the policy is
+//!   structure, a two-element flap's aft element ([`FlapElement::Aft`]) against the
+//!   structure, its main element and the station parts likewise, and the parts of
+//!   different stations against each other (the policy is
 //!   written in roles and joints); joints must stay within the joint's play
 //!   ([`Requirements`]); pairs left out are listed with the reason.
 //! - [`fairing_depth`]: how far the mechanism reaches below the lower wing/flap contour;

@@ -43,6 +43,10 @@ use crate::seam::{
 
 const KIND: &str = "hooked-track";
 
+/// Rails checked in full at a time (in parallel) between updates of the search's bound:
+/// large enough to keep two cores busy, small enough to stop soon after the best is found.
+const SEARCH_BATCH: usize = 32;
+
 /// The designer's choices for a hooked-track at one station (station frame, m).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct HookedTrackSpec {
@@ -86,6 +90,10 @@ pub struct HookedTrackSearch {
     pub branch_or_order: usize,
     /// See [`Self::toggle`].
     pub region: usize,
+    /// ... not checked further: the depth of their rail's ends and roller and their
+    /// take-off miss, known before the deployment check, already cost more than the best
+    /// rail found (branch and bound: the choice is the exhaustive search's).
+    pub pruned: usize,
     /// ... feasible.
     pub feasible: usize,
 }
@@ -100,6 +108,7 @@ impl HookedTrackSearch {
         self.toggle += other.toggle;
         self.branch_or_order += other.branch_or_order;
         self.region += other.region;
+        self.pruned += other.pruned;
         self.feasible += other.feasible;
     }
 }
@@ -187,32 +196,68 @@ impl HookedTrack {
         use rayon::prelude::*;
         let mut counts = HookedTrackSearch::default();
         let candidates = search::candidates(&spec);
-        // The candidates are checked in parallel, each with its own counts; the results are
-        // then taken in the candidates' order, so the choice and the counts are the same as
-        // a serial search's, whatever the threads.
-        let outcomes: Vec<_> = candidates
+        counts.candidates = candidates.len();
+        // The quick tests of every candidate, in parallel, each with its own counts.
+        let prepared: Vec<_> = candidates
             .par_iter()
             .map(|candidate| {
                 let mut own = HookedTrackSearch::default();
-                let outcome = search::check(&spec, *candidate, flap_chord, &mut own);
+                let outcome = search::prepare(&spec, *candidate, flap_chord, &mut own);
                 (own, outcome)
             })
             .collect();
-        let mut best: Option<search::Found> = None;
         let mut last_failure = None;
-        for (own, outcome) in outcomes {
+        let mut open = Vec::new();
+        for (index, (own, outcome)) in prepared.into_iter().enumerate() {
             counts.add(&own);
-            counts.candidates += 1;
             match outcome {
-                Ok(found) => {
-                    counts.feasible += 1;
-                    if best.is_none_or(|b| found.cost() < b.cost()) {
-                        best = Some(found);
-                    }
-                }
+                Ok(rail) => open.push((index, rail)),
                 Err(failure) => last_failure = Some(failure),
             }
         }
+        // Branch and bound: the survivors checked in full in order of their cost's lower
+        // bound, a batch at a time in parallel, until the next bound cannot beat the best
+        // rail (the least cost, the first candidate among equal ones: the exhaustive
+        // search's choice, whatever the threads and batches).
+        open.sort_by(|(i, a), (j, b)| a.lower_bound.total_cmp(&b.lower_bound).then(i.cmp(j)));
+        let mut best: Option<(usize, search::Found)> = None;
+        let beats_best = |best: &Option<(usize, search::Found)>, index: usize, cost: f64| {
+            best.as_ref()
+                .is_none_or(|(b, found)| cost < found.cost() || (cost == found.cost() && index < *b))
+        };
+        let mut next = 0;
+        while next < open.len() {
+            let batch: Vec<&(usize, search::Prepared)> = open[next..]
+                .iter()
+                .take(SEARCH_BATCH)
+                .take_while(|(index, rail)| beats_best(&best, *index, rail.lower_bound))
+                .collect();
+            if batch.is_empty() {
+                break;
+            }
+            next += batch.len();
+            let outcomes: Vec<_> = batch
+                .par_iter()
+                .map(|(index, rail)| {
+                    let mut own = HookedTrackSearch::default();
+                    (*index, search::check(&spec, rail, &mut own), own)
+                })
+                .collect();
+            for (index, outcome, own) in outcomes {
+                counts.add(&own);
+                match outcome {
+                    Ok(found) => {
+                        counts.feasible += 1;
+                        if beats_best(&best, index, found.cost()) {
+                            best = Some((index, found));
+                        }
+                    }
+                    Err(failure) => last_failure = Some(failure),
+                }
+            }
+        }
+        counts.pruned = open.len() - next;
+        let best = best.map(|(_, found)| found);
         let Some(found) = best else {
             return Err(match (last_failure, counts.candidates) {
                 (Some((defect, detail)), 1) => failure(defect, detail),

@@ -91,6 +91,9 @@ fn the_aft_element_is_a_part_checked_drawn_and_measured_in_its_own_slot() {
         );
     }
     assert!(interference["unchecked_pairs"].as_array().unwrap().is_empty());
+    // The scene's five-bars were laid out to clear (its header says how): every pair and
+    // joint passes, the slot between the elements included.
+    assert_eq!(interference["passes"], true);
 
     // The second slot at each setting, in the main element's frame: stowed nested with a
     // slot of a few millimetres under the main element's shroud; the secondary flap turns
@@ -113,6 +116,12 @@ fn the_aft_element_is_a_part_checked_drawn_and_measured_in_its_own_slot() {
                 && field(1, "relative_deflection_deg") < field(2, "relative_deflection_deg"),
             "{slot}"
         );
+    }
+
+    // The five-bar's own equation of motion deploys each station.
+    for station in report["stations"].as_array().unwrap() {
+        assert_eq!(station["dynamics"]["model"]["type"], "kind", "{}", station["name"]);
+        assert!(station["dynamics"]["deployment_time_s"].as_f64().is_some());
     }
 
     // Drawn at stowed, take-off and landing: both elements' outlines at each.

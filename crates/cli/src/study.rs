@@ -182,6 +182,7 @@ pub fn variant_text(text: &str, kind: &str, stations: &[String]) -> Result<Strin
         ("stl", false),
         ("urdf", false),
         ("svg", false),
+        ("gltf", false),
         ("kinematics", true),
         ("sizing", true),
         ("interference", true),

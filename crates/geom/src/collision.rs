@@ -201,6 +201,42 @@ impl CollisionShape {
         }
     }
 
+    /// A box aligned with the principal axes of a triangle mesh's vertices that holds the
+    /// mesh (local frame): for a long swept part (a flap) far tighter than its axis-aligned
+    /// box. `None` for a shape that is not a triangle mesh (a tessellated primitive's
+    /// vertices do not bound its round surface).
+    pub fn compute_oriented_box(&self) -> Option<OrientedBox> {
+        let mesh = self.shape.as_trimesh()?;
+        let points: Vec<Vector3<f64>> = mesh.vertices().iter().map(|v| Vector3::new(v.x, v.y, v.z)).collect();
+        if points.is_empty() {
+            return None;
+        }
+        let mean = points.iter().sum::<Vector3<f64>>() / points.len() as f64;
+        let covariance = points
+            .iter()
+            .map(|p| (p - mean) * (p - mean).transpose())
+            .sum::<nalgebra::Matrix3<f64>>();
+        let mut axes = covariance.symmetric_eigen().eigenvectors;
+        if axes.determinant() < 0.0 {
+            axes.set_column(2, &-axes.column(2));
+        }
+        let rotation = nalgebra::Rotation3::from_matrix(&axes);
+        let (mut lo, mut hi) = (Vector3::repeat(f64::INFINITY), Vector3::repeat(f64::NEG_INFINITY));
+        for p in &points {
+            let q = rotation.inverse() * p;
+            lo = lo.inf(&q);
+            hi = hi.sup(&q);
+        }
+        let centre = rotation * ((lo + hi) / 2.0);
+        Some(OrientedBox {
+            local_from_box: Isometry3::from_parts(
+                nalgebra::Translation3::from(centre),
+                nalgebra::UnitQuaternion::from_rotation_matrix(&rotation),
+            ),
+            half_extents_m: (hi - lo) / 2.0,
+        })
+    }
+
     /// Balls the shape is made of, as their centres (local frame, m) and common radius (m):
     /// a ball's own centre, a capsule's two segment ends; `None` for every other shape.
     /// Each ball lies within the shape, so a shape is no farther from anything than the
@@ -263,6 +299,42 @@ impl CollisionShape {
             ]),
         })
     }
+}
+
+/// A box holding a shape, in the shape's local frame ([`CollisionShape::compute_oriented_box`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OrientedBox {
+    /// The box's centre and axes in the shape's local frame.
+    pub local_from_box: Isometry3<f64>,
+    /// Half its edge lengths along its axes (m).
+    pub half_extents_m: Vector3<f64>,
+}
+
+/// The separation (m) of the box `oriented` of a shape posed at `pose`, grown by
+/// `growth_m` on every side, from shape `b` at `pose_b` as solids: the surfaces' distance,
+/// or 0 when they touch, cross or one holds the other. Whatever the box holds is at least
+/// this far from `b`: a lower bound on its clearance (the broad phase's, for a moving part
+/// against a fixed one).
+pub fn compute_box_separation(
+    oriented: &OrientedBox,
+    pose: &Isometry3<f64>,
+    growth_m: f64,
+    b: &CollisionShape,
+    pose_b: &Isometry3<f64>,
+) -> Result<f64> {
+    // Degenerate boxes (a flat part) get a hair of thickness: the box only grows.
+    let half = oriented.half_extents_m.map(|h| h.max(0.0) + growth_m.max(0.0) + 1e-9);
+    let cuboid = CollisionShape::cuboid(half)?;
+    let box_pose = pose * oriented.local_from_box;
+    let surfaces = compute_distance(&cuboid, &box_pose, b, pose_b)?.distance_m;
+    let (pa, pb) = (to_pose(&box_pose), to_pose(pose_b));
+    Ok(
+        if surfaces > 0.0 && !holds(b, &pb, &cuboid, &pa) && !holds(&cuboid, &pa, b, &pb) {
+            surfaces
+        } else {
+            0.0
+        },
+    )
 }
 
 /// Mass properties of a rigid solid ([`CollisionShape::compute_mass_properties`]).

@@ -301,3 +301,85 @@ fn convex_against_mesh_distance_equals_parry() {
     }
     assert!(clear > 100 && touching > 0, "{clear} clear, {touching} touching");
 }
+
+/// The flap's principal-axes box holds every vertex, is smaller than its axis-aligned box
+/// (the fixture's flap is swept and tapered), and its separation from each other part, at
+/// poses of the flap turned about its hinge, never exceeds the flap's own clearance (a
+/// lower bound, as the broad phase uses it), and is 0 where the flap crosses the part.
+#[test]
+fn an_oriented_box_bounds_its_mesh_and_its_separation_bounds_the_clearance() {
+    let (model, parts) = coarse_fixture();
+    let flap = &model.flaps()[0];
+    let (hinge_point, hinge_direction) = flap.hinge_axis_ac();
+    let flap_mesh = &parts.iter().find(|p| p.name == flap.spec().name).unwrap().mesh;
+    let flap_shape = CollisionShape::from_mesh(flap_mesh).unwrap();
+    let oriented = flap_shape.compute_oriented_box().unwrap();
+    let box_from_local = oriented.local_from_box.inverse();
+    for v in &flap_mesh.vertices {
+        let q = box_from_local * v;
+        for k in 0..3 {
+            assert!(q[k].abs() <= oriented.half_extents_m[k] + 1e-12, "{v} outside the box");
+        }
+    }
+    let aabb = flap_shape.compute_aabb(&Isometry3::identity());
+    let extent = aabb.max - aabb.min;
+    let volume = |e: Vector3<f64>| e.x * e.y * e.z;
+    assert!(volume(oriented.half_extents_m * 2.0) < volume(extent));
+    assert!(CollisionShape::ball(0.1).unwrap().compute_oriented_box().is_none());
+    let identity = Isometry3::identity();
+    let mut positive = 0;
+    for other in parts.iter().filter(|p| p.name != flap.spec().name) {
+        let other_shape = CollisionShape::from_mesh(&other.mesh).unwrap();
+        for angle_deg in [0.0, 12.0, 40.0, -25.0] {
+            let turn = UnitQuaternion::from_axis_angle(&hinge_direction, f64::to_radians(angle_deg));
+            let pose = Translation3::from(hinge_point.coords) * turn * Translation3::from(-hinge_point.coords);
+            let clearance = flapwright_geom::compute_clearance(&flap_shape, &pose, &other_shape, &identity, 0.01)
+                .unwrap()
+                .distance_m;
+            for growth in [0.0, 0.05] {
+                let bound =
+                    flapwright_geom::compute_box_separation(&oriented, &pose, growth, &other_shape, &identity).unwrap();
+                assert!(
+                    bound <= clearance + 1e-12,
+                    "{} at {angle_deg} deg: {bound} > {clearance}",
+                    other.name
+                );
+                assert!(bound >= 0.0);
+                if clearance == 0.0 {
+                    assert_eq!(bound, 0.0);
+                }
+                positive += usize::from(bound > 0.0);
+            }
+        }
+    }
+    // The bound must certify something for the test to mean anything.
+    assert!(positive > 0, "no pose certified apart");
+    // A box wholly inside a closed mesh, and a closed mesh wholly inside a box: both
+    // overlap as solids though their surfaces are apart.
+    let cube = CollisionShape::from_mesh(&unit_cube()).unwrap();
+    let small_mesh = TriMesh {
+        vertices: unit_cube()
+            .vertices
+            .iter()
+            .map(|v| Point3::new(0.45, 0.45, 0.45) + v.coords * 0.1)
+            .collect(),
+        ..unit_cube()
+    };
+    let small_box = CollisionShape::from_mesh(&small_mesh)
+        .unwrap()
+        .compute_oriented_box()
+        .unwrap();
+    assert_eq!(
+        flapwright_geom::compute_box_separation(&small_box, &identity, 0.0, &cube, &identity).unwrap(),
+        0.0
+    );
+    let cube_box = cube.compute_oriented_box().unwrap();
+    let small_shape = CollisionShape::from_mesh(&small_mesh).unwrap();
+    assert_eq!(
+        flapwright_geom::compute_box_separation(&cube_box, &identity, 0.0, &small_shape, &identity).unwrap(),
+        0.0
+    );
+    // Apart: the box's separation is the cubes' gap.
+    let apart = flapwright_geom::compute_box_separation(&cube_box, &at(3.0, 0.0, 0.0), 0.0, &cube, &identity).unwrap();
+    assert!((apart - 2.0).abs() < 1e-6, "{apart}");
+}

@@ -310,13 +310,28 @@ pub fn check_assembly(
         .par_iter()
         .map(|p| Ok((std::ptr::from_ref(*p) as usize, SweptBoxes::of(p, end)?)))
         .collect::<Result<_>>()?;
-    let bound = |a: &Part, b: &Part| {
-        let key = |p: &Part| std::ptr::from_ref(p) as usize;
-        boxes[&key(a)].lower_bound(&boxes[&key(b)])
+    let key = |p: &Part| std::ptr::from_ref(p) as usize;
+    // The boxes' bound; where it does not certify a moving mesh against a fixed part, the
+    // mesh's own posed boxes against the fixed part's shape (a swept flap's axis-aligned
+    // boxes reach the spars, its own boxes do not).
+    let bound = |a: &Part, b: &Part, required_m: f64| -> Result<f64> {
+        let boxed = boxes[&key(a)].lower_bound(&boxes[&key(b)]);
+        if boxed > required_m {
+            return Ok(boxed);
+        }
+        let refined = match (a.is_moving(), b.is_moving()) {
+            (true, false) => boxes[&key(a)].lower_bound_to_fixed(b)?,
+            (false, true) => boxes[&key(b)].lower_bound_to_fixed(a)?,
+            _ => None,
+        };
+        Ok(refined.map_or(boxed, |r| r.max(boxed)))
     };
-    let (apart, jobs): (Vec<_>, Vec<_>) = jobs
+    let bounded = jobs
+        .into_par_iter()
+        .map(|job| Ok((bound(job.1, job.2, required.clearance_for(job.0.as_deref()))?, job)))
+        .collect::<Result<Vec<_>>>()?;
+    let (apart, jobs): (Vec<_>, Vec<_>) = bounded
         .into_iter()
-        .map(|job| (bound(job.1, job.2), job))
         .partition(|(lower_bound, (station, _, _))| *lower_bound > required.clearance_for(station.as_deref()));
     let jobs: Vec<PairJob<'_>> = jobs.into_iter().map(|(_, job)| job).collect();
     let certified_apart = apart

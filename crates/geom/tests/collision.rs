@@ -162,23 +162,59 @@ fn coarse_fixture() -> (flapwright_geom::WingModel, Vec<flapwright_geom::Part>) 
     (model, parts)
 }
 
+/// The coarse fixture's first flap, its mesh and shape, and the other parts.
+struct FixtureFlap {
+    parts: Vec<flapwright_geom::Part>,
+    name: String,
+    mesh: TriMesh,
+    shape: CollisionShape,
+    hinge_point: Point3<f64>,
+    hinge_direction: nalgebra::Unit<Vector3<f64>>,
+}
+
+impl FixtureFlap {
+    fn new() -> Self {
+        let (model, parts) = coarse_fixture();
+        let flap = &model.flaps()[0];
+        let (hinge_point, hinge_direction) = flap.hinge_axis_ac();
+        let name = flap.spec().name.clone();
+        let mesh = parts.iter().find(|p| p.name == name).unwrap().mesh.clone();
+        let shape = CollisionShape::from_mesh(&mesh).unwrap();
+        Self {
+            parts,
+            name,
+            mesh,
+            shape,
+            hinge_point,
+            hinge_direction,
+        }
+    }
+
+    /// The flap turned by `angle_deg` about its hinge line.
+    fn turned(&self, angle_deg: f64) -> Isometry3<f64> {
+        let turn = UnitQuaternion::from_axis_angle(&self.hinge_direction, f64::to_radians(angle_deg));
+        Translation3::from(self.hinge_point.coords) * turn * Translation3::from(-self.hinge_point.coords)
+    }
+
+    /// The other parts.
+    fn others(&self) -> impl Iterator<Item = &flapwright_geom::Part> {
+        self.parts.iter().filter(|p| p.name != self.name)
+    }
+}
+
 #[test]
 fn mesh_pair_distance_equals_parry_for_nested_and_crossing_meshes() {
-    let (model, parts) = coarse_fixture();
-    let flap = &model.flaps()[0];
-    let (hinge_point, hinge_direction) = flap.hinge_axis_ac();
-    let flap_mesh = &parts.iter().find(|p| p.name == flap.spec().name).unwrap().mesh;
-    let flap_shape = CollisionShape::from_mesh(flap_mesh).unwrap();
+    let fixture = FixtureFlap::new();
+    let (flap_mesh, flap_shape) = (&fixture.mesh, &fixture.shape);
     let identity = Isometry3::identity();
     let mut checked = 0;
-    for other in parts.iter().filter(|p| p.name != flap.spec().name) {
+    for other in fixture.others() {
         let other_shape = CollisionShape::from_mesh(&other.mesh).unwrap();
         // Stowed (nested in the cove), deployed, and turned the wrong way into the wing.
         for angle_deg in [0.0, 12.0, 40.0, -25.0] {
-            let turn = UnitQuaternion::from_axis_angle(&hinge_direction, f64::to_radians(angle_deg));
-            let pose = Translation3::from(hinge_point.coords) * turn * Translation3::from(-hinge_point.coords);
-            let ours = compute_distance(&flap_shape, &pose, &other_shape, &identity).unwrap();
-            let swapped = compute_distance(&other_shape, &identity, &flap_shape, &pose).unwrap();
+            let pose = fixture.turned(angle_deg);
+            let ours = compute_distance(flap_shape, &pose, &other_shape, &identity).unwrap();
+            let swapped = compute_distance(&other_shape, &identity, flap_shape, &pose).unwrap();
             let reference = parry_mesh_distance(flap_mesh, &pose, &other.mesh, &identity);
             let what = format!("flap at {angle_deg} deg vs {}", other.name);
             assert!(
@@ -198,7 +234,10 @@ fn mesh_pair_distance_equals_parry_for_nested_and_crossing_meshes() {
         }
     }
     // Some poses must be clear and some crossing for the comparison to cover both branches.
-    assert!(checked > 0 && checked < 4 * (parts.len() - 1), "{checked} clear cases");
+    assert!(
+        checked > 0 && checked < 4 * (fixture.parts.len() - 1),
+        "{checked} clear cases"
+    );
 }
 
 #[test]
@@ -308,11 +347,8 @@ fn convex_against_mesh_distance_equals_parry() {
 /// lower bound, as the broad phase uses it), and is 0 where the flap crosses the part.
 #[test]
 fn an_oriented_box_bounds_its_mesh_and_its_separation_bounds_the_clearance() {
-    let (model, parts) = coarse_fixture();
-    let flap = &model.flaps()[0];
-    let (hinge_point, hinge_direction) = flap.hinge_axis_ac();
-    let flap_mesh = &parts.iter().find(|p| p.name == flap.spec().name).unwrap().mesh;
-    let flap_shape = CollisionShape::from_mesh(flap_mesh).unwrap();
+    let fixture = FixtureFlap::new();
+    let (flap_mesh, flap_shape) = (&fixture.mesh, &fixture.shape);
     let oriented = flap_shape.compute_oriented_box().unwrap();
     let box_from_local = oriented.local_from_box.inverse();
     for v in &flap_mesh.vertices {
@@ -328,12 +364,11 @@ fn an_oriented_box_bounds_its_mesh_and_its_separation_bounds_the_clearance() {
     assert!(CollisionShape::ball(0.1).unwrap().compute_oriented_box().is_none());
     let identity = Isometry3::identity();
     let mut positive = 0;
-    for other in parts.iter().filter(|p| p.name != flap.spec().name) {
+    for other in fixture.others() {
         let other_shape = CollisionShape::from_mesh(&other.mesh).unwrap();
         for angle_deg in [0.0, 12.0, 40.0, -25.0] {
-            let turn = UnitQuaternion::from_axis_angle(&hinge_direction, f64::to_radians(angle_deg));
-            let pose = Translation3::from(hinge_point.coords) * turn * Translation3::from(-hinge_point.coords);
-            let clearance = flapwright_geom::compute_clearance(&flap_shape, &pose, &other_shape, &identity, 0.01)
+            let pose = fixture.turned(angle_deg);
+            let clearance = flapwright_geom::compute_clearance(flap_shape, &pose, &other_shape, &identity, 0.01)
                 .unwrap()
                 .distance_m;
             for growth in [0.0, 0.05] {

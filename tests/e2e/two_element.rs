@@ -82,15 +82,22 @@ fn the_aft_element_is_a_part_checked_drawn_and_measured_in_its_own_slot() {
     for structure in ["wing", "flap"] {
         assert!(has(pairs, "flap-aft", structure), "flap-aft against {structure}");
     }
+    // The secondary flap's own solids are rigid with the aft element: listed, with the
+    // reason, and nothing else is left out.
+    let unchecked = interference["unchecked_pairs"].as_array().unwrap();
     for solid in report["mechanism_parts"].as_array().unwrap() {
         let name = solid["name"].as_str().unwrap();
-        let own_body = solid["role"] == "aft-flap";
+        let listed = has(pairs, name, "flap-aft") || has(apart, name, "flap-aft");
+        let left_out = has(unchecked, name, "flap-aft");
+        assert!(listed != left_out, "{name} against flap-aft: checked or listed, once");
+        assert_eq!(left_out, solid["role"] == "aft-flap", "{name}");
+    }
+    for pair in unchecked {
         assert!(
-            own_body || has(pairs, name, "flap-aft") || has(apart, name, "flap-aft"),
-            "{name} against flap-aft"
+            pair["reason"].as_str().unwrap().contains("rigid with it by design"),
+            "{pair}"
         );
     }
-    assert!(interference["unchecked_pairs"].as_array().unwrap().is_empty());
     // The scene's five-bars were laid out to clear (its header says how): every pair and
     // joint passes, the slot between the elements included.
     assert_eq!(interference["passes"], true);
@@ -140,6 +147,17 @@ fn the_aft_element_is_a_part_checked_drawn_and_measured_in_its_own_slot() {
         .expect("the aft element's mount");
     assert_eq!(mount.joint_type, urdf_rs::JointType::Fixed);
     assert_eq!(mount.parent.link, "inner_secondary_flap");
+    // Each element weighs what its stations' five-bars give it: 2 x 20 kg on the aft
+    // element, 2 x 50 kg on the main one.
+    let mass = |link: &str| robot.links.iter().find(|l| l.name == link).unwrap().inertial.mass.value;
+    assert!((mass("flap-aft") - 40.0).abs() < 1e-9, "{}", mass("flap-aft"));
+    assert!((mass("flap") - 100.0).abs() < 1e-9, "{}", mass("flap"));
+    // The main slot's percentages are of the clean chord, to the aft element's trailing
+    // edge: the wing's 4.5 m chord (the sections are streamwise, the wing straight).
+    let local_chord = report["stations"][0]["flap_position"]["local_chord_m"]
+        .as_f64()
+        .unwrap();
+    assert!((local_chord - 4.5).abs() < 1e-3, "{local_chord}");
 }
 
 /// The STL files at landing against the stowed ones: each element moved rigidly, turned
@@ -181,6 +199,15 @@ fn at_landing_the_aft_element_turns_by_the_second_slots_relative_deflection() {
     );
 }
 
+/// A spar may not take the aft element's part name.
+#[test]
+fn a_part_named_like_an_aft_element_is_rejected() {
+    let text = std::fs::read_to_string(repo_root().join(SCENE)).unwrap();
+    let clash = text.replacen("name = \"rear-spar\"", "name = \"flap-aft\"", 1);
+    assert_ne!(clash, text);
+    crate::bad_input::assert_rejected(&clash, &["structure.spars[0].name", "aft element"]);
+}
+
 /// An aft element needs the flap's own section and a chord share in range: input errors
 /// naming the key (and its line for the range).
 #[test]
@@ -208,4 +235,75 @@ fn an_aft_element_without_the_flaps_section_or_out_of_range_is_rejected() {
             "[0.1, 0.7]",
         ],
     );
+}
+
+/// A kind without an aft-flap body carries the aft element fixed to the main one: the
+/// transport scene's outboard flap made two-element at one dropped-hinge station. The
+/// second slot keeps its stowed shape at every setting, the flap's own fittings are swept
+/// against the aft element (nothing left out), and the main slot's chord runs to the aft
+/// element's trailing edge as before.
+#[test]
+fn without_an_aft_flap_body_the_aft_element_moves_with_the_main_one() {
+    let text = std::fs::read_to_string(repo_root().join("data/scenes/transport-flap.toml")).unwrap();
+    // The outboard flap only, with an aft element, and its outer station only.
+    let inboard = text.find("[[flap]]\nname = \"inboard\"").unwrap();
+    let outboard = text.find("[[flap]]\nname = \"outboard\"").unwrap();
+    let mut scene = format!("{}{}", &text[..inboard], &text[outboard..]);
+    let hinge = scene.find("[flap.hinge]").unwrap();
+    scene.insert_str(
+        hinge,
+        "[flap.aft_element]\nairfoil = \"NACA 0009\"\nchord_fraction = 0.3\nshroud_chord_fraction = 0.04\n\n",
+    );
+    let stations = scene.find("[[station]]").unwrap();
+    let loads = scene.find("[loads]").unwrap();
+    scene.replace_range(
+        stations..loads,
+        "[[station]]\nname = \"ob-outer\"\nflap = \"outboard\"\naxis_offset_m = 7.0\n[station.mechanism]\nkind = \"dropped-hinge\"\nflap_mass_kg = 150.0\n\n",
+    );
+    // Only what the test reads (and a check that stops at its verdicts).
+    let outputs = scene.find("[outputs]").unwrap();
+    scene.truncate(outputs);
+    scene.push_str("[outputs]\nstl = false\nurdf = false\nsvg = false\ngltf = false\nsizing = false\n");
+    scene = scene.replacen("[interference]\n", "[interference]\nstop_at_verdict = true\n", 1);
+    let (_dir, report) = crate::synthesised_kinds::designed(&scene);
+    let station = &report["stations"][0];
+    let slot = &station["flap_position"]["aft_slot"]["settings"];
+    let stowed = (
+        slot[0]["gap_m"].as_f64().unwrap(),
+        slot[0]["overlap_m"].as_f64().unwrap(),
+    );
+    for setting in slot.as_array().unwrap() {
+        assert!(
+            setting["relative_deflection_deg"].as_f64().unwrap().abs() < 1e-9,
+            "{setting}"
+        );
+        assert!(
+            (setting["gap_m"].as_f64().unwrap() - stowed.0).abs() < 1e-9,
+            "{setting}"
+        );
+        assert!(
+            (setting["overlap_m"].as_f64().unwrap() - stowed.1).abs() < 1e-9,
+            "{setting}"
+        );
+    }
+    let interference = &report["interference"];
+    assert!(interference["unchecked_pairs"].as_array().unwrap().is_empty());
+    let checked = |part: &str| {
+        ["pairs", "certified_apart"].iter().any(|list| {
+            interference[list]
+                .as_array()
+                .unwrap()
+                .iter()
+                .any(|p| p["part_a"] == part && p["part_b"] == "outboard-aft")
+        })
+    };
+    for solid in report["mechanism_parts"].as_array().unwrap() {
+        let name = solid["name"].as_str().unwrap();
+        assert!(checked(name), "{name} against the aft element");
+    }
+    // The clean chord runs to the flap's trailing edge, as for the single-element flap
+    // (the aft element's trailing edge is the flap's): 4.83 m at ob-outer
+    // (data/validation/003-table1-fairing-depth.md).
+    let chord = station["flap_position"]["local_chord_m"].as_f64().unwrap();
+    assert!((chord - 4.83).abs() < 0.005, "{chord}");
 }

@@ -72,6 +72,8 @@ const NO_OPENING: &str =
     "no opening was cut in the skin for this station, so its parts cannot be checked against the skin";
 /// Why a part joined to the flap by a joint is not checked against the flap itself.
 const NO_SLOT: &str = "joined to the flap by design, and no slot was cut in the flap for this station";
+/// Why a solid of the body that moves an aft element is not checked against it.
+const ON_AFT_BODY: &str = "part of the body that moves the flap's aft element: rigid with it by design";
 /// Why a part joined to an aft element by a joint is not checked against it.
 const NO_AFT_SLOT: &str = "joined to the flap's aft element by design, and no slot was cut in it for this station";
 
@@ -234,22 +236,26 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
                 }
             }
         }
-        // Against the aft element of the flap it carries: not the body that moves it (the
-        // aft-flap body, or the flap body for a kind without one); what is joined to that
-        // body against the aft element with the station's slot cut; everything else whole.
-        let aft_body = station
+        // Against the aft element of the flap it carries: the aft-flap body's own solids are
+        // rigid with it by design (listed, not swept); what is joined to the body that moves
+        // it (the aft-flap body, or the flap body for a kind without one, whose own fittings
+        // are then swept against it like any part) against the aft element with the
+        // station's slot cut; everything else whole.
+        let aft_flap_body = station
             .parts
             .iter()
             .find(|p| p.role == BodyRole::AftFlap)
-            .map(|p| p.body)
-            .or(flap_body);
+            .map(|p| p.body);
+        let aft_body = aft_flap_body.or(flap_body);
         for (flap, aft) in &assembly.aft_elements {
             let carried = station.flap.as_deref() == Some(flap.as_str());
             for part in &station.parts {
                 if !carried {
                     jobs.push((name(), &part.part, aft));
+                } else if Some(part.body) == aft_flap_body {
+                    skip(&part.part, aft, ON_AFT_BODY);
                 } else if Some(part.body) == aft_body {
-                    continue;
+                    jobs.push((name(), &part.part, aft));
                 } else if aft_body.and_then(|b| station.joint_between(b, part.body)).is_some() {
                     match &station.slotted_aft_element {
                         Some(slotted) => jobs.push((name(), &part.part, slotted)),

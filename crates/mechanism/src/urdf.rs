@@ -128,15 +128,23 @@ pub struct StationMechanism3d<'a> {
     /// Flap mesh filename (relative to the URDF), vertices in the aircraft frame with the
     /// flap stowed; only on the owning station.
     pub flap_mesh: Option<String>,
-    /// A two-element flap's aft element: its link's name and mesh (vertices in the aircraft
-    /// frame, stowed); only on the owning station. Its link hangs fixed off the link of
-    /// the body that moves it (`seam::aft_flap_body`), or off the flap's where the kind has
-    /// none.
-    pub aft_element: Option<MeshRef>,
+    /// A two-element flap's aft element: its link's mesh and mass properties; only on the
+    /// owning station. Its link hangs fixed off the link of the body that moves it
+    /// (`seam::aft_flap_body`), or off the flap's where the kind has none.
+    pub aft_element: Option<AftElementLink>,
     /// The flap's mass properties (owning station only; stowed, aircraft frame).
     pub flap_inertia: Option<RigidInertia>,
     /// What each body's link shows and weighs; bodies not listed get empty links.
     pub bodies: Vec<BodyGeometry>,
+}
+
+/// A two-element flap's aft element in the URDF: a link of its own.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AftElementLink {
+    /// The link's name and mesh (vertices in the aircraft frame, stowed).
+    pub mesh: MeshRef,
+    /// Its mass properties (stowed, aircraft frame).
+    pub inertia: Option<RigidInertia>,
 }
 
 /// One body's solids and mass properties, for its URDF link.

@@ -131,6 +131,29 @@ impl FlapBehindWing {
         })
     }
 
+    /// The same measure with the local clean chord taken to the trailing edge of
+    /// `whole_flap` (a two-element flap's sections: the percentages are of the chord to the
+    /// aft element's trailing edge, the gap and overlap still the measured element's).
+    ///
+    /// Errors: [`Error::TooFew`] for no points, [`Error::FlapNotBehindWing`] for a chord that
+    /// is not positive.
+    pub fn with_chord_to(self, whole_flap: &[Vec<Point2<f64>>]) -> Result<Self> {
+        let too_few = Error::TooFew {
+            quantity: "flap section points",
+            value: 0,
+            minimum: 3,
+        };
+        // Station x points to the nose: a trailing edge is a smallest x.
+        let (own_trailing_edge, _) = extent_x(&self.flap_stowed).ok_or(too_few.clone())?;
+        let (whole_trailing_edge, _) = extent_x(whole_flap).ok_or(too_few)?;
+        let wing_nose = own_trailing_edge + self.chord_m;
+        let chord_m = wing_nose - whole_trailing_edge.min(own_trailing_edge);
+        if chord_m.is_nan() || chord_m <= 0.0 {
+            return Err(Error::FlapNotBehindWing { chord_m });
+        }
+        Ok(Self { chord_m, ..self })
+    }
+
     /// The main-wing trailing edge used (station frame, m).
     pub fn trailing_edge(&self) -> Point2<f64> {
         self.trailing_edge

@@ -199,3 +199,26 @@ fn setting_displacement_meets_the_asked_gap_and_overlap() {
         Err(Error::NotFinite { .. })
     ));
 }
+
+/// A two-element flap: the gap and overlap stay the main element's, the chord runs to the
+/// aft element's trailing edge.
+#[test]
+fn the_chord_runs_to_the_whole_flaps_trailing_edge() {
+    let main = disc(Point2::new(0.35, -0.1), 0.15, 360);
+    let aft = disc(Point2::new(0.1, -0.15), 0.05, 360);
+    let whole: Vec<Vec<Point2<f64>>> = main.iter().chain(&aft).cloned().collect();
+    let own = FlapBehindWing::new(&wing(0.5, 0.0), &main).unwrap();
+    let measure = own.clone().with_chord_to(&whole).unwrap();
+    // Wing nose 2.0 to the aft disc's aft-most point 0.05.
+    assert!((measure.chord_m() - 1.95).abs() < 1e-12, "{}", measure.chord_m());
+    let (a, b) = (own.at_rotation(0.3), measure.at_rotation(0.3));
+    assert_eq!((a.gap_m, a.overlap_m), (b.gap_m, b.overlap_m));
+    assert!((b.gap_percent_chord - a.gap_m / 1.95 * 100.0).abs() < 1e-12);
+    // A "whole flap" that ends ahead of the element's own trailing edge changes nothing.
+    let shorter = own
+        .clone()
+        .with_chord_to(&disc(Point2::new(0.4, -0.1), 0.01, 8))
+        .unwrap();
+    assert_eq!(shorter.chord_m(), own.chord_m());
+    assert!(matches!(own.with_chord_to(&[]), Err(Error::TooFew { .. })));
+}

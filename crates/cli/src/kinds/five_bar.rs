@@ -228,6 +228,10 @@ impl KindScene for FiveBarScene {
         self.main_flap_mass_kg + self.secondary_flap_mass_kg
     }
 
+    fn aft_element_mass_kg(&self) -> f64 {
+        self.secondary_flap_mass_kg
+    }
+
     fn synthesise(&self, _context: &SynthesisContext) -> Result<Arc<dyn FlapMechanism>, String> {
         let mechanism = FiveBarDoubleFlap::assemble(
             self.dimensions(),

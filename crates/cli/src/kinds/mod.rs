@@ -295,6 +295,13 @@ pub trait KindScene {
     /// over its stations.
     fn flap_mass_kg(&self) -> f64;
 
+    /// The share of [`KindScene::flap_mass_kg`] on a two-element flap's aft element (kg),
+    /// where the kind moves it with a body of its own; 0: the kind does not say, and the
+    /// flap's mass is spread through both elements alike.
+    fn aft_element_mass_kg(&self) -> f64 {
+        0.0
+    }
+
     /// The synthesised mechanism, from the table and `context`; on failure, the message and
     /// the keys to change.
     fn synthesise(&self, context: &SynthesisContext) -> Result<Arc<dyn FlapMechanism>, String>;

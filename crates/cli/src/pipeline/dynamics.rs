@@ -92,7 +92,7 @@ pub fn run_all(
             let flap = record
                 .placed
                 .as_ref()
-                .map(|placed| placed.polygons_of(|name| record.flap.as_deref() == Some(name)))
+                .and_then(|placed| record.flap.as_deref().map(|flap| placed.flap_polygons(flap)))
                 .unwrap_or_default();
             let radius_of_gyration_squared = polar_radius_of_gyration_squared(&flap)
                 .ok_or_else(|| named("the flap's section in the station plane (a moment of inertia from its area)"))?;

@@ -10,7 +10,8 @@ use flapwright_geom::CollisionShape;
 use flapwright_interference::{FairingDepth, InterferenceReport};
 use flapwright_mechanism::seam::BodyRole;
 use flapwright_mechanism::urdf::{
-    build_robot, to_xml, trajectory, BaseLink, BodyGeometry, CutJoint, MeshRef, RigidInertia, StationMechanism3d,
+    build_robot, to_xml, trajectory, AftElementLink, BaseLink, BodyGeometry, CutJoint, MeshRef, RigidInertia,
+    StationMechanism3d,
 };
 use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
@@ -71,10 +72,10 @@ pub fn write_urdf(
             let flap_name = record.flap.clone().unwrap_or_default();
             let owns_flap = !owner_seen.contains(&flap_name);
             owner_seen.push(flap_name.clone());
-            let flap_inertia = if owns_flap {
+            let (flap_inertia, aft_inertia) = if owns_flap {
                 flap_inertia(scene, meshed, records, &flap_name)?
             } else {
-                None
+                (None, None)
             };
             Ok(StationMechanism3d {
                 name: record.station.clone(),
@@ -91,9 +92,12 @@ pub fn write_urdf(
                 aft_element: if owns_flap {
                     let aft = flapwright_geom::parts::aft_element_name(&flap_name);
                     parts.iter().find(|p| p.name == aft).and_then(|p| {
-                        p.stl_file.clone().map(|filename| MeshRef {
-                            name: aft.clone(),
-                            filename,
+                        p.stl_file.clone().map(|filename| AftElementLink {
+                            mesh: MeshRef {
+                                name: aft.clone(),
+                                filename,
+                            },
+                            inertia: aft_inertia,
                         })
                     })
                 } else {
@@ -161,34 +165,52 @@ fn body_geometry(record: &StationRecord, solids: &[MechanismSolid]) -> Vec<BodyG
 /// The flap's mass properties: the sum of `flap_mass_kg` over the stations that carry it,
 /// spread uniformly through its closed mesh (stowed, aircraft frame); `None` for a flap
 /// without mass.
+/// The mass properties of a flap's elements (main, aft), from the masses its stations
+/// carry spread uniformly through each element's mesh: the kinds' aft-element shares on
+/// the aft element, the rest on the main one; where no kind gives a share, the whole mass
+/// through both alike.
 fn flap_inertia(
     scene: &Scene,
     meshed: &[flapwright_geom::parts::Part],
     records: &[StationRecord],
     flap: &str,
-) -> Result<Option<RigidInertia>> {
-    let mass_kg: f64 = records
-        .iter()
-        .filter(|r| r.flap.as_deref() == Some(flap))
-        .map(|r| scene.station[r.index].mechanism.kind().flap_mass_kg())
-        .sum();
-    let Some(part) = meshed.iter().find(|p| p.name == flap) else {
-        return Ok(None);
+) -> Result<(Option<RigidInertia>, Option<RigidInertia>)> {
+    let kinds = || {
+        records
+            .iter()
+            .filter(|r| r.flap.as_deref() == Some(flap))
+            .map(|r| scene.station[r.index].mechanism.kind())
     };
-    let shape = CollisionShape::from_mesh(&part.mesh).with_context(|| format!("the mesh of flap {flap}"))?;
-    let Some(unit) = shape.compute_mass_properties(1.0) else {
-        return Ok(None);
+    let mass_kg: f64 = kinds().map(|k| k.flap_mass_kg()).sum();
+    let aft_share_kg: f64 = kinds().map(|k| k.aft_element_mass_kg()).sum();
+    // Each element's mass properties at density 1 (the mass is then the volume).
+    let unit = |name: &str| -> Result<Option<flapwright_geom::MassProperties>> {
+        let Some(part) = meshed.iter().find(|p| p.name == name) else {
+            return Ok(None);
+        };
+        let shape = CollisionShape::from_mesh(&part.mesh).with_context(|| format!("the mesh of {name}"))?;
+        Ok(shape.compute_mass_properties(1.0).filter(|u| u.mass_kg > 0.0))
     };
-    if mass_kg <= 0.0 || unit.mass_kg <= 0.0 {
-        return Ok(None);
-    }
-    // At density 1 the mass is the volume: scale to the flap's mass.
-    let density = mass_kg / unit.mass_kg;
-    Ok(Some(RigidInertia {
-        mass_kg,
-        centre_of_mass_ac_m: unit.centre_of_mass,
-        inertia_ac_kg_m2: unit.inertia_kg_m2 * density,
-    }))
+    let scaled = |unit: Option<flapwright_geom::MassProperties>, mass_kg: f64| {
+        unit.filter(|_| mass_kg > 0.0).map(|u| RigidInertia {
+            mass_kg,
+            centre_of_mass_ac_m: u.centre_of_mass,
+            inertia_ac_kg_m2: u.inertia_kg_m2 * (mass_kg / u.mass_kg),
+        })
+    };
+    let main = unit(flap)?;
+    let aft = unit(&flapwright_geom::parts::aft_element_name(flap))?;
+    Ok(match (main, aft) {
+        (main, None) => (scaled(main, mass_kg), None),
+        (Some(m), Some(a)) if aft_share_kg <= 0.0 => {
+            let volume = m.mass_kg + a.mass_kg;
+            (
+                scaled(Some(m), mass_kg * m.mass_kg / volume),
+                scaled(Some(a), mass_kg * a.mass_kg / volume),
+            )
+        }
+        (main, aft) => (scaled(main, mass_kg - aft_share_kg), scaled(aft, aft_share_kg)),
+    })
 }
 
 fn style_of(part: &str, flap_names: &[String]) -> PartStyle {

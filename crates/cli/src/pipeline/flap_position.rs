@@ -262,9 +262,13 @@ pub fn flap_behind_wing(placed: &PlacedStation, flap_name: &str) -> Result<Optio
     if wing.is_empty() || flap.is_empty() {
         return Ok(None);
     }
-    Ok(Some(FlapBehindWing::new(&wing, &flap).with_context(|| {
-        format!("gap and overlap at station {}", placed.station.name)
-    })?))
+    // The gap and overlap are the (main) flap element's; the chord they are a share of
+    // runs to the whole flap's trailing edge (a two-element flap's aft element's).
+    Ok(Some(
+        FlapBehindWing::new(&wing, &flap)
+            .and_then(|measure| measure.with_chord_to(&placed.flap_polygons(flap_name)))
+            .with_context(|| format!("gap and overlap at station {}", placed.station.name))?,
+    ))
 }
 
 /// What a kind synthesised from the flap settings needs at one placed station: the wing
@@ -281,7 +285,8 @@ pub fn synthesis_context(
 ) -> Result<(SynthesisContext, Option<FlapBehindWing>)> {
     let outline = StationOutline {
         wing: placed.polygons_of(|name| name == "wing"),
-        flap: placed.polygons_of(|name| name == flap.name),
+        // The whole flap: a rail or a link must keep out of either element.
+        flap: placed.flap_polygons(&flap.name),
         // Spars and the torque tube; other flaps' sections are not structure.
         structure: placed.polygons_of(|name| name != "wing" && !flaps.iter().any(|f| f.owns_part(name))),
         lip: None,

@@ -77,7 +77,7 @@ pub fn shares(scene: &Scene, model: &WingModel, records: &mut [StationRecord]) -
         for (&(i, _), share) in stations.iter().zip(areas) {
             let record = &mut records[i];
             let placed = record.placed.as_ref().context("station not placed")?;
-            let polygons = placed.polygons_of(|part| part == name);
+            let polygons = placed.flap_polygons(name);
             let (te, le) = extent_x(&polygons).context("the station plane misses its flap")?;
             let x = le - 0.25 * (le - te);
             let (lo, hi) = vertical_span(&polygons, x).context("the station plane misses its flap")?;

@@ -138,7 +138,7 @@ pub fn assembly(
             .filter_map(|r| {
                 let placed = r.placed.as_ref()?;
                 let flap = r.flap.as_deref()?;
-                let chord = local_chord_m(&whole_flap_polygons(placed, flap));
+                let chord = local_chord_m(&placed.flap_polygons(flap));
                 Some((r.station.clone(), percent / 100.0 * chord))
             })
             .filter(|(_, clearance)| *clearance > settings.required_clearance_m)
@@ -221,13 +221,6 @@ pub fn fitted_flap_motion(
     Ok(FittedFlapMotion::try_new(part, element, carriers, vertices_ac)?)
 }
 
-/// The section polygons of `flap` at `placed`: its main element's and its aft element's,
-/// whose chordwise extent together is the local flap chord.
-fn whole_flap_polygons(placed: &PlacedStation, flap: &str) -> Vec<Vec<nalgebra::Point2<f64>>> {
-    let aft = flapwright_geom::parts::aft_element_name(flap);
-    placed.polygons_of(|name| name == flap || name == aft)
-}
-
 /// The chordwise extent of a section cut (station x, m): the local chord of a flap.
 fn local_chord_m(polygons: &[Vec<nalgebra::Point2<f64>>]) -> f64 {
     let (lo, hi) = polygons
@@ -259,7 +252,7 @@ pub fn fairing_depths(
         let flap_chord_m = record
             .flap
             .as_deref()
-            .map_or(0.0, |flap| local_chord_m(&whole_flap_polygons(station, flap)));
+            .map_or(0.0, |flap| local_chord_m(&station.flap_polygons(flap)));
         let samples = resolution.fairing_samples;
         let parameters: Vec<f64> = (0..samples).map(|i| i as f64 / (samples - 1) as f64).collect();
         let points = resolution.fairing_points_per_capsule;

@@ -66,7 +66,7 @@ pub fn station_problems(scene: &Scene, records: &[StationRecord]) -> Vec<Problem
             ));
             continue;
         }
-        let flap_section = place.polygons_of(|name| name == flap.name);
+        let flap_section = place.flap_polygons(&flap.name);
         let Some((lo, hi)) = bounds(&flap_section) else {
             problems.push(Problem::new(
                 offset_key,

@@ -36,6 +36,13 @@ pub struct PlacedStation {
 }
 
 impl PlacedStation {
+    /// The section polygons of the whole flap `flap` (station frame): its own part's and
+    /// its aft element's, stowed.
+    pub fn flap_polygons(&self, flap: &str) -> Vec<Vec<Point2<f64>>> {
+        let aft = flapwright_geom::parts::aft_element_name(flap);
+        self.polygons_of(|name| name == flap || name == aft)
+    }
+
     /// The section polygons (station frame) of the parts `wanted` accepts by name.
     pub fn polygons_of(&self, wanted: impl Fn(&str) -> bool) -> Vec<Vec<Point2<f64>>> {
         self.sections

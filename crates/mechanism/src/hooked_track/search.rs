@@ -44,6 +44,9 @@ const LEADS: [f64; 9] = [0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.5];
 /// The shortest fitting from the carriage to the roller, fraction of the flap chord: a
 /// shorter one turns the flap fast for its stroke and holds it with little lever.
 const MIN_SPAN: f64 = 0.2;
+/// How close the sampled roller must come to its landing place, fraction of the rail's
+/// span (the fitting from the carriage to the roller).
+const LANDING_MATCH: f64 = 1e-6;
 /// The hook's radius, fractions of the flap chord.
 const HOOK_RADIUS: (f64, f64) = (0.05, 20.0);
 
@@ -198,9 +201,12 @@ pub(super) fn prepare(
         .max(below(g, hw.nut_radius_m))
         .max(below(landing * g, hw.nut_radius_m))
         .max(0.0);
+    // The deployment check takes the roller's landing place from the sampled pose, which
+    // meets the exact one to 1e-6 of the span (its `reached` test): the bound gives that
+    // much away, so that it stays at most the cost.
     Ok(Prepared {
         rail,
-        lower_bound: depth + takeoff(spec, &rail).1,
+        lower_bound: depth + takeoff(spec, &rail).1 - LANDING_MATCH * rail.span,
     })
 }
 
@@ -305,7 +311,7 @@ pub(super) fn check(
     depth = depth
         .max(below(mount - half, hw.jack_body_radius_m))
         .max(below(mount + half, hw.jack_body_radius_m));
-    let reached = last.is_some_and(|pose| (pose.g - landing * g).norm() <= 1e-6 * rail.span);
+    let reached = last.is_some_and(|pose| (pose.g - landing * g).norm() <= LANDING_MATCH * rail.span);
     if !reached {
         search.branch_or_order += 1;
         return Err((

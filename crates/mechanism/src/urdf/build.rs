@@ -212,17 +212,30 @@ fn add_station(
         if let Some(aft) = &station.aft_element {
             // Same rule as the flap: the link frame is the station frame with the flap
             // stowed, hung off the link of the body that moves the aft element.
-            let carrier = crate::seam::aft_flap_body(station.mechanism.bodies())
-                .and_then(|b| tree.links.iter().find(|l| l.body == b));
-            let (carrier_link, carrier_frame) =
-                carrier.map_or((tree.flap_link.as_str(), flap_frame), |l| (l.name.as_str(), l.frame));
-            let mut link = empty_link(&aft.name);
-            dress(&mut link, std::slice::from_ref(aft), None, &placement.inverse())?;
+            let (carrier_link, carrier_frame) = match crate::seam::aft_flap_body(station.mechanism.bodies()) {
+                None => (tree.flap_link.as_str(), flap_frame),
+                Some(body) => tree
+                    .links
+                    .iter()
+                    .find(|l| l.body == body)
+                    .map(|l| (l.name.as_str(), l.frame))
+                    .ok_or_else(|| Error::UrdfTreeIncomplete {
+                        station: station.name.clone(),
+                        body: station.mechanism.bodies()[body].name.clone(),
+                    })?,
+            };
+            let mut link = empty_link(&aft.mesh.name);
+            dress(
+                &mut link,
+                std::slice::from_ref(&aft.mesh),
+                aft.inertia.as_ref(),
+                &placement.inverse(),
+            )?;
             robot.links.push(link);
             robot.joints.push(joint(
                 &format!("{}_aft_element_mount", station.name),
                 JointType::Fixed,
-                (carrier_link, &aft.name),
+                (carrier_link, &aft.mesh.name),
                 &lift(&carrier_frame.inverse()),
                 z,
                 None,

@@ -332,11 +332,11 @@ pub(crate) fn validate_stations(stations: &[StationMechanism3d]) -> Result<()> {
             if !station.owns_flap {
                 return Err(Error::FlapMeshOnNonOwningStation {
                     station: station.name.clone(),
-                    flap: aft.name.clone(),
+                    flap: aft.mesh.name.clone(),
                 });
             }
-            validate_name("aft element", &aft.name)?;
-            validate_mesh_path(&aft.filename)?;
+            validate_name("aft element", &aft.mesh.name)?;
+            validate_mesh_path(&aft.mesh.filename)?;
         }
         if let Some(mesh) = &station.flap_mesh {
             if !station.owns_flap {

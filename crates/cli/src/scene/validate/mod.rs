@@ -390,11 +390,11 @@ impl Checker<'_> {
             }
         }
         for (i, spar) in scene.structure.spars.iter().enumerate() {
-            if reserved.contains(&spar.name.as_str()) || scene.flap.iter().any(|f| f.name == spar.name) {
+            if reserved.contains(&spar.name.as_str()) || scene.flap.iter().any(|f| f.owns_part(&spar.name)) {
                 self.fail(
                     format!("structure.spars[{i}].name"),
                     format!(
-                        "= \"{}\": already the name of another part (the wing, the torque tube or a flap)",
+                        "= \"{}\": already the name of another part (the wing, the torque tube, a flap or a flap's aft element \"<flap>-aft\")",
                         spar.name
                     ),
                 );
@@ -405,6 +405,20 @@ impl Checker<'_> {
                 self.fail(
                     format!("flap[{i}].name"),
                     format!("= \"{}\": reserved for another part", flap.name),
+                );
+            }
+            // Another flap's aft element takes "<flap>-aft".
+            if let Some(other) = scene
+                .flap
+                .iter()
+                .find(|other| other.name != flap.name && other.owns_part(&flap.name))
+            {
+                self.fail(
+                    format!("flap[{i}].name"),
+                    format!(
+                        "= \"{}\": the name of flap \"{}\"'s aft element (its part is \"<flap>-aft\")",
+                        flap.name, other.name
+                    ),
                 );
             }
         }

@@ -10,8 +10,12 @@
 //!   2 (R_i^T (t_i - O) + O) · A = |O|² - |t_i - O|². The free choice is O.
 //!
 //! The search takes track directions round the circle and fixed pivots on a grid below
-//! the wing and up the rear spar's web, keeps the pairs whose carriage and link pivot sit
-//! on brackets under the flap, reach the settings in order, stay above the minimum
+//! the wing, up the rear spar's web and across the trailing-edge bay behind it, keeps the
+//! pairs whose carriage and link pivot sit on brackets under the flap or reaching forward
+//! of its nose under the cove (a flap that mostly turns about a deep pole puts every
+//! collinear carriage point and the link points of pivots in the bay there; the track beam,
+//! the link and these brackets are then checked clear of the wing section over the whole
+//! deployment), reach the settings in order, stay above the minimum
 //! transmission angle, keep the flap off the wing's trailing edge and the links out of the
 //! sections, and picks the shallowest (the fairing's depth as the fairing stage measures
 //! it). Every rejection is counted ([`LinkTrackSearch`]).
@@ -28,17 +32,27 @@ use crate::rocker_drive::turn_angle;
 
 /// Loop samples of the feasibility check over the deployment.
 pub(super) const LOOP_SAMPLES: usize = 48;
-/// Track directions tried: every 5 deg round the circle (the carriage's three positions
+/// Track directions tried: every 2.5 deg round the circle (the carriage's three positions
 /// decide which way it runs; a flap that mostly turns puts the collinear points low
 /// under it, running forward, or inside it, running steeply down aft).
-const SLOPES: usize = 72;
+const SLOPES: usize = 144;
 /// Fixed-pivot grid: columns and rows.
 const PIVOT_COLUMNS: usize = 12;
 const PIVOT_ROWS: usize = 8;
 /// Fixed pivots tried up the rear spar's web.
 const WEB_ROWS: usize = 12;
+/// Columns of fixed pivots across the trailing-edge bay (the web's the first) and rows in
+/// each of the others.
+const BAY_COLUMNS: usize = 6;
+const BAY_ROWS: usize = 8;
 /// Deepest bracket under the flap, fraction of its chord.
 const MAX_BRACKET_DEPTH: f64 = 1.0;
+/// Farthest a bracket on the flap reaches forward of its stowed nose, under the cove,
+/// fraction of its chord. A flap that mostly turns (a deep pole, little Fowler motion per
+/// degree) puts every collinear carriage point and most link points for pivots near the
+/// rear spar ahead of its nose: on the transport scene with a 9 % shroud, none of the 72
+/// track slopes gives a carriage under the flap that runs in order.
+const FORWARD_REACH: f64 = 0.5;
 /// Largest link rotation (rad).
 const MAX_LINK_ROTATION_RAD: f64 = 150.0 * std::f64::consts::PI / 180.0;
 
@@ -100,7 +114,25 @@ fn on_bracket(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool {
     vertical_span(&spec.outline.flap, p.x).is_some_and(|(lo, _)| {
         let depth = lo - p.y;
         depth >= 0.02 * flap_chord && depth <= MAX_BRACKET_DEPTH * flap_chord
-    })
+    }) || ahead_of_nose(spec, p, flap_chord)
+}
+
+/// True when `p` sits on a bracket reaching forward of the stowed flap's nose under the
+/// cove (`003_...` Fig. 9: the carriage rides ahead of the flap): at most
+/// [`FORWARD_REACH`] of the flap chord ahead of the nose, outside the wing section, between
+/// 2 % and [`MAX_BRACKET_DEPTH`] of the flap chord below the wing's lower skin.
+fn ahead_of_nose(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool {
+    let outline = &spec.outline;
+    let Some((le, _, _)) = outline.flap_chord() else {
+        return false;
+    };
+    p.x > le
+        && p.x <= le + FORWARD_REACH * flap_chord
+        && !inside(&outline.wing, p)
+        && vertical_span(&outline.flap, p.x).is_none()
+        && outline.depth_below(p).is_some_and(|depth| {
+            depth >= 0.02 * flap_chord && depth <= MAX_BRACKET_DEPTH * flap_chord
+        })
 }
 
 /// True when the carriage pin `p` can sit on the stowed flap: on a bracket under it, or
@@ -110,6 +142,7 @@ fn on_bracket(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool {
 fn carriage_place(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool {
     vertical_span(&spec.outline.flap, p.x)
         .is_some_and(|(lo, hi)| p.y <= hi - 0.02 * flap_chord && lo - p.y <= MAX_BRACKET_DEPTH * flap_chord)
+        || ahead_of_nose(spec, p, flap_chord)
 }
 
 /// Carriage candidates: (track direction, carriage point) for each direction whose carriage
@@ -177,13 +210,23 @@ pub(super) fn links(
                     ));
                 }
             }
-            // On the rear spar's web (`003_...` Fig. 6), clear of it by the actuator.
-            if let Some((face, lo, hi)) = outline.rear_web() {
-                let x = face - spec.hardware.jack_body_radius_m - spec.hardware.link_radius_m;
+            // On the rear spar's web (`003_...` Fig. 6), clear of it by the actuator, and on
+            // fittings across the trailing-edge bay behind it (ribs carry them as they carry
+            // the web's): columns from the web aft to the cove's lower lip, each from the
+            // lower to the upper skin less the actuator's reach.
+            if let Some((face, _, _)) = outline.rear_web() {
                 let inset = spec.hardware.jack_body_radius_m + spec.hardware.link_radius_m;
-                for j in 0..WEB_ROWS {
-                    let y = lo + inset + (hi - lo - 2.0 * inset) * j as f64 / (WEB_ROWS - 1) as f64;
-                    grid.push(Point2::new(x, y));
+                let (front, back) = (face - inset, lip + inset);
+                for i in 0..BAY_COLUMNS {
+                    let x = front - (front - back) * i as f64 / (BAY_COLUMNS - 1) as f64;
+                    let Some((lo, hi)) = vertical_span(&outline.wing, x) else {
+                        continue;
+                    };
+                    let rows = if i == 0 { WEB_ROWS } else { BAY_ROWS };
+                    for j in 0..rows {
+                        let y = lo + inset + (hi - lo - 2.0 * inset) * j as f64 / (rows - 1) as f64;
+                        grid.push(Point2::new(x, y));
+                    }
                 }
             }
             grid
@@ -297,6 +340,33 @@ pub(super) fn check(
         })
     });
     let min_transmission = check_deployment(&rules, samples)?;
+    // Brackets ahead of the flap's nose ride under the wing's lower skin: the link pin and
+    // the carriage must stay out of the wing section, the link clear of it (or through the
+    // bay only, from the web), and the track beam (stowed carriage to landing) under it.
+    let outline = &spec.outline;
+    let landing_c = loop_.at(turns[1]).map(|pose| pose.c).unwrap_or(c);
+    if segment_meets(&outline.wing, c, landing_c) || inside(&outline.wing, c) || inside(&outline.wing, landing_c) {
+        return Err((
+            SynthesisDefect::PivotOutsideRegion,
+            "the track beam cuts the wing section".into(),
+        ));
+    }
+    for k in 0..=LOOP_SAMPLES {
+        let Some(pose) = loop_.at(turns[1] * k as f64 / LOOP_SAMPLES as f64) else {
+            continue;
+        };
+        let link_clear = if on_web(outline, o) {
+            outline.through_bay_only(o, pose.a, hw.link_radius_m)
+        } else {
+            !segment_meets(&outline.wing, o, pose.a)
+        };
+        if !link_clear || inside(&outline.wing, pose.a) || inside(&outline.wing, pose.c) {
+            return Err((
+                SynthesisDefect::PivotOutsideRegion,
+                "the link or a bracket enters the wing section part way".into(),
+            ));
+        }
+    }
     Ok(Found {
         loop_,
         turns,

@@ -130,9 +130,9 @@ fn ahead_of_nose(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool 
         && p.x <= le + FORWARD_REACH * flap_chord
         && !inside(&outline.wing, p)
         && vertical_span(&outline.flap, p.x).is_none()
-        && outline.depth_below(p).is_some_and(|depth| {
-            depth >= 0.02 * flap_chord && depth <= MAX_BRACKET_DEPTH * flap_chord
-        })
+        && outline
+            .depth_below(p)
+            .is_some_and(|depth| depth >= 0.02 * flap_chord && depth <= MAX_BRACKET_DEPTH * flap_chord)
 }
 
 /// True when the carriage pin `p` can sit on the stowed flap: on a bracket under it, or

@@ -9,9 +9,11 @@
 //! positions lie on a circle about a chosen fixed pivot. The free choices, the track slope
 //! and the link's fixed pivot, are the designer's or searched for the shallowest mechanism.
 //!
-//! The rotary actuator sits at the link's fixed pivot, searched below the lower skin and up
-//! the rear spar's web (`003_...` Fig. 6); from the web the link crosses the trailing-edge
-//! bay and leaves it through the lower skin or the cove wall, never the upper skin.
+//! The rotary actuator sits at the link's fixed pivot, searched below the lower skin, up
+//! the rear spar's web and across the trailing-edge bay behind it (`003_...` Fig. 6); from
+//! there the link crosses the bay and leaves it through the lower skin or the cove wall,
+//! never the upper skin. The carriage and the link pin sit on brackets under the flap or
+//! reaching forward of its nose under the lower skin (`search`).
 //!
 //! Pose in closed form (the `linkage` module). Statics: the track pushes the flap only square to
 //! itself (N n at C); moments of the flap about A give N = -M_A / ((C - A) · d), the flap's
@@ -79,12 +81,12 @@ pub struct LinkTrackSearch {
     pub pivots: usize,
     /// ... with no carriage or link point (the linear equations are singular).
     pub no_line: usize,
-    /// ... whose carriage is not on a bracket under the flap.
+    /// ... whose carriage is not on a bracket under the flap or ahead of its nose.
     pub carriage_off_bracket: usize,
     /// ... whose carriage does not run aft in order.
     pub order_defect: usize,
     /// ... whose pivot lies in the wing or above its lower surface, or whose link point is
-    /// not on a bracket under the flap.
+    /// not on a bracket under the flap or ahead of its nose.
     pub pivot_outside_region: usize,
     /// Pairs of a carriage and a link tried.
     pub pairs: usize,

@@ -13,9 +13,10 @@
 //! the wing, up the rear spar's web and across the trailing-edge bay behind it, keeps the
 //! pairs whose carriage and link pivot sit on brackets under the flap or reaching forward
 //! of its nose under the cove (a flap that mostly turns about a deep pole puts every
-//! collinear carriage point and the link points of pivots in the bay there; the track beam,
-//! the link and these brackets are then checked clear of the wing section over the whole
-//! deployment), reach the settings in order, stay above the minimum
+//! collinear carriage point and the link points of pivots in the bay there; the pins, the
+//! track beam's line and the link's line are then checked out of the wing section (and the
+//! link's out of the spars) over the whole deployment, the solids' radii and the brackets'
+//! arms left to the interference check), reach the settings in order, stay above the minimum
 //! transmission angle, keep the flap off the wing's trailing edge and the links out of the
 //! sections, and picks the shallowest (the fairing's depth as the fairing stage measures
 //! it). Every rejection is counted ([`LinkTrackSearch`]).
@@ -26,7 +27,7 @@ use super::linkage::Loop;
 use super::{LinkTrackSearch, LinkTrackSpec};
 use crate::error::SynthesisDefect;
 use crate::feasibility::{check_deployment, DeploymentRules, LoopSample};
-use crate::outline::{inside, segment_meets, vertical_span};
+use crate::outline::{boundary_distance, inside, segment_meets, vertical_span};
 use crate::precision::PrecisionPosition;
 use crate::rocker_drive::turn_angle;
 
@@ -109,7 +110,8 @@ fn solve(rows: Matrix2<f64>, rhs: Vector2<f64>) -> Option<Point2<f64>> {
 }
 
 /// True when `p` hangs below the stowed flap on a bracket: within the flap's chord, between
-/// 2 % and [`MAX_BRACKET_DEPTH`] of its chord below its lower surface.
+/// 2 % and [`MAX_BRACKET_DEPTH`] of its chord below its lower surface, or on a bracket
+/// reaching forward of its nose ([`ahead_of_nose`]).
 fn on_bracket(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool {
     vertical_span(&spec.outline.flap, p.x).is_some_and(|(lo, _)| {
         let depth = lo - p.y;
@@ -183,7 +185,9 @@ pub(super) fn carriages(
 
 /// Fixed-pivot candidates with their link points: the given pivot, or a grid below the
 /// wing from the cove lip to a flap chord ahead of it, 5 % to 60 % of the flap chord below
-/// the lower surface; each link point on a bracket under the flap.
+/// the lower surface, and pivots on the rear spar's web and across the trailing-edge bay
+/// behind it (inside the skin with the actuator's reach to spare); each link point on a
+/// bracket under the flap or reaching forward of its nose.
 pub(super) fn links(
     spec: &LinkTrackSpec,
     search: &mut LinkTrackSearch,
@@ -217,15 +221,25 @@ pub(super) fn links(
             if let Some((face, _, _)) = outline.rear_web() {
                 let inset = spec.hardware.jack_body_radius_m + spec.hardware.link_radius_m;
                 let (front, back) = (face - inset, lip + inset);
-                for i in 0..BAY_COLUMNS {
+                let columns = if front > back { BAY_COLUMNS } else { 1 };
+                for i in 0..columns {
                     let x = front - (front - back) * i as f64 / (BAY_COLUMNS - 1) as f64;
                     let Some((lo, hi)) = vertical_span(&outline.wing, x) else {
                         continue;
                     };
+                    // A section too thin for the actuator has no room for it.
+                    if hi - lo <= 2.0 * inset {
+                        continue;
+                    }
                     let rows = if i == 0 { WEB_ROWS } else { BAY_ROWS };
                     for j in 0..rows {
                         let y = lo + inset + (hi - lo - 2.0 * inset) * j as f64 / (rows - 1) as f64;
-                        grid.push(Point2::new(x, y));
+                        let o = Point2::new(x, y);
+                        // Inside the skin with the actuator's reach to spare (not in the
+                        // shroud, the lip or against the cove wall over the flap's nose).
+                        if inside(&outline.wing, o) && boundary_distance(&outline.wing, o) >= inset {
+                            grid.push(o);
+                        }
                     }
                 }
             }
@@ -340,9 +354,11 @@ pub(super) fn check(
         })
     });
     let min_transmission = check_deployment(&rules, samples)?;
-    // Brackets ahead of the flap's nose ride under the wing's lower skin: the link pin and
-    // the carriage must stay out of the wing section, the link clear of it (or through the
-    // bay only, from the web), and the track beam (stowed carriage to landing) under it.
+    // Brackets ahead of the flap's nose ride under the wing's lower skin: the pins (the link
+    // pin and the carriage) must stay out of the wing section, the link's line clear of it
+    // (or through the bay only, from the web) and of the spars, and the track beam's line
+    // (stowed carriage to landing) under it. Lines and points here: the solids' radii and
+    // the brackets' arms to the flap are the interference check's (it sweeps every solid).
     let outline = &spec.outline;
     let landing_c = loop_.at(turns[1]).map(|pose| pose.c).unwrap_or(c);
     if segment_meets(&outline.wing, c, landing_c) || inside(&outline.wing, c) || inside(&outline.wing, landing_c) {
@@ -359,7 +375,7 @@ pub(super) fn check(
             outline.through_bay_only(o, pose.a, hw.link_radius_m)
         } else {
             !segment_meets(&outline.wing, o, pose.a)
-        };
+        } && !segment_meets(&outline.structure, o, pose.a);
         if !link_clear || inside(&outline.wing, pose.a) || inside(&outline.wing, pose.c) {
             return Err((
                 SynthesisDefect::PivotOutsideRegion,

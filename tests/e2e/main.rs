@@ -52,6 +52,25 @@ pub fn stages(report: &serde_json::Value) -> Vec<&str> {
         .collect()
 }
 
+/// Runs `flapwright <command> <scene> <rest> --out out` on the repository's `scene` (a path
+/// under the repository root) in a fresh folder, asserts success, and returns the folder
+/// and the report it wrote.
+pub fn run_on_scene(command: &str, scene: &str, rest: &[&str]) -> (tempfile::TempDir, serde_json::Value) {
+    let dir = tempfile::tempdir().unwrap();
+    let scene_path = repo_root().join(scene);
+    let mut args = vec![command, scene_path.to_str().unwrap()];
+    args.extend(rest);
+    args.extend(["--out", "out"]);
+    let output = run_flapwright(dir.path(), &args);
+    assert!(
+        output.status.success(),
+        "stderr:\n{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let text = std::fs::read_to_string(dir.path().join("out/report.json")).unwrap();
+    (dir, serde_json::from_str(&text).unwrap())
+}
+
 /// Runs `flapwright` with `args` in `dir`.
 pub fn run_flapwright(dir: &Path, args: &[&str]) -> Output {
     std::process::Command::new(env!("CARGO_BIN_EXE_flapwright"))

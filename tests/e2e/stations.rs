@@ -8,19 +8,10 @@ use flapwright_planes::{boundary_deviation, parse_boundary_csv};
 use nalgebra::{Point2, Vector3};
 use serde_json::Value;
 
-use crate::{repo_root, run_flapwright};
+use crate::repo_root;
 
 fn design(scene: &str) -> (tempfile::TempDir, Value) {
-    let dir = tempfile::tempdir().unwrap();
-    let scene_path = repo_root().join(scene);
-    let output = run_flapwright(dir.path(), &["design", scene_path.to_str().unwrap(), "--out", "out"]);
-    assert!(
-        output.status.success(),
-        "stderr:\n{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    let text = std::fs::read_to_string(dir.path().join("out/report.json")).unwrap();
-    (dir, serde_json::from_str(&text).unwrap())
+    crate::run_on_scene("design", scene, &[])
 }
 
 fn vector(value: &Value) -> Vector3<f64> {

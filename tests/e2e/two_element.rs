@@ -6,24 +6,9 @@ use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
 use serde_json::Value;
 
 use crate::stl_reader::read_binary_stl;
-use crate::{repo_root, run_flapwright};
+use crate::repo_root;
 
 const SCENE: &str = "data/scenes/double-slotted-wing.toml";
-
-fn run(args: &[&str]) -> (tempfile::TempDir, Value) {
-    let dir = tempfile::tempdir().unwrap();
-    let scene = repo_root().join(SCENE);
-    let mut all = vec![args[0], scene.to_str().unwrap()];
-    all.extend(&args[1..]);
-    let output = run_flapwright(dir.path(), &all);
-    assert!(
-        output.status.success(),
-        "stderr:\n{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    let text = std::fs::read_to_string(dir.path().join("out/report.json")).unwrap();
-    (dir, serde_json::from_str(&text).unwrap())
-}
 
 /// The vertices of a binary STL file, in file order.
 fn vertices(path: &std::path::Path) -> Vec<Point3<f64>> {
@@ -58,7 +43,7 @@ fn rigid_rotation(from: &[Point3<f64>], to: &[Point3<f64>]) -> (Rotation3<f64>, 
 
 #[test]
 fn the_aft_element_is_a_part_checked_drawn_and_measured_in_its_own_slot() {
-    let (dir, report) = run(&["design", "--out", "out"]);
+    let (dir, report) = crate::run_on_scene("design", SCENE, &[]);
     let out = dir.path().join("out");
     let part = report["parts"]
         .as_array()
@@ -166,8 +151,8 @@ fn the_aft_element_is_a_part_checked_drawn_and_measured_in_its_own_slot() {
 /// to the stations against the planar poses the gap and overlap stage measures).
 #[test]
 fn at_landing_the_aft_element_turns_by_the_second_slots_relative_deflection() {
-    let (stowed_dir, report) = run(&["design", "--out", "out"]);
-    let (landing_dir, _) = run(&["export", "--stl", "--at", "landing", "--out", "out"]);
+    let (stowed_dir, report) = crate::run_on_scene("design", SCENE, &[]);
+    let (landing_dir, _) = crate::run_on_scene("export", SCENE, &["--stl", "--at", "landing"]);
     let turn = |part: &str| {
         let file = format!("out/{part}.stl");
         let (rotation, residual) = rigid_rotation(
@@ -301,9 +286,29 @@ fn without_an_aft_flap_body_the_aft_element_moves_with_the_main_one() {
         let name = solid["name"].as_str().unwrap();
         assert!(checked(name), "{name} against the aft element");
     }
-    // The clean chord runs to the flap's trailing edge, as for the single-element flap
-    // (the aft element's trailing edge is the flap's): 4.83 m at ob-outer
-    // (data/validation/003-table1-fairing-depth.md).
+    // The clean chord runs from the wing's nose to the aft element's trailing edge (the
+    // flap's): read here off the station's section cuts (station x to the nose).
+    let extent = |part: &str| {
+        station["plane"]["sections"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|s| s["part_name"] == part)
+            .flat_map(|s| {
+                s["polygons"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .flat_map(|p| p.as_array().unwrap())
+            })
+            .map(|point| point[0].as_f64().unwrap())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)))
+    };
+    let expected = extent("wing").1 - extent("outboard-aft").0;
     let chord = station["flap_position"]["local_chord_m"].as_f64().unwrap();
-    assert!((chord - 4.83).abs() < 0.005, "{chord}");
+    assert!((chord - expected).abs() < 1e-12, "{chord} against the cuts' {expected}");
+    assert!(
+        extent("outboard-aft").0 < extent("outboard").0,
+        "the aft element ends the flap"
+    );
 }

@@ -196,9 +196,18 @@ impl FixtureFlap {
         Translation3::from(self.hinge_point.coords) * turn * Translation3::from(-self.hinge_point.coords)
     }
 
-    /// The other parts.
-    fn others(&self) -> impl Iterator<Item = &flapwright_geom::Part> {
-        self.parts.iter().filter(|p| p.name != self.name)
+    /// Each other part with its shape, against the flap stowed (nested in the cove),
+    /// deployed (12 and 40 deg) and turned the wrong way into the wing (-25 deg): the part,
+    /// its shape, the angle and the flap's pose.
+    fn poses_against_others(&self) -> Vec<(&flapwright_geom::Part, CollisionShape, f64, Isometry3<f64>)> {
+        let mut cases = Vec::new();
+        for other in self.parts.iter().filter(|p| p.name != self.name) {
+            let shape = CollisionShape::from_mesh(&other.mesh).unwrap();
+            for angle_deg in [0.0, 12.0, 40.0, -25.0] {
+                cases.push((other, shape.clone(), angle_deg, self.turned(angle_deg)));
+            }
+        }
+        cases
     }
 }
 
@@ -208,30 +217,25 @@ fn mesh_pair_distance_equals_parry_for_nested_and_crossing_meshes() {
     let (flap_mesh, flap_shape) = (&fixture.mesh, &fixture.shape);
     let identity = Isometry3::identity();
     let mut checked = 0;
-    for other in fixture.others() {
-        let other_shape = CollisionShape::from_mesh(&other.mesh).unwrap();
-        // Stowed (nested in the cove), deployed, and turned the wrong way into the wing.
-        for angle_deg in [0.0, 12.0, 40.0, -25.0] {
-            let pose = fixture.turned(angle_deg);
-            let ours = compute_distance(flap_shape, &pose, &other_shape, &identity).unwrap();
-            let swapped = compute_distance(&other_shape, &identity, flap_shape, &pose).unwrap();
-            let reference = parry_mesh_distance(flap_mesh, &pose, &other.mesh, &identity);
-            let what = format!("flap at {angle_deg} deg vs {}", other.name);
-            assert!(
-                (ours.distance_m - reference).abs() <= 1e-12,
-                "{what}: {} vs parry {reference}",
-                ours.distance_m
-            );
-            assert!((swapped.distance_m - reference).abs() <= 1e-12, "{what} (swapped)");
-            // Clear: the reported points are that far apart. Crossing: they are a contact's
-            // points, apart by a penetration depth. Either way each pair mirrors the other.
-            let gap = (ours.point_a_ac - ours.point_b_ac).norm();
-            if reference > 0.0 {
-                assert!((gap - ours.distance_m).abs() <= 1e-9, "{what}: points {gap} apart");
-            }
-            assert_relative_eq!(ours.point_a_ac, swapped.point_b_ac, epsilon = 1e-9);
-            checked += usize::from(reference > 0.0);
+    for (other, other_shape, angle_deg, pose) in fixture.poses_against_others() {
+        let ours = compute_distance(flap_shape, &pose, &other_shape, &identity).unwrap();
+        let swapped = compute_distance(&other_shape, &identity, flap_shape, &pose).unwrap();
+        let reference = parry_mesh_distance(flap_mesh, &pose, &other.mesh, &identity);
+        let what = format!("flap at {angle_deg} deg vs {}", other.name);
+        assert!(
+            (ours.distance_m - reference).abs() <= 1e-12,
+            "{what}: {} vs parry {reference}",
+            ours.distance_m
+        );
+        assert!((swapped.distance_m - reference).abs() <= 1e-12, "{what} (swapped)");
+        // Clear: the reported points are that far apart. Crossing: they are a contact's
+        // points, apart by a penetration depth. Either way each pair mirrors the other.
+        let gap = (ours.point_a_ac - ours.point_b_ac).norm();
+        if reference > 0.0 {
+            assert!((gap - ours.distance_m).abs() <= 1e-9, "{what}: points {gap} apart");
         }
+        assert_relative_eq!(ours.point_a_ac, swapped.point_b_ac, epsilon = 1e-9);
+        checked += usize::from(reference > 0.0);
     }
     // Some poses must be clear and some crossing for the comparison to cover both branches.
     assert!(
@@ -364,27 +368,23 @@ fn an_oriented_box_bounds_its_mesh_and_its_separation_bounds_the_clearance() {
     assert!(CollisionShape::ball(0.1).unwrap().compute_oriented_box().is_none());
     let identity = Isometry3::identity();
     let mut positive = 0;
-    for other in fixture.others() {
-        let other_shape = CollisionShape::from_mesh(&other.mesh).unwrap();
-        for angle_deg in [0.0, 12.0, 40.0, -25.0] {
-            let pose = fixture.turned(angle_deg);
-            let clearance = flapwright_geom::compute_clearance(flap_shape, &pose, &other_shape, &identity, 0.01)
-                .unwrap()
-                .distance_m;
-            for growth in [0.0, 0.05] {
-                let bound =
-                    flapwright_geom::compute_box_separation(&oriented, &pose, growth, &other_shape, &identity).unwrap();
-                assert!(
-                    bound <= clearance + 1e-12,
-                    "{} at {angle_deg} deg: {bound} > {clearance}",
-                    other.name
-                );
-                assert!(bound >= 0.0);
-                if clearance == 0.0 {
-                    assert_eq!(bound, 0.0);
-                }
-                positive += usize::from(bound > 0.0);
+    for (other, other_shape, angle_deg, pose) in fixture.poses_against_others() {
+        let clearance = flapwright_geom::compute_clearance(flap_shape, &pose, &other_shape, &identity, 0.01)
+            .unwrap()
+            .distance_m;
+        for growth in [0.0, 0.05] {
+            let bound =
+                flapwright_geom::compute_box_separation(&oriented, &pose, growth, &other_shape, &identity).unwrap();
+            assert!(
+                bound <= clearance + 1e-12,
+                "{} at {angle_deg} deg: {bound} > {clearance}",
+                other.name
+            );
+            assert!(bound >= 0.0);
+            if clearance == 0.0 {
+                assert_eq!(bound, 0.0);
             }
+            positive += usize::from(bound > 0.0);
         }
     }
     // The bound must certify something for the test to mean anything.

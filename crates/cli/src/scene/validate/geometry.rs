@@ -141,6 +141,19 @@ impl Checker<'_> {
         }
     }
 
+    /// `<path>.shroud_chord_fraction`, where given: the geometry's range.
+    fn shroud(&mut self, path: &str, fraction: Option<f64>) {
+        if let Some(shroud) = fraction {
+            self.in_range(
+                &format!("{path}.shroud_chord_fraction"),
+                shroud,
+                0.0,
+                flapwright_geom::flap::MAX_SHROUD_CHORD_FRACTION,
+                false,
+            );
+        }
+    }
+
     pub(super) fn flap(&mut self, path: &str, flap: &FlapScene, wing: &WingScene) {
         let (root, tip) = span_of(wing);
         let inboard_ok = self.in_range(&format!("{path}.y_inboard_m"), flap.y_inboard_m, root, tip, false);
@@ -163,15 +176,7 @@ impl Checker<'_> {
             let (min, max) = flapwright_geom::flap::FLAP_CHORD_FRACTION_RANGE;
             self.in_range(&format!("{path}.{key}"), value, min, max, false);
         }
-        if let Some(shroud) = flap.shroud_chord_fraction {
-            self.in_range(
-                &format!("{path}.shroud_chord_fraction"),
-                shroud,
-                0.0,
-                flapwright_geom::flap::MAX_SHROUD_CHORD_FRACTION,
-                false,
-            );
-        }
+        self.shroud(path, flap.shroud_chord_fraction);
         if let Some(gap) = flap.side_gap_m {
             let quarter_span = 0.25 * (flap.y_outboard_m - flap.y_inboard_m).abs();
             self.in_range(&format!("{path}.side_gap_m"), gap, 0.0, quarter_span, false);
@@ -196,15 +201,7 @@ impl Checker<'_> {
                 max,
                 false,
             );
-            if let Some(shroud) = aft.shroud_chord_fraction {
-                self.in_range(
-                    &format!("{aft_path}.shroud_chord_fraction"),
-                    shroud,
-                    0.0,
-                    flapwright_geom::flap::MAX_SHROUD_CHORD_FRACTION,
-                    false,
-                );
-            }
+            self.shroud(&aft_path, aft.shroud_chord_fraction);
         }
         let hinge = &flap.hinge;
         let hinge_path = format!("{path}.hinge");

@@ -5,8 +5,8 @@
 use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
 use serde_json::Value;
 
-use crate::stl_reader::read_binary_stl;
 use crate::repo_root;
+use crate::stl_reader::read_binary_stl;
 
 const SCENE: &str = "data/scenes/double-slotted-wing.toml";
 

@@ -45,39 +45,31 @@ struct SweptOrientedBox {
 impl SweptBoxes {
     /// The boxes of `part` over the deployment [0, `end`].
     pub(crate) fn of(part: &Part, end: f64) -> Result<Self> {
-        let box_at = |t: f64| {
-            let pose = part.motion.pose_ac(t).map_err(|source| Error::Pose {
+        let pose_at = |t: f64| {
+            part.motion.pose_ac(t).map_err(|source| Error::Pose {
                 part: part.name.clone(),
                 parameter: t,
                 source,
-            })?;
-            Ok(part.shape.compute_aabb(&pose))
+            })
         };
         if !part.is_moving() {
-            return Ok(Self(vec![box_at(0.0)?], None));
+            return Ok(Self(vec![part.shape.compute_aabb(&pose_at(0.0)?)], None));
         }
         let width = end / SWEPT_BOX_INTERVALS as f64;
         let growth = part.motion.speed_bound() * width / 2.0;
-        let boxes = (0..SWEPT_BOX_INTERVALS)
-            .map(|k| Ok(box_at((k as f64 + 0.5) * width)?.inflated(growth)))
+        // Each interval's middle posed once, for both kinds of box.
+        let poses = (0..SWEPT_BOX_INTERVALS)
+            .map(|k| pose_at((k as f64 + 0.5) * width))
             .collect::<Result<Vec<_>>>()?;
-        let oriented = match part.shape.compute_oriented_box() {
-            Some(shape_box) => Some(SweptOrientedBox {
-                shape_box,
-                poses: (0..SWEPT_BOX_INTERVALS)
-                    .map(|k| {
-                        let t = (k as f64 + 0.5) * width;
-                        part.motion.pose_ac(t).map_err(|source| Error::Pose {
-                            part: part.name.clone(),
-                            parameter: t,
-                            source,
-                        })
-                    })
-                    .collect::<Result<Vec<_>>>()?,
-                growth_m: growth,
-            }),
-            None => None,
-        };
+        let boxes = poses
+            .iter()
+            .map(|pose| part.shape.compute_aabb(pose).inflated(growth))
+            .collect();
+        let oriented = part.shape.compute_oriented_box().map(|shape_box| SweptOrientedBox {
+            shape_box,
+            poses,
+            growth_m: growth,
+        });
         Ok(Self(boxes, oriented))
     }
 

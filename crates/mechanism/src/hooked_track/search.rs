@@ -139,6 +139,8 @@ pub(super) fn candidates(spec: &HookedTrackSpec) -> Vec<(Point2<f64>, Point2<f64
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Prepared {
     rail: Rail,
+    /// The take-off miss (m), part of the bound and of the cost.
+    takeoff_miss: f64,
     /// The depth of the rail's ends and of the roller stowed and at landing below the
     /// sections (all part of [`Found::depth`]) plus the take-off miss: at most
     /// [`Found::cost`].
@@ -204,9 +206,11 @@ pub(super) fn prepare(
     // The deployment check takes the roller's landing place from the sampled pose, which
     // meets the exact one to 1e-6 of the span (its `reached` test): the bound gives that
     // much away, so that it stays at most the cost.
+    let takeoff_miss = takeoff(spec, &rail).1;
     Ok(Prepared {
         rail,
-        lower_bound: depth + takeoff(spec, &rail).1 - LANDING_MATCH * rail.span,
+        takeoff_miss,
+        lower_bound: depth + takeoff_miss - LANDING_MATCH * rail.span,
     })
 }
 
@@ -324,7 +328,7 @@ pub(super) fn check(
         mount,
         min_transmission,
         depth,
-        takeoff_miss: takeoff(spec, &rail).1,
+        takeoff_miss: prepared.takeoff_miss,
     };
     // The branch and bound's premise, checked on every rail of every debug run (the
     // tests'): the bound never exceeds the cost.

@@ -67,8 +67,8 @@ pub mod wing;
 
 pub use airfoil::{Airfoil, Naca, NacaCamber, Surface, TrailingEdge};
 pub use collision::{
-    compute_box_separation, compute_clearance, compute_distance, compute_intersects, compute_signed_distance,
-    Clearance, CollisionShape, MassProperties, OrientedBox, Proximity,
+    compute_box_separation, compute_clearance, compute_clearance_near, compute_distance, compute_intersects,
+    compute_signed_distance, Clearance, CollisionShape, MassProperties, NearHint, OrientedBox, Proximity,
 };
 pub use error::{Error, Result};
 pub use flap::{AftElementSpec, Flap, FlapElementOutlines, FlapSectionSpec, FlapSpec, HingeSpec};

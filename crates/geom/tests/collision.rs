@@ -1,7 +1,10 @@
 //! Collision adapter against analytic distances.
 
 use approx::assert_relative_eq;
-use flapwright_geom::{compute_distance, compute_intersects, compute_signed_distance, CollisionShape, TriMesh};
+use flapwright_geom::{
+    compute_clearance, compute_clearance_near, compute_distance, compute_intersects, compute_signed_distance,
+    CollisionShape, NearHint, TriMesh,
+};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 
 fn at(x: f64, y: f64, z: f64) -> Isometry3<f64> {
@@ -242,6 +245,37 @@ fn mesh_pair_distance_equals_parry_for_nested_and_crossing_meshes() {
         checked > 0 && checked < 4 * (fixture.parts.len() - 1),
         "{checked} clear cases"
     );
+}
+
+#[test]
+fn a_sweep_started_from_the_last_closest_triangles_gives_the_same_clearances() {
+    // The flap turned through its deployment in small steps against every other part, as a
+    // sweep queries it: each query starts from the triangles closest at the one before (and
+    // the first from another pair's, which must do no harm). Same minimum every time.
+    let fixture = FixtureFlap::new();
+    let identity = Isometry3::identity();
+    let mut hint = NearHint::default();
+    let mut started_from_a_hint = 0;
+    for other in fixture.parts.iter().filter(|p| p.name != fixture.name) {
+        let other_shape = CollisionShape::from_mesh(&other.mesh).unwrap();
+        for step in 0..=20 {
+            let pose = fixture.turned(-5.0 + 2.5 * step as f64);
+            let plain = compute_clearance(&fixture.shape, &pose, &other_shape, &identity, 1e-3).unwrap();
+            started_from_a_hint += usize::from(hint != NearHint::default());
+            let near = compute_clearance_near(&fixture.shape, &pose, &other_shape, &identity, 1e-3, &mut hint).unwrap();
+            assert_eq!(near.distance_m, plain.distance_m, "{} at step {step}", other.name);
+            assert_eq!(near.penetration_m, plain.penetration_m, "{} at step {step}", other.name);
+            if near.distance_m > 0.0 {
+                let gap = (near.point_a_ac - near.point_b_ac).norm();
+                assert!(
+                    (gap - near.distance_m).abs() <= 1e-9,
+                    "{}: points {gap} apart",
+                    other.name
+                );
+            }
+        }
+    }
+    assert!(started_from_a_hint > 20, "{started_from_a_hint} queries had a hint");
 }
 
 #[test]

@@ -12,7 +12,9 @@
 //! [min_sampled - residual_bound, min_sampled]: a collision between samples cannot be
 //! missed once the residual bound is below the clearance.
 
-use flapwright_geom::collision::{compute_clearance, compute_signed_distance, Clearance};
+use std::cell::Cell;
+
+use flapwright_geom::collision::{compute_clearance_near, compute_signed_distance, Clearance, NearHint};
 use nalgebra::Point3;
 use serde::Serialize;
 
@@ -171,6 +173,10 @@ struct Clearances<'p> {
     b: &'p Part,
     /// Surface grid for penetration depth (m): as fine as the clearance is certified.
     resolution_m: f64,
+    /// The closest triangles at the last evaluation, where the next one's search starts
+    /// (evaluations follow each other in one thread, so the report does not depend on
+    /// scheduling).
+    hint: Cell<NearHint>,
 }
 
 fn pose_at(part: &Part, t: f64) -> Result<nalgebra::Isometry3<f64>> {
@@ -184,8 +190,18 @@ fn pose_at(part: &Part, t: f64) -> Result<nalgebra::Isometry3<f64>> {
 impl Clearances<'_> {
     fn at(&self, t: f64) -> Result<Clearance> {
         let (a, b) = (self.a, self.b);
-        compute_clearance(&a.shape, &pose_at(a, t)?, &b.shape, &pose_at(b, t)?, self.resolution_m)
-            .map_err(|source| query_error(a, b, t, source))
+        let mut hint = self.hint.get();
+        let clearance = compute_clearance_near(
+            &a.shape,
+            &pose_at(a, t)?,
+            &b.shape,
+            &pose_at(b, t)?,
+            self.resolution_m,
+            &mut hint,
+        )
+        .map_err(|source| query_error(a, b, t, source));
+        self.hint.set(hint);
+        clearance
     }
 }
 
@@ -348,6 +364,7 @@ fn sweep(
             a,
             b,
             resolution_m: settings.tolerance_m,
+            hint: Cell::default(),
         },
         verdict_at,
     };
@@ -395,6 +412,7 @@ pub fn sweep_contact(
             a,
             b,
             resolution_m: JOINT_PENETRATION_GRID_M.max(settings.tolerance_m),
+            hint: Cell::default(),
         },
         play_m,
     };

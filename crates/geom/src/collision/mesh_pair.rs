@@ -9,6 +9,8 @@
 //! exact minimum over triangle pairs, but every per-triangle search starts from the best
 //! distance found so far, and a triangle whose own box is already farther than that is
 //! skipped. Same answer (the crate's tests compare both), a small fraction of the work.
+//! A sweep passes the closest pair of its last query as a hint, whose distance is the
+//! first bound; the meshes' BVHs are in their principal axes (`collision` says why).
 
 use glamx::DVec3;
 use parry3d_f64::math::Pose;
@@ -43,7 +45,15 @@ fn corners(triangle: &Triangle) -> [DVec3; 3] {
 
 /// Smallest distance between mesh `a` at `pose_a` and mesh `b` at `pose_b`, with the
 /// closest points (world frame of the poses). Distances are between surfaces, as parry's.
-pub(super) fn mesh_pair_distance(a: &TriMesh, pose_a: &Pose, b: &TriMesh, pose_b: &Pose) -> MeshPairProximity {
+/// The search starts from `hint` (a's triangle, b's) when given, and leaves the closest
+/// pair in it.
+pub(super) fn mesh_pair_distance(
+    a: &TriMesh,
+    pose_a: &Pose,
+    b: &TriMesh,
+    pose_b: &Pose,
+    hint: &mut Option<(u32, u32)>,
+) -> MeshPairProximity {
     // Walk the larger mesh through its own BVH, pruned by the smaller one's box, and search
     // the smaller one's BVH from each triangle reached. Sorting every walked triangle by
     // its box's distance (the walk before) cost O(n log n) per query whatever the answer:
@@ -78,6 +88,15 @@ pub(super) fn mesh_pair_distance(a: &TriMesh, pose_a: &Pose, b: &TriMesh, pose_b
     let bvh = searched.bvh();
     let mut best = f64::MAX;
     let mut best_pair = None;
+    // The pair closest at the last query of these meshes (a nearby pose) bounds the search
+    // from the start.
+    if let Some((i, j)) = hint.map(|(i, j)| if swapped { (j, i) } else { (i, j) }) {
+        if (i as usize) < walked.num_triangles() && (j as usize) < searched.num_triangles() {
+            best =
+                triangle_triangle(&corners(&walked_triangle(i as usize)), &corners(&searched.triangle(j))).distance();
+            best_pair = Some((i as usize, j));
+        }
+    }
     let mut search = |i: u32, best: &mut f64| {
         let tri = walked_triangle(i as usize);
         let (mins, maxs) = bounds(&tri);
@@ -122,6 +141,7 @@ pub(super) fn mesh_pair_distance(a: &TriMesh, pose_a: &Pose, b: &TriMesh, pose_b
         TraversalAction::Continue
     });
 
+    *hint = best_pair.map(|(i, leaf)| if swapped { (leaf, i as u32) } else { (i as u32, leaf) });
     let Some((i, leaf)) = best_pair else {
         // An empty mesh: nothing is near.
         return MeshPairProximity {

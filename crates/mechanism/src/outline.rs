@@ -52,15 +52,16 @@ fn any_edge(polygons: &[Vec<Point2<f64>>], mut test: impl FnMut(Point2<f64>, Poi
 pub fn inside(polygons: &[Vec<Point2<f64>>], p: Point2<f64>) -> bool {
     let mut crossings = 0;
     any_edge(polygons, |a, b| {
-        if (a.y > p.y) != (b.y > p.y) {
-            let x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
-            if x > p.x {
-                crossings += 1;
-            }
-        }
+        crossings += usize::from(ray_crosses(p, a, b));
         false
     });
     crossings % 2 == 1
+}
+
+/// True when the ray from `p` towards +x crosses the edge `a`-`b` (the even-odd rule's
+/// count, half-open in y so a vertex is counted once).
+fn ray_crosses(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> bool {
+    (a.y > p.y) != (b.y > p.y) && a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) > p.x
 }
 
 /// Lowest and highest y where the vertical line at `x` crosses `polygons`.
@@ -77,14 +78,25 @@ pub fn vertical_span(polygons: &[Vec<Point2<f64>>], x: f64) -> Option<(f64, f64)
 }
 
 /// True when the segment `a`-`b` crosses an edge of `polygons` or lies inside them.
+///
+/// One pass over the edges (the searches call it millions of times): an edge crossed ends
+/// it; otherwise the even-odd counts of both ends say whether either lies inside. An edge
+/// whose box misses the segment's cannot cross it, and is only counted.
 pub fn segment_meets(polygons: &[Vec<Point2<f64>>], a: Point2<f64>, b: Point2<f64>) -> bool {
     let orient = |p: Point2<f64>, q: Point2<f64>, r: Point2<f64>| (q - p).perp(&(r - p));
+    let (low, high) = (a.inf(&b), a.sup(&b));
+    let (mut from_a, mut from_b) = (0usize, 0usize);
     let crosses = any_edge(polygons, |c, d| {
+        from_a += usize::from(ray_crosses(a, c, d));
+        from_b += usize::from(ray_crosses(b, c, d));
+        if c.x.max(d.x) < low.x || c.x.min(d.x) > high.x || c.y.max(d.y) < low.y || c.y.min(d.y) > high.y {
+            return false;
+        }
         let (d1, d2) = (orient(a, b, c), orient(a, b, d));
         let (d3, d4) = (orient(c, d, a), orient(c, d, b));
         (d1 > 0.0) != (d2 > 0.0) && (d3 > 0.0) != (d4 > 0.0)
     });
-    crosses || inside(polygons, a) || inside(polygons, b)
+    crosses || from_a % 2 == 1 || from_b % 2 == 1
 }
 
 /// Distance from `p` to the segment `a`-`b`.
@@ -169,10 +181,18 @@ impl StationOutline {
     /// True when the flap moved by `flap` passes through the wing's trailing edge (the lip)
     /// or closer to it than [`Self::lip_clearance_m`], less `tolerance_m` (a gap of exactly
     /// the clearance at a setting passes within rounding). False without a lip.
+    ///
+    /// One pass over the flap's edges (every deployment sample of every candidate calls it):
+    /// an edge nearer than the clearance ends it, else the even-odd count says inside.
     pub fn flap_near_lip(&self, flap: &nalgebra::Isometry2<f64>, tolerance_m: f64) -> bool {
         self.lip.is_some_and(|lip| {
             let at = flap.inverse() * lip;
-            inside(&self.flap, at) || boundary_distance(&self.flap, at) < self.lip_clearance_m - tolerance_m
+            let near = self.lip_clearance_m - tolerance_m;
+            let mut crossings = 0usize;
+            any_edge(&self.flap, |a, b| {
+                crossings += usize::from(ray_crosses(at, a, b));
+                point_segment_distance(at, a, b) < near
+            }) || crossings % 2 == 1
         })
     }
 

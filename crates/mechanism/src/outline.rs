@@ -191,7 +191,10 @@ impl StationOutline {
             let mut crossings = 0usize;
             any_edge(&self.flap, |a, b| {
                 crossings += usize::from(ray_crosses(at, a, b));
-                point_segment_distance(at, a, b) < near
+                // An edge whose box is already that far is no nearer (most of them).
+                let off_x = (a.x.min(b.x) - at.x).max(at.x - a.x.max(b.x));
+                let off_y = (a.y.min(b.y) - at.y).max(at.y - a.y.max(b.y));
+                off_x < near && off_y < near && point_segment_distance(at, a, b) < near
             }) || crossings % 2 == 1
         })
     }

@@ -5,7 +5,7 @@
 use nalgebra::{Isometry2, Point2};
 
 use crate::error::SynthesisDefect;
-use crate::outline::{inside, StationOutline};
+use crate::outline::StationOutline;
 
 /// A candidate loop at one sample of its deployment.
 #[derive(Debug, Clone, Copy)]
@@ -69,7 +69,7 @@ pub(crate) fn check_deployment(
             ));
         }
         let back = sample.flap.inverse();
-        if rules.fixed_pivots.iter().any(|p| inside(&rules.outline.flap, back * p)) {
+        if rules.fixed_pivots.iter().any(|p| rules.outline.flap.inside(back * p)) {
             return Err((
                 SynthesisDefect::PivotOutsideRegion,
                 format!("the flap passes over a fixed pivot at {at:.1} deg of {driver}"),

@@ -200,7 +200,7 @@ pub fn strut_top(
         let short = top + (from - top).normalize() * (radius + margin);
         let clear = distinct
             && crate::outline::segment_distance(&outline.structure, from, top) > radius + margin
-            && !crate::outline::segment_meets(&outline.wing, from, short)
+            && !outline.wing.segment_meets(from, short)
             && flap_poses.iter().all(|pose| {
                 let back = pose.inverse();
                 crate::outline::segment_distance(&outline.flap, back * from, back * top) > radius + margin

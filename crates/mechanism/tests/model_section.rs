@@ -31,9 +31,9 @@ pub fn outline() -> StationOutline {
         })
         .collect()];
     StationOutline {
-        wing,
-        flap,
-        structure: Vec::new(),
+        wing: wing.into(),
+        flap: flap.into(),
+        structure: Default::default(),
         lip: Some(Point2::new(-0.05, 0.175)),
         lip_clearance_m: 0.0,
     }

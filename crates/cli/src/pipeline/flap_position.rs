@@ -284,11 +284,13 @@ pub fn synthesis_context(
     required_clearance_m: f64,
 ) -> Result<(SynthesisContext, Option<FlapBehindWing>)> {
     let outline = StationOutline {
-        wing: placed.polygons_of(|name| name == "wing"),
+        wing: placed.polygons_of(|name| name == "wing").into(),
         // The whole flap: a rail or a link must keep out of either element.
-        flap: placed.flap_polygons(&flap.name),
+        flap: placed.flap_polygons(&flap.name).into(),
         // Spars and the torque tube; other flaps' sections are not structure.
-        structure: placed.polygons_of(|name| name != "wing" && !flaps.iter().any(|f| f.owns_part(name))),
+        structure: placed
+            .polygons_of(|name| name != "wing" && !flaps.iter().any(|f| f.owns_part(name)))
+            .into(),
         lip: None,
         lip_clearance_m: 0.0,
     };

@@ -26,7 +26,7 @@ use serde::Serialize;
 use crate::error::{Error, Result, SynthesisDefect};
 use crate::flap_load::{FlapMass, FlapWrench, LinkHardware};
 use crate::kinetostatics::LoadCase;
-use crate::outline::{inside, StationOutline};
+use crate::outline::StationOutline;
 use crate::placement::{strut_top, turning_flap, ScrewJackChoice};
 use crate::precision::{pole, PrecisionPosition};
 use crate::rocker_drive::{cross, turn_about, RockerDrive};
@@ -194,7 +194,7 @@ impl DroppedHinge {
                 "the landing displacement has no pole".into(),
             )
         })?;
-        if inside(&spec.outline.wing, hinge) {
+        if spec.outline.wing.inside(hinge) {
             return Err(failure(
                 SynthesisDefect::PivotOutsideRegion,
                 format!(

@@ -9,7 +9,6 @@ use super::linkage::Loop;
 use super::{failure, mm, FourBarSearch, FourBarSpec, LOOP_SAMPLES};
 use crate::error::{Error, SynthesisDefect};
 use crate::feasibility::{check_deployment, DeploymentRules, LoopSample};
-use crate::outline::{inside, segment_meets, vertical_span};
 use crate::precision::{circle_centre, PrecisionPosition};
 use crate::rocker_drive::cross;
 use crate::rocker_drive::turn_angle;
@@ -65,7 +64,7 @@ pub(super) fn candidates(spec: &FourBarSpec, search: &mut FourBarSearch, chord: 
     let mut found = Vec::new();
     for i in 0..GRID_COLUMNS {
         let x = le - flap_chord * (0.02 + 0.88 * i as f64 / (GRID_COLUMNS - 1) as f64);
-        let Some((lo, _)) = vertical_span(&spec.outline.flap, x) else {
+        let Some((lo, _)) = spec.outline.flap.vertical_span(x) else {
             continue;
         };
         for j in 0..GRID_ROWS {
@@ -92,7 +91,7 @@ pub(super) fn candidate(
 ) -> std::result::Result<Candidate, (SynthesisDefect, String)> {
     let outline = &spec.outline;
     let positions = [moving, spec.takeoff.flap * moving, spec.landing.flap * moving];
-    if positions.iter().any(|p| inside(&outline.wing, *p)) {
+    if positions.iter().any(|p| outline.wing.inside(*p)) {
         return Err((
             SynthesisDefect::PivotOutsideRegion,
             "the moving pivot enters the wing section".into(),
@@ -105,10 +104,10 @@ pub(super) fn candidate(
             "its three positions lie on a line or a circle larger than three chords".to_string(),
         ))?;
     let below = outline.lower_envelope(fixed.x).is_some_and(|y| fixed.y < y);
-    let clear = !inside(&outline.wing, fixed)
+    let clear = !outline.wing.inside(fixed)
         && [PrecisionPosition::stowed(), spec.takeoff, spec.landing]
             .iter()
-            .all(|position| !inside(&outline.flap, position.flap.inverse() * fixed));
+            .all(|position| !outline.flap.inside(position.flap.inverse() * fixed));
     if !(below && clear) {
         return Err((
             SynthesisDefect::PivotOutsideRegion,
@@ -168,7 +167,7 @@ pub(super) fn check_pair(
             ));
         }
         for (fixed, moving) in [(loop_.o1, a1), (loop_.o2, a2)] {
-            if segment_meets(&spec.outline.wing, fixed, moving) {
+            if spec.outline.wing.segment_meets(fixed, moving) {
                 return Err((
                     SynthesisDefect::PivotOutsideRegion,
                     "a link cuts the wing section".into(),

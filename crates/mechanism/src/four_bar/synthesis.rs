@@ -229,7 +229,7 @@ impl FourBar {
             flap_poses.iter().all(|pose| {
                 let back = pose.inverse();
                 crate::outline::segment_distance(&spec.outline.flap, back * from, back * to) > hw.link_radius_m + margin
-            }) && !crate::outline::segment_meets(&spec.outline.wing, from, to)
+            }) && !spec.outline.wing.segment_meets(from, to)
         };
         let (first, second) = (strut(loop_.o1), strut(loop_.o2));
         let (first, second) = match (first, second) {

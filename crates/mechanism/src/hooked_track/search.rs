@@ -29,7 +29,7 @@ use super::rail::Rail;
 use super::{HookedTrackSearch, HookedTrackSpec};
 use crate::error::SynthesisDefect;
 use crate::feasibility::{check_deployment, parameter_at_deflection, DeploymentRules, LoopSample};
-use crate::outline::{segment_meets, FlapPoint};
+use crate::outline::FlapPoint;
 
 /// Samples of the deployment in the feasibility check.
 pub(super) const RAIL_SAMPLES: usize = 48;
@@ -223,7 +223,7 @@ fn rail_ends(spec: &HookedTrackSpec, rail: &Rail) -> [Point2<f64>; 2] {
 /// True where the segment `a`-`b` cuts the wing, the structure or the stowed flap.
 fn fixed_blocked(spec: &HookedTrackSpec, a: Point2<f64>, b: Point2<f64>) -> bool {
     let outline = &spec.outline;
-    segment_meets(&outline.wing, a, b) || segment_meets(&outline.structure, a, b) || segment_meets(&outline.flap, a, b)
+    outline.wing.segment_meets(a, b) || outline.structure.segment_meets(a, b) || outline.flap.segment_meets(a, b)
 }
 
 /// The rest of the check of a rail `prepare` let through: the deployment sampled (branch,
@@ -297,8 +297,8 @@ pub(super) fn check(
     let clear_of_flap = |mount: Point2<f64>| {
         strokes.iter().filter_map(|&s| rail.at(s)).all(|pose| {
             let back = pose.flap.inverse();
-            !segment_meets(&outline.flap, back * (mount - half), back * (mount + half))
-                && !segment_meets(&outline.flap, back * mount, back * pose.f)
+            !outline.flap.segment_meets(back * (mount - half), back * (mount + half))
+                && !outline.flap.segment_meets(back * mount, back * pose.f)
         })
     };
     let mount = if clear_of_flap(ahead) {

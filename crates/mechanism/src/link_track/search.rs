@@ -27,7 +27,7 @@ use super::linkage::Loop;
 use super::{LinkTrackSearch, LinkTrackSpec};
 use crate::error::SynthesisDefect;
 use crate::feasibility::{check_deployment, DeploymentRules, LoopSample};
-use crate::outline::{boundary_distance, inside, segment_meets, vertical_span};
+use crate::outline::boundary_distance;
 use crate::precision::PrecisionPosition;
 use crate::rocker_drive::turn_angle;
 
@@ -113,7 +113,7 @@ fn solve(rows: Matrix2<f64>, rhs: Vector2<f64>) -> Option<Point2<f64>> {
 /// 2 % and [`MAX_BRACKET_DEPTH`] of its chord below its lower surface, or on a bracket
 /// reaching forward of its nose ([`ahead_of_nose`]).
 fn on_bracket(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool {
-    vertical_span(&spec.outline.flap, p.x).is_some_and(|(lo, _)| {
+    spec.outline.flap.vertical_span(p.x).is_some_and(|(lo, _)| {
         let depth = lo - p.y;
         depth >= 0.02 * flap_chord && depth <= MAX_BRACKET_DEPTH * flap_chord
     }) || ahead_of_nose(spec, p, flap_chord)
@@ -130,8 +130,8 @@ fn ahead_of_nose(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool 
     };
     p.x > le
         && p.x <= le + FORWARD_REACH * flap_chord
-        && !inside(&outline.wing, p)
-        && vertical_span(&outline.flap, p.x).is_none()
+        && !outline.wing.inside(p)
+        && outline.flap.vertical_span(p.x).is_none()
         && outline
             .depth_below(p)
             .is_some_and(|depth| depth >= 0.02 * flap_chord && depth <= MAX_BRACKET_DEPTH * flap_chord)
@@ -142,7 +142,9 @@ fn ahead_of_nose(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool 
 /// track then enters the flap through a slot in its lower skin, as the tracks of many
 /// transport flaps do).
 fn carriage_place(spec: &LinkTrackSpec, p: Point2<f64>, flap_chord: f64) -> bool {
-    vertical_span(&spec.outline.flap, p.x)
+    spec.outline
+        .flap
+        .vertical_span(p.x)
         .is_some_and(|(lo, hi)| p.y <= hi - 0.02 * flap_chord && lo - p.y <= MAX_BRACKET_DEPTH * flap_chord)
         || ahead_of_nose(spec, p, flap_chord)
 }
@@ -224,7 +226,7 @@ pub(super) fn links(
                 let columns = if front > back { BAY_COLUMNS } else { 1 };
                 for i in 0..columns {
                     let x = front - (front - back) * i as f64 / (BAY_COLUMNS - 1) as f64;
-                    let Some((lo, hi)) = vertical_span(&outline.wing, x) else {
+                    let Some((lo, hi)) = outline.wing.vertical_span(x) else {
                         continue;
                     };
                     // A section too thin for the actuator has no room for it.
@@ -237,7 +239,7 @@ pub(super) fn links(
                         let o = Point2::new(x, y);
                         // Inside the skin with the actuator's reach to spare (not in the
                         // shroud, the lip or against the cove wall over the flap's nose).
-                        if inside(&outline.wing, o) && boundary_distance(&outline.wing, o) >= inset {
+                        if outline.wing.inside(o) && boundary_distance(&outline.wing, o) >= inset {
                             grid.push(o);
                         }
                     }
@@ -249,7 +251,7 @@ pub(super) fn links(
     let mut found = Vec::new();
     for o in pivots {
         search.pivots += 1;
-        let below = !inside(&outline.wing, o) && outline.lower_envelope(o.x).is_none_or(|y| o.y < y);
+        let below = !outline.wing.inside(o) && outline.lower_envelope(o.x).is_none_or(|y| o.y < y);
         if !(below || on_web(outline, o)) {
             search.pivot_outside_region += 1;
             continue;
@@ -266,7 +268,7 @@ pub(super) fn links(
 /// True when the fixed pivot `o` sits in the trailing-edge bay behind the rear spar's web
 /// (inside the wing section, ahead of the cove).
 fn on_web(outline: &crate::outline::StationOutline, o: Point2<f64>) -> bool {
-    inside(&outline.wing, o)
+    outline.wing.inside(o)
         && outline.rear_web().is_some_and(|(face, _, _)| o.x < face)
         && outline.cove_lower_lip_x().is_some_and(|lip| o.x > lip)
 }
@@ -316,7 +318,7 @@ pub(super) fn check(
         let link_clear = if on_web(&spec.outline, o) {
             spec.outline.through_bay_only(o, pose.a, spec.hardware.link_radius_m)
         } else {
-            !segment_meets(&spec.outline.wing, o, pose.a)
+            !spec.outline.wing.segment_meets(o, pose.a)
         };
         if !link_clear {
             return Err((
@@ -361,7 +363,7 @@ pub(super) fn check(
     // the brackets' arms to the flap are the interference check's (it sweeps every solid).
     let outline = &spec.outline;
     let landing_c = loop_.at(turns[1]).map(|pose| pose.c).unwrap_or(c);
-    if segment_meets(&outline.wing, c, landing_c) || inside(&outline.wing, c) || inside(&outline.wing, landing_c) {
+    if outline.wing.segment_meets(c, landing_c) || outline.wing.inside(c) || outline.wing.inside(landing_c) {
         return Err((
             SynthesisDefect::PivotOutsideRegion,
             "the track beam cuts the wing section".into(),
@@ -374,9 +376,9 @@ pub(super) fn check(
         let link_clear = if on_web(outline, o) {
             outline.through_bay_only(o, pose.a, hw.link_radius_m)
         } else {
-            !segment_meets(&outline.wing, o, pose.a)
-        } && !segment_meets(&outline.structure, o, pose.a);
-        if !link_clear || inside(&outline.wing, pose.a) || inside(&outline.wing, pose.c) {
+            !outline.wing.segment_meets(o, pose.a)
+        } && !outline.structure.segment_meets(o, pose.a);
+        if !link_clear || outline.wing.inside(pose.a) || outline.wing.inside(pose.c) {
             return Err((
                 SynthesisDefect::PivotOutsideRegion,
                 "the link or a bracket enters the wing section part way".into(),

@@ -2,20 +2,26 @@
 //! stowed flap cut by the station plane (station frame, m; closed polygons, last point not
 //! repeated). Kinds place pivots, supports and actuators against them; the planar queries
 //! here are small enough that a geometry crate would add more than it saves (parry works in
-//! convex pieces and would need the polygons decomposed first).
+//! convex pieces and would need the polygons decomposed first). The plain functions scan
+//! every edge; [`Polygons`] (the outline's own sections) files the edges by x and y so the
+//! searches' millions of queries meet only the few edges near them, with the same answers.
 
 use nalgebra::Point2;
 use serde::Serialize;
+
+mod polygons;
+
+pub use polygons::Polygons;
 
 /// The main wing and the stowed flap in one station plane.
 #[derive(Debug, Clone, PartialEq, Default, Serialize)]
 pub struct StationOutline {
     /// Main-wing section polygons.
-    pub wing: Vec<Vec<Point2<f64>>>,
+    pub wing: Polygons,
     /// Stowed flap section polygons.
-    pub flap: Vec<Vec<Point2<f64>>>,
+    pub flap: Polygons,
     /// Fixed structure the mechanism must keep clear of: spars, torque tube.
-    pub structure: Vec<Vec<Point2<f64>>>,
+    pub structure: Polygons,
     /// The main wing's trailing edge (the cove's upper lip) the gap is measured from; the
     /// flap must not pass through it between the settings.
     pub lip: Option<Point2<f64>>,
@@ -68,8 +74,7 @@ fn ray_crosses(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> bool {
 pub fn vertical_span(polygons: &[Vec<Point2<f64>>], x: f64) -> Option<(f64, f64)> {
     let mut span: Option<(f64, f64)> = None;
     any_edge(polygons, |a, b| {
-        if (a.x > x) != (b.x > x) {
-            let y = a.y + (x - a.x) / (b.x - a.x) * (b.y - a.y);
+        if let Some(y) = crossing_at(a, b, x) {
             span = Some(span.map_or((y, y), |(lo, hi)| (lo.min(y), hi.max(y))));
         }
         false
@@ -83,20 +88,40 @@ pub fn vertical_span(polygons: &[Vec<Point2<f64>>], x: f64) -> Option<(f64, f64)
 /// it; otherwise the even-odd counts of both ends say whether either lies inside. An edge
 /// whose box misses the segment's cannot cross it, and is only counted.
 pub fn segment_meets(polygons: &[Vec<Point2<f64>>], a: Point2<f64>, b: Point2<f64>) -> bool {
-    let orient = |p: Point2<f64>, q: Point2<f64>, r: Point2<f64>| (q - p).perp(&(r - p));
-    let (low, high) = (a.inf(&b), a.sup(&b));
     let (mut from_a, mut from_b) = (0usize, 0usize);
     let crosses = any_edge(polygons, |c, d| {
         from_a += usize::from(ray_crosses(a, c, d));
         from_b += usize::from(ray_crosses(b, c, d));
-        if c.x.max(d.x) < low.x || c.x.min(d.x) > high.x || c.y.max(d.y) < low.y || c.y.min(d.y) > high.y {
-            return false;
-        }
-        let (d1, d2) = (orient(a, b, c), orient(a, b, d));
-        let (d3, d4) = (orient(c, d, a), orient(c, d, b));
-        (d1 > 0.0) != (d2 > 0.0) && (d3 > 0.0) != (d4 > 0.0)
+        segments_cross(a, b, c, d)
     });
     crosses || from_a % 2 == 1 || from_b % 2 == 1
+}
+
+/// True when the segments `a`-`b` and `c`-`d` cross (each one's ends on either side of the
+/// other's line); an edge whose box misses the segment's cannot, and is let go first.
+fn segments_cross(a: Point2<f64>, b: Point2<f64>, c: Point2<f64>, d: Point2<f64>) -> bool {
+    let (low, high) = (a.inf(&b), a.sup(&b));
+    if c.x.max(d.x) < low.x || c.x.min(d.x) > high.x || c.y.max(d.y) < low.y || c.y.min(d.y) > high.y {
+        return false;
+    }
+    let orient = |p: Point2<f64>, q: Point2<f64>, r: Point2<f64>| (q - p).perp(&(r - p));
+    let (d1, d2) = (orient(a, b, c), orient(a, b, d));
+    let (d3, d4) = (orient(c, d, a), orient(c, d, b));
+    (d1 > 0.0) != (d2 > 0.0) && (d3 > 0.0) != (d4 > 0.0)
+}
+
+/// True when `p` is nearer than `near` to the edge `a`-`b` (an edge whose box is already
+/// that far is let go first).
+fn edge_nearer_than(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>, near: f64) -> bool {
+    let off_x = (a.x.min(b.x) - p.x).max(p.x - a.x.max(b.x));
+    let off_y = (a.y.min(b.y) - p.y).max(p.y - a.y.max(b.y));
+    off_x < near && off_y < near && point_segment_distance(p, a, b) < near
+}
+
+/// The y where the edge `a`-`b` crosses the vertical line at `x`, if it does (half-open in
+/// x, so a vertex is met once).
+fn crossing_at(a: Point2<f64>, b: Point2<f64>, x: f64) -> Option<f64> {
+    ((a.x > x) != (b.x > x)).then(|| a.y + (x - a.x) / (b.x - a.x) * (b.y - a.y))
 }
 
 /// Distance from `p` to the segment `a`-`b`.
@@ -187,15 +212,7 @@ impl StationOutline {
     pub fn flap_near_lip(&self, flap: &nalgebra::Isometry2<f64>, tolerance_m: f64) -> bool {
         self.lip.is_some_and(|lip| {
             let at = flap.inverse() * lip;
-            let near = self.lip_clearance_m - tolerance_m;
-            let mut crossings = 0usize;
-            any_edge(&self.flap, |a, b| {
-                crossings += usize::from(ray_crosses(at, a, b));
-                // An edge whose box is already that far is no nearer (most of them).
-                let off_x = (a.x.min(b.x) - at.x).max(at.x - a.x.max(b.x));
-                let off_y = (a.y.min(b.y) - at.y).max(at.y - a.y.max(b.y));
-                off_x < near && off_y < near && point_segment_distance(at, a, b) < near
-            }) || crossings % 2 == 1
+            self.flap.nearer_than(at, self.lip_clearance_m - tolerance_m) || self.flap.inside(at)
         })
     }
 
@@ -221,7 +238,7 @@ impl StationOutline {
     /// vertical through it meets the flap.
     pub fn to_flap_point(&self, point: Point2<f64>) -> Option<FlapPoint> {
         let (le, _, chord) = self.flap_chord()?;
-        let (lo, _) = vertical_span(&self.flap, point.x)?;
+        let (lo, _) = self.flap.vertical_span(point.x)?;
         Some(FlapPoint {
             chord_fraction: (le - point.x) / chord,
             depth_fraction: (lo - point.y) / chord,
@@ -233,7 +250,7 @@ impl StationOutline {
     pub fn flap_point(&self, at: FlapPoint) -> Option<Point2<f64>> {
         let (le, _, chord) = self.flap_chord()?;
         let x = le - at.chord_fraction * chord;
-        let (lo, _) = vertical_span(&self.flap, x)?;
+        let (lo, _) = self.flap.vertical_span(x)?;
         Some(Point2::new(x, lo - at.depth_fraction * chord))
     }
 
@@ -242,7 +259,7 @@ impl StationOutline {
     pub fn section_bottom(&self) -> f64 {
         self.wing
             .iter()
-            .chain(&self.flap)
+            .chain(self.flap.iter())
             .flatten()
             .map(|p| p.y)
             .fold(f64::INFINITY, f64::min)
@@ -260,19 +277,19 @@ impl StationOutline {
     pub fn flap_lower_point(&self, fraction: f64) -> Option<Point2<f64>> {
         let (le, _, chord) = self.flap_chord()?;
         let x = le - fraction * chord;
-        let (lo, _) = vertical_span(&self.flap, x)?;
+        let (lo, _) = self.flap.vertical_span(x)?;
         Some(Point2::new(x, lo))
     }
 
     /// The point of the wing's lower surface at `x`.
     pub fn wing_lower_point(&self, x: f64) -> Option<Point2<f64>> {
-        vertical_span(&self.wing, x).map(|(lo, _)| Point2::new(x, lo))
+        self.wing.vertical_span(x).map(|(lo, _)| Point2::new(x, lo))
     }
 
     /// Lowest y of the stowed wing and flap where the vertical at `x` crosses them.
     pub fn lower_envelope(&self, x: f64) -> Option<f64> {
-        let wing = vertical_span(&self.wing, x).map(|s| s.0);
-        let flap = vertical_span(&self.flap, x).map(|s| s.0);
+        let wing = self.wing.vertical_span(x).map(|s| s.0);
+        let flap = self.flap.vertical_span(x).map(|s| s.0);
         match (wing, flap) {
             (Some(a), Some(b)) => Some(a.min(b)),
             (a, b) => a.or(b),
@@ -295,7 +312,7 @@ impl StationOutline {
                 (hi - lo >= 3.0 * (fore - aft) && aft > lip).then_some(aft)
             })
             .min_by(f64::total_cmp)
-            .and_then(|aft| vertical_span(&self.wing, aft).map(|(lo, hi)| (aft, lo, hi)))
+            .and_then(|aft| self.wing.vertical_span(aft).map(|(lo, hi)| (aft, lo, hi)))
     }
 
     /// True when the segment `a`-`b` may pass where it does through the wing section: every
@@ -309,8 +326,8 @@ impl StationOutline {
         const SAMPLES: usize = 32;
         (0..=SAMPLES).all(|k| {
             let p = a + (b - a) * (k as f64 / SAMPLES as f64);
-            !inside(&self.wing, p)
-                || (p.x >= lip && vertical_span(&self.wing, p.x).is_some_and(|(_, hi)| p.y <= hi - margin))
+            !self.wing.inside(p)
+                || (p.x >= lip && self.wing.vertical_span(p.x).is_some_and(|(_, hi)| p.y <= hi - margin))
         })
     }
 
@@ -351,7 +368,7 @@ mod tests {
         // A lip at the square's top edge: touching is not passing through, 0.1 deeper is
         // (no clearance asked).
         let outline = StationOutline {
-            flap: square.clone(),
+            flap: square.clone().into(),
             lip: Some(Point2::new(0.5, 1.0)),
             ..Default::default()
         };
@@ -380,11 +397,11 @@ mod tests {
         };
         let (small, large) = (
             StationOutline {
-                flap: vec![square(1.0)],
+                flap: vec![square(1.0)].into(),
                 ..Default::default()
             },
             StationOutline {
-                flap: vec![square(2.0)],
+                flap: vec![square(2.0)].into(),
                 ..Default::default()
             },
         );

@@ -18,6 +18,8 @@ pub mod flap_position;
 pub mod flight_loads;
 pub(crate) mod geometry;
 pub(crate) mod interference;
+
+pub use interference::ShapeCache;
 pub mod mechanism_parts;
 pub mod mechanisms;
 mod plausibility;
@@ -34,6 +36,9 @@ pub struct Inputs<'a> {
     pub scene_text: &'a str,
     /// Folder of the scene file, for relative airfoil files.
     pub scene_dir: Option<&'a Path>,
+    /// Collision shapes shared with other designs of the same wing (the study's kinds);
+    /// `None`: this design's own.
+    pub shapes: Option<&'a ShapeCache>,
 }
 
 /// A one-line, machine-readable summary of a run (`--json`).
@@ -165,7 +170,9 @@ pub fn design_with_progress(
             }
         }
         if outputs.interference || !full {
-            let checked = stages.run("interference", || interference::check(scene, &meshed, &records))?;
+            let own = interference::ShapeCache::default();
+            let shapes = inputs.shapes.unwrap_or(&own);
+            let checked = stages.run("interference", || interference::check(scene, &meshed, &records, shapes))?;
             for pair in checked.pairs.iter().filter(|p| !p.passes) {
                 warnings.push(format!(
                     "interference: {}",

@@ -167,7 +167,17 @@ impl CollisionShape {
     /// parry accepts it as such), its surface kept as given.
     fn from_triangles(mesh: &TriMesh, solid: bool) -> Result<CollisionShape> {
         let points: Vec<Vector3<f64>> = mesh.vertices.iter().map(|p| p.coords).collect();
-        let frame = principal_axes(&points).map_or(Pose::IDENTITY, |axes| to_pose(&axes));
+        // A mesh with a non-finite vertex keeps its local frame (the frame would spread the
+        // NaN to every vertex; mesh validation reports the vertex).
+        let frame = principal_axes(&points)
+            .filter(|axes| {
+                axes.translation
+                    .vector
+                    .iter()
+                    .chain(axes.rotation.coords.iter())
+                    .all(|c| c.is_finite())
+            })
+            .map_or(Pose::IDENTITY, |axes| to_pose(&axes));
         let stored: Vec<DVec3> = mesh
             .vertices
             .iter()
@@ -517,7 +527,14 @@ fn distance_near(
         }
     }
     let contact = query::contact(&pa, &*a.shape, &pb, &*b.shape, 0.0).map_err(|_| unsupported("contact"))?;
-    let (p, q) = contact.map_or((pa.translation, pb.translation), |c| (c.point1, c.point2));
+    // No contact point: each local frame's origin, as the poses place them.
+    let (p, q) = contact.map_or(
+        (
+            to_glam(&pose_a.translation.vector.into()),
+            to_glam(&pose_b.translation.vector.into()),
+        ),
+        |c| (c.point1, c.point2),
+    );
     Ok(Proximity {
         distance_m: distance.max(0.0),
         point_a_ac: to_point(p),

@@ -32,7 +32,7 @@ mod segment_triangle;
 mod shape;
 
 pub use penetration::SAMPLE_BUDGET as PENETRATION_SAMPLE_BUDGET;
-pub use shape::{CollisionShape, MassProperties, OrientedBox};
+pub use shape::{CollisionShape, MassProperties, OrientedBox, Slab, SLAB_COUNT};
 
 /// Result of [`compute_distance`]: separation and the closest points, aircraft frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -97,7 +97,7 @@ pub fn compute_distance(
     b: &CollisionShape,
     pose_b: &Isometry3<f64>,
 ) -> Result<Proximity> {
-    distance_near(a, pose_a, b, pose_b, &mut NearHint::default())
+    compute_distance_near(a, pose_a, b, pose_b, &mut NearHint::default())
 }
 
 /// Where a query of two meshes starts: the triangles that were closest at the pair's last
@@ -106,8 +106,18 @@ pub fn compute_distance(
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct NearHint(Option<(u32, u32)>);
 
-/// [`compute_distance`], starting from `hint` and leaving the closest triangles in it.
-fn distance_near(
+/// True when one of the shapes, a solid, holds a point of the other's surface: with the
+/// surfaces apart, one wholly inside the other ([`compute_clearance`] then reports them
+/// overlapping). A point query or two: cheap beside a distance.
+pub fn compute_holds(a: &CollisionShape, pose_a: &Isometry3<f64>, b: &CollisionShape, pose_b: &Isometry3<f64>) -> bool {
+    let (pa, pb) = (to_pose(pose_a), to_pose(pose_b));
+    holds(b, &pb, a, &pa) || holds(a, &pa, b, &pb)
+}
+
+/// [`compute_distance`] for one of a sequence of queries of the same pair at nearby poses:
+/// two meshes' search starts from the triangles closest at the last query, kept in `hint`
+/// (the same distance as without it).
+pub fn compute_distance_near(
     a: &CollisionShape,
     pose_a: &Isometry3<f64>,
     b: &CollisionShape,
@@ -316,7 +326,7 @@ pub fn compute_clearance_near(
     hint: &mut NearHint,
 ) -> Result<Clearance> {
     let resolution_m = positive("penetration resolution_m", resolution_m)?;
-    let surfaces = distance_near(a, pose_a, b, pose_b, hint)?;
+    let surfaces = compute_distance_near(a, pose_a, b, pose_b, hint)?;
     let (pa, pb) = (to_pose(pose_a), to_pose(pose_b));
     let clear = Clearance {
         distance_m: surfaces.distance_m,

@@ -67,8 +67,9 @@ pub mod wing;
 
 pub use airfoil::{Airfoil, Naca, NacaCamber, Surface, TrailingEdge};
 pub use collision::{
-    compute_box_separation, compute_clearance, compute_clearance_near, compute_distance, compute_intersects,
-    compute_signed_distance, Clearance, CollisionShape, MassProperties, NearHint, OrientedBox, Proximity,
+    compute_box_separation, compute_clearance, compute_clearance_near, compute_distance, compute_distance_near,
+    compute_holds, compute_intersects, compute_signed_distance, Clearance, CollisionShape, MassProperties, NearHint,
+    OrientedBox, Proximity, Slab, SLAB_COUNT,
 };
 pub use error::{Error, Result};
 pub use flap::{AftElementSpec, Flap, FlapElementOutlines, FlapSectionSpec, FlapSpec, HingeSpec};

@@ -2,8 +2,8 @@
 
 use approx::assert_relative_eq;
 use flapwright_geom::{
-    compute_clearance, compute_clearance_near, compute_distance, compute_intersects, compute_signed_distance,
-    CollisionShape, NearHint, TriMesh,
+    compute_clearance, compute_clearance_near, compute_distance, compute_distance_near, compute_holds,
+    compute_intersects, compute_signed_distance, CollisionShape, NearHint, TriMesh,
 };
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 
@@ -276,6 +276,74 @@ fn a_sweep_started_from_the_last_closest_triangles_gives_the_same_clearances() {
         }
     }
     assert!(started_from_a_hint > 20, "{started_from_a_hint} queries had a hint");
+}
+
+#[test]
+fn a_meshs_slabs_share_its_surface_and_its_distances() {
+    let fixture = FixtureFlap::new();
+    let slabs = fixture.shape.slabs();
+    assert!(slabs.len() >= 4, "{} slabs", slabs.len());
+    // Every triangle in one slab: the same count and area.
+    let whole_area = fixture.mesh.compute_area();
+    let (mut triangles, mut area) = (0, 0.0);
+    for slab in slabs {
+        let mesh = slab.shape.compute_surface_mesh();
+        triangles += mesh.triangles.len();
+        area += mesh.compute_area();
+        assert!(!slab.shape.is_solid(), "a slab is a sheet");
+        assert_eq!(slab.vertices.len(), mesh.vertices.len());
+    }
+    assert_eq!(triangles, fixture.mesh.triangles.len());
+    assert_relative_eq!(area, whole_area, max_relative = 1e-12);
+    // Slabs across the chord: each spans the flap's span, much narrower across.
+    let extent = |slab: &flapwright_geom::collision::Slab| {
+        let local = slab.shape.compute_aabb(&Isometry3::identity());
+        local.max - local.min
+    };
+    let whole_box = fixture.shape.compute_aabb(&Isometry3::identity());
+    let whole_extent = whole_box.max - whole_box.min;
+    let span_axis = whole_extent.imax();
+    assert!(
+        slabs
+            .iter()
+            .all(|s| extent(s)[span_axis] > 0.9 * whole_extent[span_axis]),
+        "each slab spans the flap"
+    );
+    // The smallest of the slabs' distances is the whole flap's, turned against every part.
+    let identity = Isometry3::identity();
+    let mut hints = vec![NearHint::default(); slabs.len()];
+    let mut apart = 0;
+    for (other, other_shape, angle_deg, pose) in fixture.poses_against_others() {
+        let whole = compute_distance(&fixture.shape, &pose, &other_shape, &identity).unwrap();
+        let nearest = slabs
+            .iter()
+            .zip(&mut hints)
+            .map(|(slab, hint)| {
+                compute_distance_near(&slab.shape, &pose, &other_shape, &identity, hint)
+                    .unwrap()
+                    .distance_m
+            })
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            (nearest - whole.distance_m).abs() <= 1e-12,
+            "flap at {angle_deg} deg vs {}: {nearest} against {}",
+            other.name,
+            whole.distance_m
+        );
+        apart += usize::from(whole.distance_m > 0.0);
+    }
+    assert!(apart > 0);
+    // A primitive has no slabs; a ball inside the flap's solid (at its vertices' mean) is
+    // held by it, either way round; a ball far off is not.
+    assert!(CollisionShape::ball(0.1).unwrap().slabs().is_empty());
+    let inside =
+        fixture.mesh.vertices.iter().fold(Vector3::zeros(), |s, v| s + v.coords) / fixture.mesh.vertices.len() as f64;
+    let ball = CollisionShape::ball(1e-3).unwrap();
+    let at_inside = Isometry3::translation(inside.x, inside.y, inside.z);
+    assert!(fixture.shape.contains_point(&identity, &Point3::from(inside)));
+    assert!(compute_holds(&fixture.shape, &identity, &ball, &at_inside));
+    assert!(compute_holds(&ball, &at_inside, &fixture.shape, &identity));
+    assert!(!compute_holds(&fixture.shape, &identity, &ball, &at(100.0, 0.0, 0.0)));
 }
 
 #[test]

@@ -2,7 +2,7 @@
 
 use flapwright_geom::collision::{CollisionShape, MassProperties};
 use flapwright_geom::TriMesh;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 use nalgebra::{Isometry3, Point3};
 
@@ -56,6 +56,9 @@ pub struct Part {
     pub shape: CollisionShape,
     /// How the local frame moves.
     pub motion: Arc<dyn Motion>,
+    /// Each of the shape's slabs' speed bound ([`Part::slab_speed_bounds`]), found on
+    /// first use.
+    slab_speed_bounds: OnceLock<Option<Vec<f64>>>,
 }
 
 impl std::fmt::Debug for Part {
@@ -79,6 +82,7 @@ impl Part {
             name: name.into(),
             shape,
             motion: Arc::new(Fixed(pose_ac)),
+            slab_speed_bounds: OnceLock::new(),
         }
     }
 
@@ -88,6 +92,7 @@ impl Part {
             name: name.into(),
             shape,
             motion: Arc::new(motion),
+            slab_speed_bounds: OnceLock::new(),
         }
     }
 
@@ -98,6 +103,7 @@ impl Part {
             name: self.name.clone(),
             shape,
             motion: Arc::clone(&self.motion),
+            slab_speed_bounds: OnceLock::new(),
         }
     }
 
@@ -124,6 +130,32 @@ impl Part {
                 inertia_kg_m2: turn.matrix() * local.inertia_kg_m2 * turn.matrix().transpose(),
             }
         }))
+    }
+
+    /// A speed bound (m per unit t) for each of the shape's slabs
+    /// ([`CollisionShape::slabs`]): the motion's field over the slab's points, capped by
+    /// the part's own bound; `None` for a part that does not move, a shape without slabs,
+    /// or a motion that cannot bound its field. Found once, for every pair of the part.
+    pub fn slab_speed_bounds(&self) -> Option<&[f64]> {
+        self.slab_speed_bounds
+            .get_or_init(|| {
+                let whole = self.motion.speed_bound();
+                if !(whole.is_finite() && whole > 0.0) {
+                    return None;
+                }
+                let slabs = self.shape.slabs();
+                if slabs.is_empty() {
+                    return None;
+                }
+                slabs
+                    .iter()
+                    .map(|slab| {
+                        let field = self.motion.field_speed_bound(&slab.vertices)?;
+                        (field.is_finite() && field >= 0.0).then_some(field.min(whole))
+                    })
+                    .collect()
+            })
+            .as_deref()
     }
 
     /// True when the part moves (non-zero speed bound).

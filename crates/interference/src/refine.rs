@@ -8,19 +8,31 @@
 //! already known). The true minimum then lies in [smallest - residual, smallest].
 //! Clearances minimise g = distance; joints that must hold maximise the separation by
 //! minimising g = -separation (also L-Lipschitz).
+//!
+//! Where g is the smallest of several components g_k, each L_k-Lipschitz (a moving mesh's
+//! slabs, each bounded by its own speed: `sweep`), the interval's bound is the smallest of
+//! the components' bounds, min_k (g_k,i + g_k,j - L_k (t_j - t_i)) / 2, which is far higher
+//! than the single bound with the largest L_k where the slowest component is the nearest.
+//! A sample's components may be lower bounds rather than values (a component an
+//! evaluation skipped because its bound, inherited from the interval's ends, already
+//! lies above the others' values): the bounds above hold for lower bounds as well.
 
 use std::cmp::Ordering;
 use std::collections::binary_heap::PeekMut;
 use std::collections::BinaryHeap;
+use std::rc::Rc;
 
 use crate::error::{Error, Result};
 use crate::sweep::SweepSettings;
 
-/// An interval between two samples (t, g) with its certified lower bound on g.
+/// A sample's place and its components' lower bounds (shared by the two intervals it ends).
+type Ends = (f64, Rc<[f64]>);
+
+/// An interval between two samples with its certified lower bound on g.
 struct Interval {
     lower_bound: f64,
-    start: (f64, f64),
-    end: (f64, f64),
+    start: Ends,
+    end: Ends,
 }
 
 impl PartialEq for Interval {
@@ -48,10 +60,17 @@ impl Ord for Interval {
 pub(crate) trait Objective {
     /// What one evaluation yields.
     type Sample;
-    /// Evaluates at deployment `t`.
-    fn evaluate(&self, t: f64) -> Result<Self::Sample>;
+    /// Evaluates at deployment `t`. `floors`, for a sample between two others, are
+    /// certified lower bounds on each component there (from the interval's ends), which
+    /// the objective may use to skip work.
+    fn evaluate(&self, t: f64, floors: Option<&[f64]>) -> Result<Self::Sample>;
     /// The Lipschitz function g being minimised.
     fn value(&self, sample: &Self::Sample) -> f64;
+    /// Lower bounds at the sample on the components g is the smallest of, in the order of
+    /// [`certified_minimum`]'s Lipschitz constants; by default g alone.
+    fn components(&self, sample: &Self::Sample) -> Vec<f64> {
+        vec![self.value(sample)]
+    }
     /// Ranks samples (ties in g may be broken further, e.g. by penetration depth).
     fn rank(&self, sample: &Self::Sample) -> f64 {
         self.value(sample)
@@ -78,22 +97,33 @@ pub(crate) struct Minimum<S> {
     pub trace: Vec<(f64, f64)>,
 }
 
-/// Minimises `objective` over `t` in `[start, end]`, its g having Lipschitz constant
-/// `lipschitz`.
+/// Minimises `objective` over `t` in `[start, end]`, its components having Lipschitz
+/// constants `lipschitz` (one for a plain g).
 pub(crate) fn certified_minimum<O: Objective>(
     start: f64,
     end: f64,
-    lipschitz: f64,
+    lipschitz: &[f64],
     settings: &SweepSettings,
     objective: &O,
 ) -> Result<Minimum<O::Sample>> {
-    let interval = |s: (f64, f64), e: (f64, f64)| Interval {
-        lower_bound: 0.5 * (s.1 + e.1 - lipschitz * (e.0 - s.0)),
-        start: s,
-        end: e,
+    let interval = |s: Ends, e: Ends| {
+        let width = e.0 - s.0;
+        let lower_bound =
+            s.1.iter()
+                .zip(e.1.iter())
+                .zip(lipschitz)
+                .map(|((gs, ge), l)| 0.5 * (gs + ge - l * width))
+                .fold(f64::INFINITY, f64::min);
+        Interval {
+            lower_bound,
+            start: s,
+            end: e,
+        }
     };
+    let ends = |t: f64, sample: &O::Sample| -> Ends { (t, objective.components(sample).into()) };
+    let moving = lipschitz.iter().any(|l| *l > 0.0);
     // Parts that do not move (a track against a spar) need one evaluation.
-    let n = if lipschitz > 0.0 { settings.initial_samples } else { 1 };
+    let n = if moving { settings.initial_samples } else { 1 };
     let samples = (0..n)
         .map(|i| {
             let t = if n > 1 {
@@ -101,13 +131,13 @@ pub(crate) fn certified_minimum<O: Objective>(
             } else {
                 start
             };
-            objective.evaluate(t).map(|s| (t, s))
+            objective.evaluate(t, None).map(|s| (t, s))
         })
         .collect::<Result<Vec<_>>>()?;
     let mut trace: Vec<(f64, f64)> = samples.iter().map(|(t, s)| (*t, objective.rank(s))).collect();
     let mut heap: BinaryHeap<Interval> = samples
         .windows(2)
-        .map(|w| interval((w[0].0, objective.value(&w[0].1)), (w[1].0, objective.value(&w[1].1))))
+        .map(|w| interval(ends(w[0].0, &w[0].1), ends(w[1].0, &w[1].1)))
         .collect();
     // The smallest rank, ties to the first sample.
     let (mut best_t, mut best) = samples
@@ -121,7 +151,7 @@ pub(crate) fn certified_minimum<O: Objective>(
         })
         .ok_or(Error::BadRange { start, end })?;
     let mut evaluations = n;
-    if lipschitz > 0.0 {
+    if moving {
         loop {
             let Some(worst) = heap.peek_mut() else { break };
             let best_value = objective.value(&best);
@@ -132,12 +162,20 @@ pub(crate) fn certified_minimum<O: Objective>(
             }
             let worst = PeekMut::pop(worst);
             let t = 0.5 * (worst.start.0 + worst.end.0);
-            let middle = objective.evaluate(t)?;
+            let floors: Vec<f64> = worst
+                .start
+                .1
+                .iter()
+                .zip(worst.end.1.iter())
+                .zip(lipschitz)
+                .map(|((gs, ge), l)| (gs - l * (t - worst.start.0)).max(ge - l * (worst.end.0 - t)))
+                .collect();
+            let middle = objective.evaluate(t, Some(&floors))?;
             evaluations += 1;
-            let g = objective.value(&middle);
             trace.push((t, objective.rank(&middle)));
-            heap.push(interval(worst.start, (t, g)));
-            heap.push(interval((t, g), worst.end));
+            let at_middle = ends(t, &middle);
+            heap.push(interval(worst.start, at_middle.clone()));
+            heap.push(interval(at_middle, worst.end));
             if objective.rank(&middle) < objective.rank(&best) {
                 (best_t, best) = (t, middle);
             }

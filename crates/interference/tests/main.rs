@@ -6,6 +6,7 @@ mod opening;
 mod planar;
 mod relative_speed;
 mod same_station;
+mod slabs;
 mod sweep;
 
 use flapwright_interference::Motion;

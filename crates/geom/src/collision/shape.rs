@@ -9,7 +9,7 @@ use parry3d_f64::bounding_volume::Aabb;
 use parry3d_f64::math::Pose;
 use parry3d_f64::shape::{SharedShape, TriMeshFlags};
 
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 use super::{positive, to_glam, to_point, to_pose};
 use crate::error::{Error, Result};
@@ -40,6 +40,29 @@ pub struct CollisionShape {
     /// parry turns a mesh's own box); `None` for a primitive, whose box parry computes
     /// exactly at any pose.
     pub(super) local_box: Option<Aabb>,
+    /// The mesh's slabs ([`Self::slabs`]), built on first use and shared by the shape's
+    /// clones.
+    slabs: Arc<OnceLock<Vec<Slab>>>,
+}
+
+/// Slabs a mesh is cut into ([`CollisionShape::slabs`]). Sweeps bound each slab's speed on
+/// its own, so the count trades the tighter bound of a thinner slab against a query per
+/// slab: on the transport study's link-track (flap against wing, the study's longest
+/// pair), 1 (the whole flap) took 342 samples, 6 took 157 (BENCHMARKS.md).
+pub const SLAB_COUNT: usize = 6;
+
+/// Fewest triangles a slab of a mesh may average ([`CollisionShape::slabs`]): a mesh of a
+/// few dozen triangles is queried whole as fast as a slab.
+pub const MIN_SLAB_TRIANGLES: usize = 16;
+
+/// One slab of a mesh ([`CollisionShape::slabs`]): an open surface in the mesh's local
+/// frame and its vertices there.
+#[derive(Debug, Clone)]
+pub struct Slab {
+    /// The slab's triangles as a sheet (nothing is inside it).
+    pub shape: CollisionShape,
+    /// Its vertices, local frame (m).
+    pub vertices: Vec<Point3<f64>>,
 }
 
 impl std::fmt::Debug for CollisionShape {
@@ -102,6 +125,7 @@ impl CollisionShape {
             solid: true,
             frame: Pose::IDENTITY,
             local_box: None,
+            slabs: Arc::default(),
         }
     }
 }
@@ -150,7 +174,75 @@ impl CollisionShape {
             solid,
             frame,
             local_box: Some(Aabb::from_points(vertices.iter().copied())),
+            slabs: Arc::default(),
         })
+    }
+
+    /// A mesh's surface cut into at most [`SLAB_COUNT`] slabs of equal width across its
+    /// middle principal axis (a flap's: chordwise strips along its span), each triangle in
+    /// the slab that holds its centroid: every surface point lies in one slab, so the
+    /// surface's distance to anything is the smallest of its slabs'. A sweep bounds each
+    /// slab's speed by where its own points are (a flap's nose moves slower than its
+    /// trailing edge). Empty for a primitive and a mesh of fewer than [`MIN_SLAB_TRIANGLES`]
+    /// triangles a slab;
+    /// built once, on first use.
+    pub fn slabs(&self) -> &[Slab] {
+        self.slabs.get_or_init(|| self.cut_slabs(SLAB_COUNT))
+    }
+
+    fn cut_slabs(&self, count: usize) -> Vec<Slab> {
+        let Some(mesh) = self.shape.as_trimesh() else {
+            return Vec::new();
+        };
+        if count < 2 || mesh.indices().len() < MIN_SLAB_TRIANGLES * count {
+            return Vec::new();
+        }
+        // Stored coordinates are along the principal axes: the axis of middle extent.
+        let stored = mesh.vertices();
+        let extent = |axis: usize| {
+            let (lo, hi) = stored
+                .iter()
+                .map(|v| v[axis])
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)));
+            (hi - lo, lo)
+        };
+        let mut axes = [0, 1, 2].map(|axis| (extent(axis), axis));
+        axes.sort_by(|x, y| x.0 .0.total_cmp(&y.0 .0));
+        let ((width, low), axis) = axes[1];
+        if !(width.is_finite() && width > 0.0) {
+            return Vec::new();
+        }
+        let mut members: Vec<Vec<usize>> = vec![Vec::new(); count];
+        for (index, triangle) in mesh.indices().iter().enumerate() {
+            let centroid = triangle.iter().map(|&i| stored[i as usize][axis]).sum::<f64>() / 3.0;
+            let slab = (((centroid - low) / width * count as f64) as usize).min(count - 1);
+            members[slab].push(index);
+        }
+        members
+            .into_iter()
+            .filter(|m| !m.is_empty())
+            .filter_map(|m| {
+                let mut piece = TriMesh::default();
+                let mut renumbered = std::collections::HashMap::new();
+                for &index in &m {
+                    // The local-frame corners as given (`surface` is in the mesh's order).
+                    let corners = self.surface[index];
+                    let mut triangle = [0u32; 3];
+                    for (k, &i) in mesh.indices()[index].iter().enumerate() {
+                        triangle[k] = *renumbered.entry(i).or_insert_with(|| {
+                            piece.vertices.push(to_point(corners[k]));
+                            (piece.vertices.len() - 1) as u32
+                        });
+                    }
+                    piece.triangles.push(triangle);
+                }
+                let vertices = piece.vertices.clone();
+                // A slab of a mesh parry accepted is accepted (its triangles are the mesh's).
+                Self::from_triangles(&piece, false)
+                    .ok()
+                    .map(|shape| Slab { shape, vertices })
+            })
+            .collect()
     }
 
     /// An open surface (a skin with openings cut in it): a sheet, not a solid. Clearance to

@@ -205,7 +205,6 @@ pub fn cut_opening(
     surface: OpenedSurface,
 ) -> (TriMesh, f64) {
     let station_from_aircraft = aircraft_from_station.inverse();
-    let mut kept = mesh_ac.transformed(&station_from_aircraft);
     let boxes: Vec<Option<[f64; 2]>> = match surface {
         OpenedSurface::WingSkin => std::iter::once(opening.chordwise_x_m)
             .chain(opening.pads_x_m.iter().copied())
@@ -213,13 +212,71 @@ pub fn cut_opening(
             .collect(),
         OpenedSurface::Flap => vec![None],
     };
+    // Only triangles reaching into a box are cut (a wing's skin has tens of thousands, a
+    // station's boxes meet a few hundred); the others are kept as they are.
+    let half_width = opening.half_width_m;
+    let reaches_a_box = |corners: &[Point3<f64>; 3]| {
+        let (z_low, z_high) = span(corners.map(|p| p.z));
+        let (x_low, x_high) = span(corners.map(|p| p.x));
+        z_high >= -half_width
+            && z_low <= half_width
+            && boxes
+                .iter()
+                .any(|b| b.is_none_or(|[aft, fore]| x_high >= aft && x_low <= fore))
+    };
+    let station_vertices: Vec<Point3<f64>> = mesh_ac.vertices.iter().map(|v| station_from_aircraft * v).collect();
+    let (mut near, mut far) = (TriMesh::default(), TriMesh::default());
+    for triangle in &mesh_ac.triangles {
+        let corners = triangle.map(|i| station_vertices[i as usize]);
+        if reaches_a_box(&corners) {
+            near.append(&TriMesh {
+                vertices: corners.to_vec(),
+                triangles: vec![[0, 1, 2]],
+            });
+        } else {
+            far.triangles.push(*triangle);
+        }
+    }
     let mut removed_m2 = 0.0;
     for chordwise in boxes {
-        let (left, removed) = cut_box(&kept, opening.half_width_m, chordwise);
-        kept = left;
+        let (left, removed) = cut_box(&near, half_width, chordwise);
+        near = left;
         removed_m2 += removed;
     }
-    (kept.transformed(aircraft_from_station), removed_m2)
+    // The kept triangles keep the mesh's own vertices (those they use).
+    far.vertices = mesh_ac.vertices.clone();
+    let mut kept = compacted(far);
+    kept.append(&near.transformed(aircraft_from_station));
+    (kept, removed_m2)
+}
+
+/// The smallest and largest of three values.
+fn span(values: [f64; 3]) -> (f64, f64) {
+    (
+        values[0].min(values[1]).min(values[2]),
+        values[0].max(values[1]).max(values[2]),
+    )
+}
+
+/// `mesh` without the vertices no triangle uses (renumbered in order).
+fn compacted(mesh: TriMesh) -> TriMesh {
+    let mut index = vec![u32::MAX; mesh.vertices.len()];
+    let mut vertices = Vec::new();
+    let triangles = mesh
+        .triangles
+        .iter()
+        .map(|t| {
+            t.map(|i| {
+                let slot = &mut index[i as usize];
+                if *slot == u32::MAX {
+                    *slot = vertices.len() as u32;
+                    vertices.push(mesh.vertices[i as usize]);
+                }
+                *slot
+            })
+        })
+        .collect();
+    TriMesh { vertices, triangles }
 }
 
 /// `mesh` (station frame) less its faces that do not point up inside the box

@@ -15,7 +15,7 @@ fn default_scene_check(c: &mut Criterion) {
         scene: &scene,
         scene_text: DEFAULT_SCENE_TOML,
         scene_dir: None,
-        shapes: None,
+        wing_cache: None,
     };
     let mut group = c.benchmark_group("check");
     group.sample_size(10);
@@ -86,7 +86,7 @@ fn stations_scaling(c: &mut Criterion) {
             scene: &scene,
             scene_text: &text,
             scene_dir: None,
-            shapes: None,
+            wing_cache: None,
         };
         group.bench_function(format!("{count} stations"), |b| {
             b.iter(|| {

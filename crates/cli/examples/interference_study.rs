@@ -43,7 +43,7 @@ fn run(configure: impl FnOnce(&mut Scene)) -> Run {
         scene: &scene,
         scene_text: DEFAULT_SCENE_TOML,
         scene_dir: None,
-        shapes: None,
+        wing_cache: None,
     };
     let start = Instant::now();
     let outcome = design(&inputs, Mode::Check, &staged).expect("check runs");

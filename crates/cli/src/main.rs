@@ -243,7 +243,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         scene: &scene,
         scene_text: &text,
         scene_dir: scene_dir.as_deref(),
-        shapes: None,
+        wing_cache: None,
     };
     if mode == Mode::Check && scene.wing.is_none() {
         return Err(Failure {

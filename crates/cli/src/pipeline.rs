@@ -18,14 +18,15 @@ pub mod flap_position;
 pub mod flight_loads;
 pub(crate) mod geometry;
 pub(crate) mod interference;
-
-pub use interference::ShapeCache;
 pub mod mechanism_parts;
 pub mod mechanisms;
 mod plausibility;
 mod plots;
 pub(crate) mod sizing;
 pub mod stations;
+mod wing_cache;
+
+pub use wing_cache::WingCache;
 
 /// What a design run reads.
 #[derive(Debug, Clone, Copy)]
@@ -36,9 +37,9 @@ pub struct Inputs<'a> {
     pub scene_text: &'a str,
     /// Folder of the scene file, for relative airfoil files.
     pub scene_dir: Option<&'a Path>,
-    /// Collision shapes shared with other designs of the same wing (the study's kinds);
-    /// `None`: this design's own.
-    pub shapes: Option<&'a ShapeCache>,
+    /// Meshes, statistics and collision shapes shared with other designs of the same wing
+    /// (the study's kinds); `None`: this design's own.
+    pub wing_cache: Option<&'a WingCache>,
 }
 
 /// A one-line, machine-readable summary of a run (`--json`).
@@ -134,11 +135,17 @@ pub fn design_with_progress(
     if let Some(wing) = &scene.wing {
         let model = stages.run("geometry", || geometry::build_model(scene, wing, inputs.scene_dir))?;
         tube_path_ac = model.torque_tube().map(|t| t.path_ac.clone()).unwrap_or_default();
-        meshed = stages.run("meshing", || geometry::mesh_parts(&model, &scene.resolution))?;
+        meshed = stages.run("meshing", || match inputs.wing_cache {
+            Some(cache) => cache.meshes_of(&model, &scene.resolution),
+            None => geometry::mesh_parts(&model, &scene.resolution),
+        })?;
         // URDF meshes are the STL files: writing a URDF writes them too.
         let write_stl = full && (outputs.stl || outputs.urdf);
         let stage = if write_stl { "stl" } else { "part-statistics" };
-        parts = stages.run(stage, || geometry::write_parts(&meshed, write_stl, out))?;
+        parts = stages.run(stage, || match inputs.wing_cache {
+            Some(cache) if !write_stl => Ok(cache.statistics_of(&meshed)),
+            _ => geometry::write_parts(&meshed, write_stl, out),
+        })?;
         placed = stages.run("planes", || {
             let placed = stations::place_all(scene, &model, &meshed)?;
             stations::apply_flap_motion(scene, &model, &meshed, placed)
@@ -170,8 +177,8 @@ pub fn design_with_progress(
             }
         }
         if outputs.interference || !full {
-            let own = interference::ShapeCache::default();
-            let shapes = inputs.shapes.unwrap_or(&own);
+            let own = WingCache::default();
+            let shapes = inputs.wing_cache.unwrap_or(&own);
             let checked = stages.run("interference", || interference::check(scene, &meshed, &records, shapes))?;
             for pair in checked.pairs.iter().filter(|p| !p.passes) {
                 warnings.push(format!(

@@ -20,7 +20,7 @@ use serde::Serialize;
 use serde_json::Value;
 
 use crate::output::StagedDir;
-use crate::pipeline::interference::ShapeCache;
+use crate::pipeline::WingCache;
 use crate::pipeline::{self, Inputs, Mode};
 use crate::scene::Scene;
 
@@ -225,13 +225,14 @@ pub fn run(
         .iter()
         .map(|kind| Ok((kind, variant_text(text, kind, stations)?)))
         .collect::<Result<Vec<_>>>()?;
-    // The kinds design the same wing: its parts' collision shapes are built once for all.
-    let shapes = ShapeCache::default();
+    // The kinds design the same wing: its meshes, their statistics and their collision
+    // shapes are built once for all.
+    let cache = WingCache::default();
     let designed: Vec<_> = variants
         .par_iter()
         .map(|(kind, variant)| {
             let label = format!("{label} as {kind}");
-            (*kind, design_kind(variant, scene_dir, &label, kind, out, &shapes))
+            (*kind, design_kind(variant, scene_dir, &label, kind, out, &cache))
         })
         .collect();
     let mut outcomes = Vec::new();
@@ -296,7 +297,7 @@ fn design_kind(
     label: &str,
     kind: &str,
     out: &StagedDir,
-    shapes: &ShapeCache,
+    cache: &WingCache,
 ) -> Result<(String, Vec<StationFigures>)> {
     let scene =
         Scene::from_file_text(variant, label, scene_dir).map_err(|e| anyhow!("{}", e.locate(variant, label)))?;
@@ -307,7 +308,7 @@ fn design_kind(
         scene: &scene,
         scene_text: variant,
         scene_dir,
-        shapes: Some(shapes),
+        wing_cache: Some(cache),
     };
     let outcome = pipeline::design(&inputs, Mode::Design, &staged)?;
     staged.commit()?;

@@ -100,6 +100,18 @@ pub struct WingModel {
     torque_tube: Option<TorqueTubeSpec>,
 }
 
+/// Two models are equal when they were built from equal specifications (a model is
+/// determined by them): what lets designs of the same wing share its meshes.
+impl PartialEq for WingModel {
+    fn eq(&self, other: &Self) -> bool {
+        self.wing.spec() == other.wing.spec()
+            && self.flaps.len() == other.flaps.len()
+            && self.flaps.iter().zip(&other.flaps).all(|(a, b)| a.spec() == b.spec())
+            && self.spars == other.spars
+            && self.torque_tube == other.torque_tube
+    }
+}
+
 impl WingModel {
     /// Validates everything: the wing, each flap (inside the span, no overlaps), each spar
     /// (inside the span, ahead of every flap cove it meets) and the torque-tube path.

@@ -180,20 +180,32 @@ pub fn write_parts(parts: &[Part], write_stl: bool, out: &StagedDir) -> Result<V
             } else {
                 None
             };
-            let check = part.mesh.compute_topology_check();
-            let bounds = part.mesh.compute_aabb();
             Ok(PartReport {
-                name: part.name.clone(),
-                kind: kind_name(part.kind).to_string(),
-                vertices: part.mesh.vertices.len(),
-                triangles: part.mesh.triangles.len(),
-                volume_m3: part.mesh.compute_signed_volume(),
-                bounds_m: bounds.map_or([[0.0; 3]; 2], |b| [b.min.coords.into(), b.max.coords.into()]),
-                watertight: check.is_watertight(),
                 stl_file,
+                ..part_report(part)
             })
         })
         .collect()
+}
+
+/// The parts' report entries without files.
+pub fn part_statistics(parts: &[Part]) -> Vec<PartReport> {
+    parts.iter().map(part_report).collect()
+}
+
+fn part_report(part: &Part) -> PartReport {
+    let check = part.mesh.compute_topology_check();
+    let bounds = part.mesh.compute_aabb();
+    PartReport {
+        name: part.name.clone(),
+        kind: kind_name(part.kind).to_string(),
+        vertices: part.mesh.vertices.len(),
+        triangles: part.mesh.triangles.len(),
+        volume_m3: part.mesh.compute_signed_volume(),
+        bounds_m: bounds.map_or([[0.0; 3]; 2], |b| [b.min.coords.into(), b.max.coords.into()]),
+        watertight: check.is_watertight(),
+        stl_file: None,
+    }
 }
 
 /// Writes `mesh` as the binary STL `<name>.stl` (the solid named `name`); returns the

@@ -12,52 +12,19 @@ use flapwright_interference::{
 
 use crate::pipeline::mechanisms::StationRecord;
 use crate::pipeline::stations::PlacedStation;
+use crate::pipeline::WingCache;
 use crate::scene::{ResolutionScene, Scene};
 
 #[cfg(test)]
 #[path = "interference_agreement.rs"]
 mod agreement;
 
-/// Collision shapes of part meshes, kept for other designs of the same wing: the trade
-/// study designs the wing once per kind, and each design's wing skin, flaps and spars are
-/// the same meshes (a 27 000-triangle skin's BVH is a few milliseconds to build, and
-/// pseudo-normals and the mesh conversions as much again). A shape is reused only for a
-/// mesh equal to the one it was built from, so a design reads the same shapes either way.
-#[derive(Default)]
-pub struct ShapeCache(std::sync::Mutex<Vec<(flapwright_geom::TriMesh, CollisionShape)>>);
-
-impl std::fmt::Debug for ShapeCache {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let kept = self.0.lock().map_or(0, |shapes| shapes.len());
-        f.debug_struct("ShapeCache").field("shapes", &kept).finish()
-    }
-}
-
-impl ShapeCache {
-    /// The solid shape of `mesh` ([`CollisionShape::from_mesh`]), built once.
-    pub fn shape_of(&self, mesh: &flapwright_geom::TriMesh) -> flapwright_geom::Result<CollisionShape> {
-        let kept = |shapes: &Vec<(flapwright_geom::TriMesh, CollisionShape)>| {
-            shapes.iter().find(|(m, _)| m == mesh).map(|(_, shape)| shape.clone())
-        };
-        // A poisoned lock only means another design failed part way: its shapes are whole.
-        if let Some(shape) = kept(&self.0.lock().unwrap_or_else(|e| e.into_inner())) {
-            return Ok(shape);
-        }
-        let shape = CollisionShape::from_mesh(mesh)?;
-        let mut shapes = self.0.lock().unwrap_or_else(|e| e.into_inner());
-        if kept(&shapes).is_none() {
-            shapes.push((mesh.clone(), shape.clone()));
-        }
-        Ok(shape)
-    }
-}
-
-/// Builds the assembly and sweeps every pair, taking the parts' shapes from `shapes`.
+/// Builds the assembly and sweeps every pair, taking the parts' shapes from `cache`.
 pub fn check(
     scene: &Scene,
     meshed: &[MeshPart],
     records: &[StationRecord],
-    shapes: &ShapeCache,
+    shapes: &WingCache,
 ) -> Result<InterferenceReport> {
     let (assembly, required, sweep) = assembly(scene, meshed, records, shapes)?;
     // The drive fraction: 0 stowed, 1 deployed at every station.
@@ -70,7 +37,7 @@ pub fn assembly(
     scene: &Scene,
     meshed: &[MeshPart],
     records: &[StationRecord],
-    shapes: &ShapeCache,
+    shapes: &WingCache,
 ) -> Result<(Assembly, Requirements, SweepSettings)> {
     fn placed(record: &StationRecord) -> Result<&PlacedStation> {
         record
@@ -305,49 +272,4 @@ pub fn fairing_depths(
         record.fairing = Some(depth);
         Ok(())
     })
-}
-
-#[cfg(test)]
-mod shape_cache {
-    use super::ShapeCache;
-    use flapwright_geom::collision::{compute_distance, CollisionShape};
-    use flapwright_geom::TriMesh;
-    use nalgebra::{Isometry3, Point3};
-
-    fn tetrahedron(offset: f64) -> TriMesh {
-        TriMesh {
-            vertices: vec![
-                Point3::new(offset, 0.0, 0.0),
-                Point3::new(offset + 1.0, 0.0, 0.0),
-                Point3::new(offset, 1.0, 0.0),
-                Point3::new(offset, 0.0, 1.0),
-            ],
-            triangles: vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
-        }
-    }
-
-    #[test]
-    fn a_mesh_is_built_once_and_only_an_equal_mesh_reuses_it() {
-        let cache = ShapeCache::default();
-        let (near, far) = (tetrahedron(0.0), tetrahedron(3.0));
-        let first = cache.shape_of(&near).unwrap();
-        let again = cache.shape_of(&near.clone()).unwrap();
-        assert_eq!(format!("{cache:?}"), "ShapeCache { shapes: 1 }");
-        let other = cache.shape_of(&far).unwrap();
-        assert_eq!(format!("{cache:?}"), "ShapeCache { shapes: 2 }");
-        // Each answers as a shape built afresh from its own mesh.
-        let identity = Isometry3::identity();
-        let direct = compute_distance(
-            &CollisionShape::from_mesh(&near).unwrap(),
-            &identity,
-            &CollisionShape::from_mesh(&far).unwrap(),
-            &identity,
-        )
-        .unwrap();
-        for shape in [&first, &again] {
-            let cached = compute_distance(shape, &identity, &other, &identity).unwrap();
-            assert_eq!(cached.distance_m, direct.distance_m);
-        }
-        assert!((direct.distance_m - 2.0).abs() < 1e-12, "{}", direct.distance_m);
-    }
 }

@@ -160,7 +160,8 @@ fn synthesised(text: &str, dir: &Path) -> (Scene, Vec<MeshPart>, Vec<StationReco
 fn agree_for_roles(text: &str, roles: &[BodyRole]) -> Vec<BodyRole> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/scenes");
     let (scene, meshed, records) = synthesised(text, &dir);
-    let (assembly, _, settings) = assembly(&scene, &meshed, &records, &super::ShapeCache::default()).expect("assembly");
+    let (assembly, _, settings) =
+        assembly(&scene, &meshed, &records, &crate::pipeline::WingCache::default()).expect("assembly");
     let mut checked = Vec::new();
     for &role in roles {
         let Some((station, part)) = assembly

@@ -32,7 +32,7 @@ mod segment_triangle;
 mod shape;
 
 pub use penetration::SAMPLE_BUDGET as PENETRATION_SAMPLE_BUDGET;
-pub use shape::{CollisionShape, MassProperties, OrientedBox, Slab, SLAB_COUNT};
+pub use shape::{CollisionShape, MassProperties, OrientedBox, Slab, MIN_SLAB_TRIANGLES, SLAB_COUNT};
 
 /// Result of [`compute_distance`]: separation and the closest points, aircraft frame.
 #[derive(Debug, Clone, Copy, PartialEq)]

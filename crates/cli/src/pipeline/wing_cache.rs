@@ -46,7 +46,7 @@ fn lock<T>(mutex: &Mutex<T>) -> MutexGuard<'_, T> {
 }
 
 impl WingCache {
-    /// The parts of `model` meshed at `resolution` ([`geometry::mesh_parts`]), meshed once.
+    /// The parts of `model` meshed at `resolution` (as a design meshes them), meshed once.
     /// The lock is held while meshing: a design asking for the same wing meanwhile waits
     /// for it rather than meshing it again.
     pub fn meshes_of(&self, model: &WingModel, resolution: &ResolutionScene) -> Result<Vec<MeshPart>> {
@@ -68,7 +68,7 @@ impl WingCache {
         Ok(parts)
     }
 
-    /// The statistics of `parts` ([`geometry::part_statistics`]), computed once for parts
+    /// The statistics of `parts` (the report's part entries), computed once for parts
     /// this cache meshed; others' are computed each time.
     pub fn statistics_of(&self, parts: &[MeshPart]) -> Vec<PartReport> {
         let mut wings = lock(&self.wings);

@@ -47,8 +47,11 @@ pub struct CollisionShape {
 
 /// Slabs a mesh is cut into ([`CollisionShape::slabs`]). Sweeps bound each slab's speed on
 /// its own, so the count trades the tighter bound of a thinner slab against a query per
-/// slab: on the transport study's link-track (flap against wing, the study's longest
-/// pair), 1 (the whole flap) took 342 samples, 6 took 157 (BENCHMARKS.md).
+/// slab. On the transport study's link-track (its flap against the wing, the study's
+/// longest pair), the whole flap took 342 samples, 4 slabs 189, 6 slabs 183, 8 and 12
+/// slabs 182-183; the study's CPU time was 0.89 s whole and 0.76-0.78 s with 4 to 12 slabs
+/// (BENCHMARKS.md). With two, the slower slab is bounded by more than the interference
+/// sweep's threshold for slabs (`SLABS_WORTH_IT`), and the whole flap is swept.
 pub const SLAB_COUNT: usize = 6;
 
 /// Fewest triangles a slab of a mesh may average ([`CollisionShape::slabs`]): a mesh of a
@@ -183,9 +186,8 @@ impl CollisionShape {
     /// the slab that holds its centroid: every surface point lies in one slab, so the
     /// surface's distance to anything is the smallest of its slabs'. A sweep bounds each
     /// slab's speed by where its own points are (a flap's nose moves slower than its
-    /// trailing edge). Empty for a primitive and a mesh of fewer than [`MIN_SLAB_TRIANGLES`]
-    /// triangles a slab;
-    /// built once, on first use.
+    /// trailing edge). Empty for a primitive and a mesh of fewer than
+    /// [`MIN_SLAB_TRIANGLES`] triangles a slab; built once, on first use.
     pub fn slabs(&self) -> &[Slab] {
         self.slabs.get_or_init(|| self.cut_slabs(SLAB_COUNT))
     }

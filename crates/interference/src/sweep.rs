@@ -355,12 +355,14 @@ impl Objective for SlabbedClearance<'_> {
 }
 
 /// Slabs are swept where the slowest is bounded by at most this share of the whole part's
-/// bound. A sample asks every slab that may be the nearest, so where the slabs move about
-/// as fast as the whole (a flap fitted to several stations: 77-100 % on the shipped
-/// scenes) they cost queries and save no samples: the double-slotted wing's interference
-/// stage took 0.39 s with them against 0.17 s without. On one station's mechanisms the
-/// slowest slab is at 37-55 % and the study's link-track needs half the samples.
-pub const SLABS_WORTH_IT: f64 = 0.7;
+/// bound. A sample asks every slab that may be the nearest, so where several slabs are
+/// about as near and as fast as the whole, they cost queries and save no samples. Measured
+/// (interference stage of `design`, medians of 5, BENCHMARKS.md): the double-slotted wing,
+/// whose flap's end faces stand 22.5 mm from the wing across the whole chord (slowest slab
+/// 86 %), 0.51 s with slabs against 0.25 s without; the transport wing's flaps fitted to two
+/// stations (78-79 %) 0.76 s with against 1.01 s without; the small aircraft's (77 %) 0.15 s
+/// against 0.13 s; one station's mechanisms in the study (37-55 %) half the samples.
+pub const SLABS_WORTH_IT: f64 = 0.8;
 
 /// The slabs of the moving part of a pair whose other part is fixed, with each slab's
 /// speed bound (m per unit t); `None` where neither or both move, the mover is not a mesh

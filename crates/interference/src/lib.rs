@@ -27,10 +27,12 @@
 //!
 //! # Design notes
 //! Sampling alone can miss a thin part passing between two samples. Distances between
-//! rigid parts are Lipschitz in `t` with constant L = sum of the parts' speed bounds, which
-//! gives a lower bound of the distance on every interval between samples; the sweep
-//! refines where that bound could undercut the smallest sample. No time-of-impact query is
-//! needed, and the guarantee holds for any motion whose speed bound is honest.
+//! rigid parts are Lipschitz in `t` with constant L = sum of the parts' speed bounds (or
+//! the speed of one in the other's frame, `relative_speed`), which gives a lower bound of
+//! the distance on every interval between samples; the sweep refines where that bound
+//! could undercut the smallest sample. A flap against a fixed part may be swept slab by
+//! slab, each slab's distance with its own constant (`sweep`, `refine`). No time-of-impact
+//! query is needed, and the guarantee holds for any motion whose speed bound is honest.
 //!
 //! # Limitations
 //! Parts are solids through `flapwright_geom::collision::compute_clearance`: closed meshes

@@ -2,7 +2,7 @@
 
 use flapwright_geom::collision::{CollisionShape, MassProperties};
 use flapwright_geom::TriMesh;
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, Mutex};
 
 use nalgebra::{Isometry3, Point3};
 
@@ -48,6 +48,9 @@ impl Motion for Fixed {
     }
 }
 
+/// One speed bound a slab ([`Part::slab_speed_bounds`]), or none.
+type SlabBounds = Option<Arc<[f64]>>;
+
 /// A part for the sweep: name, shape in its local frame, motion.
 pub struct Part {
     /// Part name (as in the report and JUnit file).
@@ -57,8 +60,9 @@ pub struct Part {
     /// How the local frame moves.
     pub motion: Arc<dyn Motion>,
     /// Each of the shape's slabs' speed bound ([`Part::slab_speed_bounds`]), found on
-    /// first use.
-    slab_speed_bounds: OnceLock<Option<Vec<f64>>>,
+    /// first use, with the slabs they were found for (`shape` is public: a shape put in
+    /// later has its own slabs, and its bounds are found again).
+    slab_speed_bounds: Mutex<Option<(usize, SlabBounds)>>,
 }
 
 impl std::fmt::Debug for Part {
@@ -82,7 +86,7 @@ impl Part {
             name: name.into(),
             shape,
             motion: Arc::new(Fixed(pose_ac)),
-            slab_speed_bounds: OnceLock::new(),
+            slab_speed_bounds: Mutex::new(None),
         }
     }
 
@@ -92,7 +96,7 @@ impl Part {
             name: name.into(),
             shape,
             motion: Arc::new(motion),
-            slab_speed_bounds: OnceLock::new(),
+            slab_speed_bounds: Mutex::new(None),
         }
     }
 
@@ -103,7 +107,7 @@ impl Part {
             name: self.name.clone(),
             shape,
             motion: Arc::clone(&self.motion),
-            slab_speed_bounds: OnceLock::new(),
+            slab_speed_bounds: Mutex::new(None),
         }
     }
 
@@ -133,29 +137,38 @@ impl Part {
     }
 
     /// A speed bound (m per unit t) for each of the shape's slabs
-    /// ([`CollisionShape::slabs`]): the motion's field over the slab's points, capped by
-    /// the part's own bound; `None` for a part that does not move, a shape without slabs,
-    /// or a motion that cannot bound its field. Found once, for every pair of the part.
-    pub fn slab_speed_bounds(&self) -> Option<&[f64]> {
-        self.slab_speed_bounds
-            .get_or_init(|| {
-                let whole = self.motion.speed_bound();
-                if !(whole.is_finite() && whole > 0.0) {
-                    return None;
-                }
-                let slabs = self.shape.slabs();
-                if slabs.is_empty() {
-                    return None;
-                }
-                slabs
-                    .iter()
-                    .map(|slab| {
-                        let field = self.motion.field_speed_bound(&slab.vertices)?;
-                        (field.is_finite() && field >= 0.0).then_some(field.min(whole))
-                    })
-                    .collect()
+    /// ([`CollisionShape::slabs`], in their order): the motion's field over the slab's
+    /// points, capped by the part's own bound; `None` for a part that does not move, a
+    /// shape without slabs, or a motion that cannot bound its field. Found once for every
+    /// pair of the part, and again if its shape is replaced.
+    pub fn slab_speed_bounds(&self) -> SlabBounds {
+        let slabs = self.shape.slabs();
+        // The slabs' address names them: a shape's slabs are built once and never moved.
+        let key = slabs.as_ptr() as usize;
+        // A poisoned lock only means another sweep failed part way: what it kept is whole.
+        let mut kept = self.slab_speed_bounds.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((kept_key, bounds)) = kept.as_ref() {
+            if *kept_key == key {
+                return bounds.clone();
+            }
+        }
+        let bounds = self.compute_slab_speed_bounds(slabs);
+        *kept = Some((key, bounds.clone()));
+        bounds
+    }
+
+    fn compute_slab_speed_bounds(&self, slabs: &[flapwright_geom::collision::Slab]) -> SlabBounds {
+        let whole = self.motion.speed_bound();
+        if !(whole.is_finite() && whole > 0.0) || slabs.is_empty() {
+            return None;
+        }
+        slabs
+            .iter()
+            .map(|slab| {
+                let field = self.motion.field_speed_bound(&slab.vertices)?;
+                (field.is_finite() && field >= 0.0).then_some(field.min(whole))
             })
-            .as_deref()
+            .collect()
     }
 
     /// True when the part moves (non-zero speed bound).

@@ -120,7 +120,11 @@ pub(crate) fn certified_minimum<O: Objective>(
             end: e,
         }
     };
-    let ends = |t: f64, sample: &O::Sample| -> Ends { (t, objective.components(sample).into()) };
+    let ends = |t: f64, sample: &O::Sample| -> Ends {
+        let components = objective.components(sample);
+        debug_assert_eq!(components.len(), lipschitz.len(), "one Lipschitz constant a component");
+        (t, components.into())
+    };
     let moving = lipschitz.iter().any(|l| *l > 0.0);
     // Parts that do not move (a track against a spar) need one evaluation.
     let n = if moving { settings.initial_samples } else { 1 };

@@ -374,6 +374,10 @@ fn slabs_of<'p>(a: &'p Part, b: &'p Part) -> Option<(&'p Part, &'p Part, bool, V
         _ => return None,
     };
     let bounds = mover.slab_speed_bounds()?;
+    // One bound a slab (the bounds are found for the shape's own slabs).
+    if bounds.len() != mover.shape.slabs().len() {
+        return None;
+    }
     let whole = mover.motion.speed_bound();
     let slowest = bounds.iter().copied().fold(f64::INFINITY, f64::min);
     (slowest <= SLABS_WORTH_IT * whole).then(|| (mover, fixed, mover_is_b, bounds.to_vec()))

@@ -182,3 +182,38 @@ fn a_slabbed_mesh_inside_a_solid_or_through_it_overlaps() {
     let whole_in_room = sweep_pair(&whole, &room, 0.0, END_RAD, &settings).unwrap();
     assert_eq!(in_room.penetration_m, whole_in_room.penetration_m);
 }
+
+#[test]
+fn a_part_given_another_shape_bounds_the_new_shapes_slabs() {
+    // The slab bounds are found once for the part's shape; a shape put in afterwards (the
+    // field is public) has other slabs, and its bounds must be its own.
+    let (mut slabbed, _) = planks();
+    let cube = cube_near_the_inner_edge();
+    let settings = SweepSettings::default();
+    sweep_pair(&slabbed, &cube, 0.0, END_RAD, &settings).unwrap();
+    let before = slabbed.slab_speed_bounds().unwrap();
+    // A plank half as wide, from 0.1 to 1.05 m: its slabs are slower.
+    let narrower = TriMesh {
+        vertices: plank()
+            .vertices
+            .iter()
+            .map(|p| Point3::new(0.1 + (p.x - 0.1) * 0.5, p.y, p.z))
+            .collect(),
+        triangles: plank().triangles,
+    };
+    slabbed.shape = CollisionShape::from_mesh(&narrower).unwrap();
+    let after = slabbed.slab_speed_bounds().unwrap();
+    assert_eq!(after.len(), slabbed.shape.slabs().len());
+    // The fastest slab: the outer edge, at 2 m before and at 1.05 m now.
+    let fastest = |bounds: &[f64]| bounds.iter().fold(0.0_f64, |m, b| m.max(*b));
+    assert!(
+        fastest(&before) > 1.9 && fastest(&after) < 1.1,
+        "{before:?} then {after:?}"
+    );
+    let found = sweep_pair(&slabbed, &cube, 0.0, END_RAD, &settings).unwrap();
+    let dense = densely_sampled(&slabbed, &cube, 4000);
+    assert!(
+        found.min_clearance_m - found.residual_bound_m <= dense + 1e-12,
+        "{found:?} against {dense}"
+    );
+}

@@ -186,8 +186,9 @@ impl CollisionShape {
     /// the slab that holds its centroid: every surface point lies in one slab, so the
     /// surface's distance to anything is the smallest of its slabs'. A sweep bounds each
     /// slab's speed by where its own points are (a flap's nose moves slower than its
-    /// trailing edge). Empty for a primitive and a mesh of fewer than
-    /// [`MIN_SLAB_TRIANGLES`] triangles a slab; built once, on first use.
+    /// trailing edge). Fewer slabs where some would be empty; none for a primitive, a mesh
+    /// of fewer than [`MIN_SLAB_TRIANGLES`] triangles a slab, or one flat or not finite
+    /// across its middle axis. Built once, on first use.
     pub fn slabs(&self) -> &[Slab] {
         self.slabs.get_or_init(|| self.cut_slabs(SLAB_COUNT))
     }
@@ -214,6 +215,9 @@ impl CollisionShape {
         if !(width.is_finite() && width > 0.0) {
             return Vec::new();
         }
+        // `surface` is in the mesh's triangle order: parry keeps the order and every
+        // triangle with the flags `from_triangles` gives it (no merging or deleting).
+        debug_assert_eq!(mesh.indices().len(), self.surface.len());
         let mut members: Vec<Vec<usize>> = vec![Vec::new(); count];
         for (index, triangle) in mesh.indices().iter().enumerate() {
             let centroid = triangle.iter().map(|&i| stored[i as usize][axis]).sum::<f64>() / 3.0;
@@ -223,7 +227,7 @@ impl CollisionShape {
         members
             .into_iter()
             .filter(|m| !m.is_empty())
-            .filter_map(|m| {
+            .map(|m| {
                 let mut piece = TriMesh::default();
                 let mut renumbered = std::collections::HashMap::new();
                 for &index in &m {
@@ -239,12 +243,14 @@ impl CollisionShape {
                     piece.triangles.push(triangle);
                 }
                 let vertices = piece.vertices.clone();
-                // A slab of a mesh parry accepted is accepted (its triangles are the mesh's).
                 Self::from_triangles(&piece, false)
                     .ok()
                     .map(|shape| Slab { shape, vertices })
             })
-            .collect()
+            // Every slab or none: the slabs must hold the whole surface. (A slab of a mesh
+            // parry accepted is accepted: its triangles are the mesh's.)
+            .collect::<Option<Vec<Slab>>>()
+            .unwrap_or_default()
     }
 
     /// An open surface (a skin with openings cut in it): a sheet, not a solid. Clearance to

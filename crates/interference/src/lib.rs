@@ -31,7 +31,7 @@
 //! the speed of one in the other's frame, `relative_speed`), which gives a lower bound of
 //! the distance on every interval between samples; the sweep refines where that bound
 //! could undercut the smallest sample. A flap against a fixed part may be swept slab by
-//! slab, each slab's distance with its own constant (`sweep`, `refine`). No time-of-impact
+//! slab, each slab's distance with its own constant (`slabbed`, `refine`). No time-of-impact
 //! query is needed, and the guarantee holds for any motion whose speed bound is honest.
 //!
 //! # Limitations
@@ -55,6 +55,7 @@ mod opening;
 mod part;
 mod refine;
 mod relative_speed;
+mod slabbed;
 mod station;
 mod sweep;
 
@@ -65,6 +66,7 @@ pub use fairing::{fairing_depth, FairingDepth, PlanarCapsule};
 pub use flap_motion::{fit_points, FittedFlapMotion, FlapCarrier, FIT_POINTS_PER_CARRIER, FIT_SPEED_MARGIN};
 pub use opening::{cut_opening, station_opening, OpenedSurface, Opening, OPENING_SAMPLES, UPWARD_FACE_COS};
 pub use part::{Fixed, Motion, Part};
+pub use slabbed::SLABS_WORTH_IT;
 pub use station::{flap_part, planar_parts, station_parts, DeclaredContact, FlapElement, StationPart, StationParts};
 pub use sweep::{
     sweep_contact, sweep_pair, sweep_pair_for_verdict, JointSeparation, PairClearance, SweepSettings,

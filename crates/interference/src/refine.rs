@@ -10,7 +10,7 @@
 //! minimising g = -separation (also L-Lipschitz).
 //!
 //! Where g is the smallest of several components g_k, each L_k-Lipschitz (a moving mesh's
-//! slabs, each bounded by its own speed: `sweep`), the interval's bound is the smallest of
+//! slabs, each bounded by its own speed: `slabbed`), the interval's bound is the smallest of
 //! the components' bounds, min_k (g_k,i + g_k,j - L_k (t_j - t_i)) / 2, which is far higher
 //! than the single bound with the largest L_k where the slowest component is the nearest.
 //! A sample's components may be lower bounds rather than values (a component an

@@ -245,6 +245,30 @@ impl TriMesh {
         })
     }
 
+    /// The triangles whose index `keep` accepts, in order, with only the vertices they use
+    /// (renumbered in the order first used).
+    pub fn select_triangles(&self, keep: impl Fn(usize) -> bool) -> TriMesh {
+        let mut index = vec![u32::MAX; self.vertices.len()];
+        let mut vertices = Vec::new();
+        let triangles = self
+            .triangles
+            .iter()
+            .enumerate()
+            .filter(|(k, _)| keep(*k))
+            .map(|(_, t)| {
+                t.map(|i| {
+                    let slot = &mut index[i as usize];
+                    if *slot == u32::MAX {
+                        *slot = vertices.len() as u32;
+                        vertices.push(self.vertices[i as usize]);
+                    }
+                    *slot
+                })
+            })
+            .collect();
+        TriMesh { vertices, triangles }
+    }
+
     /// Reverses the winding of every triangle (turns normals inside out).
     pub fn flip_orientation(&mut self) {
         for t in &mut self.triangles {
@@ -339,5 +363,20 @@ mod tests {
         let mut mesh = tetrahedron();
         mesh.triangles.push([0, 0, 1]);
         assert_eq!(mesh.compute_topology_check().degenerate_triangles, 1);
+    }
+    #[test]
+    fn a_selection_keeps_the_chosen_triangles_and_only_their_vertices() {
+        let mesh = tetrahedron();
+        let picked = mesh.select_triangles(|k| k == 1 || k == 3);
+        assert_eq!(picked.triangles.len(), 2);
+        for (kept, k) in picked.triangles.iter().zip([1, 3]) {
+            let corners = |m: &TriMesh, t: &[u32; 3]| t.map(|i| m.vertices[i as usize]);
+            assert_eq!(corners(&picked, kept), corners(&mesh, &mesh.triangles[k]));
+        }
+        // Every vertex kept is used.
+        let used: std::collections::HashSet<u32> = picked.triangles.iter().flatten().copied().collect();
+        assert_eq!(used.len(), picked.vertices.len());
+        assert!(mesh.select_triangles(|_| false).vertices.is_empty());
+        assert_eq!(mesh.select_triangles(|_| true).compute_area(), mesh.compute_area());
     }
 }

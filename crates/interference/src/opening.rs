@@ -225,18 +225,14 @@ pub fn cut_opening(
                 .any(|b| b.is_none_or(|[aft, fore]| x_high >= aft && x_low <= fore))
     };
     let station_vertices: Vec<Point3<f64>> = mesh_ac.vertices.iter().map(|v| station_from_aircraft * v).collect();
-    let (mut near, mut far) = (TriMesh::default(), TriMesh::default());
-    for triangle in &mesh_ac.triangles {
-        let corners = triangle.map(|i| station_vertices[i as usize]);
-        if reaches_a_box(&corners) {
-            near.append(&TriMesh {
-                vertices: corners.to_vec(),
-                triangles: vec![[0, 1, 2]],
-            });
-        } else {
-            far.triangles.push(*triangle);
-        }
-    }
+    let near_flags: Vec<bool> = mesh_ac
+        .triangles
+        .iter()
+        .map(|t| reaches_a_box(&t.map(|i| station_vertices[i as usize])))
+        .collect();
+    let mut near = mesh_ac
+        .select_triangles(|k| near_flags[k])
+        .transformed(&station_from_aircraft);
     let mut removed_m2 = 0.0;
     for chordwise in boxes {
         let (left, removed) = cut_box(&near, half_width, chordwise);
@@ -244,8 +240,7 @@ pub fn cut_opening(
         removed_m2 += removed;
     }
     // The kept triangles keep the mesh's own vertices (those they use).
-    far.vertices = mesh_ac.vertices.clone();
-    let mut kept = compacted(far);
+    let mut kept = mesh_ac.select_triangles(|k| !near_flags[k]);
     kept.append(&near.transformed(aircraft_from_station));
     (kept, removed_m2)
 }
@@ -256,27 +251,6 @@ fn span(values: [f64; 3]) -> (f64, f64) {
         values[0].min(values[1]).min(values[2]),
         values[0].max(values[1]).max(values[2]),
     )
-}
-
-/// `mesh` without the vertices no triangle uses (renumbered in order).
-fn compacted(mesh: TriMesh) -> TriMesh {
-    let mut index = vec![u32::MAX; mesh.vertices.len()];
-    let mut vertices = Vec::new();
-    let triangles = mesh
-        .triangles
-        .iter()
-        .map(|t| {
-            t.map(|i| {
-                let slot = &mut index[i as usize];
-                if *slot == u32::MAX {
-                    *slot = vertices.len() as u32;
-                    vertices.push(mesh.vertices[i as usize]);
-                }
-                *slot
-            })
-        })
-        .collect();
-    TriMesh { vertices, triangles }
 }
 
 /// `mesh` (station frame) less its faces that do not point up inside the box

@@ -60,9 +60,9 @@ pub struct Part {
     /// How the local frame moves.
     pub motion: Arc<dyn Motion>,
     /// Each of the shape's slabs' speed bound ([`Part::slab_speed_bounds`]), found on
-    /// first use, with the slabs they were found for (`shape` is public: a shape put in
+    /// first use, with the shape they were found for (`shape` is public: a shape put in
     /// later has its own slabs, and its bounds are found again).
-    slab_speed_bounds: Mutex<Option<(usize, SlabBounds)>>,
+    slab_speed_bounds: Mutex<Option<(CollisionShape, SlabBounds)>>,
 }
 
 impl std::fmt::Debug for Part {
@@ -143,17 +143,18 @@ impl Part {
     /// pair of the part, and again if its shape is replaced.
     pub fn slab_speed_bounds(&self) -> SlabBounds {
         let slabs = self.shape.slabs();
-        // The slabs' address names them: a shape's slabs are built once and never moved.
-        let key = slabs.as_ptr() as usize;
         // A poisoned lock only means another sweep failed part way: what it kept is whole.
         let mut kept = self.slab_speed_bounds.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some((kept_key, bounds)) = kept.as_ref() {
-            if *kept_key == key {
+        // The slabs' address names them: a shape's slabs are built once and never moved,
+        // and the shape kept here keeps them alive, so no other slabs can take their
+        // address (a shape's clones share its slabs, and their bounds).
+        if let Some((shape, bounds)) = kept.as_ref() {
+            if std::ptr::eq(shape.slabs().as_ptr(), slabs.as_ptr()) {
                 return bounds.clone();
             }
         }
         let bounds = self.compute_slab_speed_bounds(slabs);
-        *kept = Some((key, bounds.clone()));
+        *kept = Some((self.shape.clone(), bounds.clone()));
         bounds
     }
 

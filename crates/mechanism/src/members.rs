@@ -44,6 +44,18 @@ pub struct Member {
     pub loading: MemberLoading,
 }
 
+impl Member {
+    /// A member that bends, of `length_m` between its ends, drawn as a solid of `radius_m`.
+    pub fn bending(name: &str, length_m: f64, radius_m: f64) -> Self {
+        Self {
+            name: name.into(),
+            length_m,
+            radius_m,
+            loading: MemberLoading::Bending,
+        }
+    }
+}
+
 /// A member's internal loads at one pose (N, N m).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct MemberLoad {
@@ -104,6 +116,43 @@ impl MemberLoad {
         }
         load
     }
+
+    /// The loads in a cantilever clamped at `line[0]` whose centre line runs through `line`
+    /// (straight, or a polyline standing for a curved rail) to `line.last()`, where a force
+    /// `tip_force` (N) and a couple `tip_couple_nm` (N m, counter-clockwise positive) act.
+    ///
+    /// For a section at x on the line, the part beyond it holds the moment
+    /// M(x) = C + (p - x) x F and the axial force F · t (t the line's direction there,
+    /// tension positive). |M| along a straight segment is linear in x, so its largest value
+    /// is at a vertex; the axial force is largest on one of the segments. An empty line or a
+    /// single point carries only the couple.
+    pub fn of_cantilever_line(line: &[Point2<f64>], tip_force: Vector2<f64>, tip_couple_nm: f64) -> Self {
+        let Some(&tip) = line.last() else {
+            return Self {
+                axial_n: 0.0,
+                bending_moment_nm: tip_couple_nm.abs(),
+            };
+        };
+        let bending_moment_nm = line
+            .iter()
+            .map(|&x| (tip_couple_nm + cross(tip - x, tip_force)).abs())
+            .fold(0.0, f64::max);
+        let axial_n = line
+            .windows(2)
+            .filter_map(|pair| {
+                let along = pair[1] - pair[0];
+                let length = along.norm();
+                (length > 0.0).then(|| tip_force.dot(&(along / length)))
+            })
+            .fold(
+                0.0,
+                |largest: f64, axial| if axial.abs() > largest.abs() { axial } else { largest },
+            );
+        Self {
+            axial_n,
+            bending_moment_nm,
+        }
+    }
 }
 
 #[cfg(test)]
@@ -141,6 +190,48 @@ mod tests {
         let e = (tip - root).normalize();
         assert!((m.bending_moment_nm - cross(tip - root, f).abs()).abs() < 1e-9);
         assert!((m.axial_n - f.dot(&e)).abs() < 1e-9);
+    }
+
+    /// A straight cantilever through [`MemberLoad::of_cantilever_line`] gives what the
+    /// method of sections gives for the same member, and a tip couple adds to the moment
+    /// all along it.
+    #[test]
+    fn a_cantilever_line_agrees_with_the_method_of_sections() {
+        let (root, tip) = (p(0.2, -0.1), p(1.0, 0.5));
+        let f = Vector2::new(-700.0, 1200.0);
+        let root_moment = -cross(tip - root, f);
+        let sections = MemberLoad::of_straight_member(root, tip, &[(root, -f), (tip, f)], root_moment);
+        let line = MemberLoad::of_cantilever_line(&[root, p(0.6, 0.2), tip], f, 0.0);
+        assert!(
+            (line.bending_moment_nm - sections.bending_moment_nm).abs() < 1e-9,
+            "{line:?} {sections:?}"
+        );
+        assert!((line.axial_n - sections.axial_n).abs() < 1e-9, "{line:?} {sections:?}");
+        // A couple of 100 N m at the tip against the force's moment at the root.
+        let with_couple = MemberLoad::of_cantilever_line(&[root, tip], f, 100.0);
+        let at_root = (100.0 + cross(tip - root, f)).abs();
+        assert!((with_couple.bending_moment_nm - at_root.max(100.0)).abs() < 1e-9);
+    }
+
+    /// A half-circle cantilever of radius R clamped at one end of its diameter, loaded at
+    /// the other along the diameter: the force's line passes through both ends, so the
+    /// moment is 0 at the root and largest, F R, at the top of the arc, where the force also
+    /// compresses the arc most (its whole magnitude along the tangent there).
+    #[test]
+    fn a_curved_cantilever_bends_most_where_it_stands_farthest_from_the_load_line() {
+        let (r, load) = (0.5, 800.0);
+        // Root (R, 0), over the top (0, R) to the tip (-R, 0); the tip's force along +x.
+        let arc: Vec<Point2<f64>> = (0..=180)
+            .map(|k| {
+                let a = (k as f64).to_radians();
+                p(r * a.cos(), r * a.sin())
+            })
+            .collect();
+        let m = MemberLoad::of_cantilever_line(&arc, Vector2::new(load, 0.0), 0.0);
+        assert!((m.bending_moment_nm - load * r).abs() < 1e-9, "{m:?}");
+        assert!((m.axial_n + load).abs() < 1e-3 * load, "{m:?}");
+        let at_root = (cross(arc[180] - arc[0], Vector2::new(load, 0.0))).abs();
+        assert!(at_root < 1e-9);
     }
 
     /// A crank with a horn: the screw's force on the horn beyond the pivot, the pin load at

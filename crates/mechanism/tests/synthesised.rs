@@ -512,3 +512,59 @@ fn link_track_certified_transmission_holds_between_samples() {
         s.min_transmission_angle_rad
     );
 }
+
+/// The track kinds size their beams and struts: every declared member has a finite load
+/// at every pose, and each beam, a cantilever from its forward end with the carriage's push
+/// square to it, bends most at its root by the push's reaction times the carriage's
+/// distance from that end (the track's or rail's reaction and the pose's pin only: a
+/// cantilever's root moment, not the method the kinds use). The struts at the skin carry
+/// at least what the beams hand them at their feet.
+#[test]
+fn track_beams_bend_under_the_carriages_push() {
+    let link_track = LinkTrack::synthesise(link_track_spec()).unwrap();
+    let hooked_track = HookedTrack::synthesise(hooked_track_spec()).unwrap();
+    // (kind, beam, its reaction, the carriage's pin, the beam's root)
+    type Case<'a> = (&'a dyn FlapMechanism, &'a str, &'a str, &'a str, Point2<f64>);
+    let cases: [Case; 2] = [
+        (&link_track, "track", "C", "C", link_track.synthesis().track_ends_m[0]),
+        (
+            &hooked_track,
+            "rail",
+            "rail",
+            "F",
+            hooked_track.synthesis().rail_ends_m[0],
+        ),
+    ];
+    let load = landing_load();
+    for (mechanism, beam, reaction, pin, root) in cases {
+        let declared: Vec<String> = mechanism.members().into_iter().map(|m| m.name).collect();
+        assert_eq!(declared.len(), 4, "{}: {declared:?}", mechanism.kind());
+        let mut largest = 0.0_f64;
+        for input in mechanism.input_range().samples(9) {
+            let pose = mechanism.pose(input).unwrap();
+            let loads = mechanism.kinetostatics(input, &load).unwrap();
+            for name in &declared {
+                let member = member_load(&loads, name);
+                assert!(
+                    member.axial_n.is_finite() && member.bending_moment_nm.is_finite(),
+                    "{name}: {member:?}"
+                );
+            }
+            let push = loads.reactions.iter().find(|(n, _)| n == reaction).unwrap().1.abs();
+            let expected = push * (pose.point(pin).unwrap() - root).norm();
+            let moment = member_load(&loads, beam).bending_moment_nm;
+            assert!(
+                (moment - expected).abs() < 1e-9 * expected.max(1.0),
+                "{}: {moment} against {expected}",
+                mechanism.kind()
+            );
+            let strut = member_load(
+                &loads,
+                &format!("strut-{}", if beam == "rail" { "rail" } else { "track" }),
+            );
+            assert!(strut.bending_moment_nm >= moment * (1.0 - 1e-12), "{strut:?}");
+            largest = largest.max(moment);
+        }
+        assert!(largest > 1.0, "{}: the beam is loaded: {largest} N m", mechanism.kind());
+    }
+}

@@ -24,6 +24,7 @@ use nalgebra::{Isometry2, Point2, Vector2};
 use serde::Serialize;
 
 mod bodies;
+mod members;
 mod rail;
 mod search;
 
@@ -522,7 +523,7 @@ impl FlapMechanism for HookedTrack {
                 distance_to_toggle_rad: pose.transmission,
             },
             screw_torques: Some(self.synthesis.screw.torques(screw_force)),
-            members: Vec::new(),
+            members: self.member_loads(pose.f, n * rail_force, pose.g, m * roller),
         })
     }
 
@@ -569,6 +570,12 @@ impl FlapMechanism for HookedTrack {
             screw_length_m: self.synthesis.screw_length_m,
             nominal_speed_mps: self.synthesis.nominal_speed_mps,
         }
+    }
+
+    /// The rail and the hook, each a cantilever from its strut, and the struts (see the
+    /// `members` module).
+    fn members(&self) -> Vec<crate::seam::Member> {
+        self.member_list()
     }
 
     fn flap_mass(&self) -> Option<FlapMass> {

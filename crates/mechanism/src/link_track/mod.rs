@@ -25,6 +25,7 @@ use serde::Serialize;
 
 mod bodies;
 mod linkage;
+mod members;
 mod search;
 
 use linkage::{Loop, LoopPose};
@@ -38,7 +39,7 @@ use crate::rocker_drive::{cross, turn_about};
 use crate::rotary_actuator::RotaryDrive;
 use crate::seam::{
     Actuator, Body, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, Kinetostatics, MechanismPose,
-    Member, MemberLoad, MemberLoading, NamedPoint, PoseHealth,
+    Member, NamedPoint, PoseHealth,
 };
 
 const KIND: &str = "link-track";
@@ -443,8 +444,6 @@ impl FlapMechanism for LinkTrack {
             v_a + Vector2::new(-r.y, r.x) * flap_rate
         };
         let torque_virtual_work = -wrench.power(velocity_of, flap_rate);
-        let link_load =
-            MemberLoad::of_straight_member(l.o, pose.a, &[(pose.a, -pin), (l.o, pin)], -cross(pose.a - l.o, -pin));
         Ok(Kinetostatics {
             input,
             deflection_rad: pose.flap.rotation.angle(),
@@ -462,7 +461,7 @@ impl FlapMechanism for LinkTrack {
                 distance_to_toggle_rad: pose.transmission,
             },
             screw_torques: None,
-            members: vec![("link".into(), link_load)],
+            members: self.member_loads(pose.a, pin, pose.c, n * track_force),
         })
     }
 
@@ -502,14 +501,10 @@ impl FlapMechanism for LinkTrack {
         self.synthesis.actuator
     }
 
-    /// The link, clamped to the rotary actuator's output at O: it bends.
+    /// The link, clamped to the rotary actuator's output at O, the track beam and the
+    /// struts (see the `members` module).
     fn members(&self) -> Vec<Member> {
-        vec![Member {
-            name: "link".into(),
-            length_m: (self.loop_.a - self.loop_.o).norm(),
-            radius_m: self.spec.hardware.link_radius_m,
-            loading: MemberLoading::Bending,
-        }]
+        self.member_list()
     }
 
     fn flap_mass(&self) -> Option<FlapMass> {

@@ -136,7 +136,7 @@ pub(super) fn bodies_and_joints(
                 direction: rail.d,
             },
             [JointEnd::Body(FLAP), JointEnd::Body(SUPPORT)],
-            &[("roller", "hook"), ("fitting", "hook"), ("fitting", "rail")],
+            &[("roller", "hook"), ("fitting", "hook")],
         ),
     ];
     (bodies, joints)

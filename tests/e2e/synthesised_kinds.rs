@@ -572,7 +572,8 @@ fn hooked_tracks_are_synthesised_checked_and_exported() {
 
 /// `flapwright study` on one station of the transport wing with two kinds: one folder and
 /// report per kind, study.json with each kind's figures (finite fairing depth and length,
-/// actuator load, work; the landing setting met), the chart page, and a ranking of both.
+/// actuator load, work; the landing setting met; each clears and weighs its members), the
+/// chart page, and a ranking of both.
 #[test]
 fn a_study_compares_kinds_at_a_station() {
     let dir = tempfile::tempdir().unwrap();
@@ -618,6 +619,12 @@ fn a_study_compares_kinds_at_a_station() {
             .unwrap();
         assert!(landing["gap_miss_percent_chord"].as_f64().unwrap().abs() < 0.5);
         assert!(!f["gap_overlap"].as_array().unwrap().is_empty());
+        // Both clear the wing, the flap and each other (the hooked-track's rail strut runs
+        // to the rear spar's web, its roller and fitting beside the rail and the screw),
+        // and their masses count the beams and struts, not the actuator alone (the
+        // hooked-track's screw weighs about 1 kg).
+        assert_eq!(f["clearance_passes"], true, "{f}");
+        assert!(f["mechanism_mass_kg"].as_f64().unwrap() > 20.0, "{f}");
     }
     let ranking = study["ranking"].as_array().unwrap();
     assert_eq!(ranking[0]["kinds"].as_array().unwrap().len(), 2);

@@ -179,6 +179,42 @@ pub struct HookedTrack {
     joints: Vec<Joint>,
 }
 
+/// Where the rail's strut meets the rear spar's web when no strut to the lower skin keeps
+/// clear: the rail starts at the stowed carriage under the flap, in the cove, where the
+/// flap's nose leaves no room for a strut up or forward to the skin; this one runs forward
+/// at the rail's height (within the web's, a strut's width from either skin) through the
+/// cove wall into the trailing-edge bay, as a track beam does, and stops short of the web
+/// by one and a half strut radii (its end fitting). Taken when the strut crosses the wing
+/// only through the bay and stays out of the flap at every sampled pose beyond its foot,
+/// which it shares with the rail for the carriage's and its own radius.
+fn web_strut_top(
+    spec: &HookedTrackSpec,
+    rail_start: Point2<f64>,
+    flap_poses: &[Isometry2<f64>],
+) -> Option<Point2<f64>> {
+    let outline = &spec.outline;
+    let radius = spec.hardware.link_radius_m;
+    let (face, lo, hi) = outline.rear_web()?;
+    if hi - lo <= 4.0 * radius || face <= rail_start.x {
+        return None;
+    }
+    let top = Point2::new(
+        face - 1.5 * radius,
+        rail_start.y.clamp(lo + 2.0 * radius, hi - 2.0 * radius),
+    );
+    let shared = spec.hardware.nut_radius_m + radius;
+    let length = (top - rail_start).norm();
+    if length <= shared {
+        return None;
+    }
+    let free = rail_start + (top - rail_start) * (shared / length);
+    let clear_of_flap = flap_poses.iter().all(|pose| {
+        let back = pose.inverse();
+        !outline.flap.segment_meets(back * free, back * top)
+    });
+    (outline.through_bay_only(rail_start, top, radius) && clear_of_flap).then_some(top)
+}
+
 fn failure(defect: SynthesisDefect, detail: String) -> Error {
     Error::Synthesis {
         kind: KIND,
@@ -310,7 +346,7 @@ impl HookedTrack {
         let strut = |from: Point2<f64>, avoid| {
             crate::placement::strut_top(&spec.outline, from, &ahead, margin, margin, &flap_poses, avoid)
         };
-        let first = strut(rail_ends[0], None);
+        let first = strut(rail_ends[0], None).or_else(|| web_strut_top(&spec, rail_ends[0], &flap_poses));
         let second = strut(hook_foot, first);
         let fallback = |p: Point2<f64>| {
             spec.outline

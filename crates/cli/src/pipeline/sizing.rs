@@ -137,6 +137,7 @@ pub fn size_all(
                 compression,
             );
             rod.max_outer_radius_m = Some(member.radius_m);
+            rod.end_fixity_factor = member.end_fixity_factor;
             if member.loading == MemberLoading::Bending {
                 rod.bending = loads
                     .iter()

@@ -25,12 +25,7 @@ use crate::seam::{Member, MemberLoad, MemberLoading};
 pub(super) fn members(hinge: &DroppedHinge) -> Vec<Member> {
     let h = hinge.synthesis.hinge_m;
     let radius_m = hinge.spec.hardware.link_radius_m;
-    let member = |name: &str, end: Point2<f64>, loading| Member {
-        name: name.into(),
-        length_m: (end - h).norm(),
-        radius_m,
-        loading,
-    };
+    let member = |name: &str, end: Point2<f64>, loading| Member::new(name, (end - h).norm(), radius_m, loading);
     let [s1, s2] = hinge.synthesis.support_points_m;
     let [f1, f2] = hinge.spec.flap_attachments;
     let mut members = vec![

@@ -401,21 +401,15 @@ impl FlapMechanism for FourBar {
     /// its pins (or from a horn beyond O1): three forces, so it bends.
     fn members(&self) -> Vec<Member> {
         let radius_m = self.spec.hardware.link_radius_m;
+        let crank_start = bodies::crank_start(self.loop_.o1, self.loop_.a1, self.synthesis.actuator_attachment_m);
         vec![
-            Member {
-                name: "crank".into(),
-                length_m: (self.loop_.a1
-                    - bodies::crank_start(self.loop_.o1, self.loop_.a1, self.synthesis.actuator_attachment_m))
-                .norm(),
+            Member::new(
+                "crank",
+                (self.loop_.a1 - crank_start).norm(),
                 radius_m,
-                loading: MemberLoading::Bending,
-            },
-            Member {
-                name: "rocker".into(),
-                length_m: self.loop_.rocker,
-                radius_m,
-                loading: MemberLoading::TwoForce,
-            },
+                MemberLoading::Bending,
+            ),
+            Member::new("rocker", self.loop_.rocker, radius_m, MemberLoading::TwoForce),
         ]
     }
 

@@ -17,16 +17,22 @@
 use nalgebra::{Point2, Vector2};
 
 use super::LinkTrack;
-use crate::members::{Member, MemberLoad};
+use crate::members::{Member, MemberLoad, MemberLoading};
 use crate::rocker_drive::cross;
 
 impl LinkTrack {
     /// The link, the track and the struts (see the module doc).
     pub(super) fn member_list(&self) -> Vec<Member> {
         let s = &self.synthesis;
-        let member = |name: &str, length_m: f64| Member::bending(name, length_m, self.spec.hardware.link_radius_m);
+        let member = |name: &str, length_m: f64| Member::cantilever(name, length_m, self.spec.hardware.link_radius_m);
         vec![
-            member("link", (self.loop_.a - self.loop_.o).norm()),
+            // Clamped to the actuator's output, its tip held by the flap's pin.
+            Member::new(
+                "link",
+                (self.loop_.a - self.loop_.o).norm(),
+                self.spec.hardware.link_radius_m,
+                MemberLoading::Bending,
+            ),
             member("track", (s.track_ends_m[1] - s.track_ends_m[0]).norm()),
             member("strut-O", (s.strut_tops_m[0] - self.loop_.o).norm()),
             member("strut-track", (s.strut_tops_m[1] - s.track_ends_m[0]).norm()),

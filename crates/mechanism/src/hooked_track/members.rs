@@ -1,5 +1,5 @@
 //! The hooked-track's members and their loads at a pose: the rail and the hook, each a
-//! cantilever from the strut that holds it, and the two struts to the lower skin.
+//! cantilever from the strut that holds it, and the two struts to the wing.
 //!
 //! `003_...` section 3 models the straight part of the rail and the hook as links; here
 //! they are the rails those links stand for (see the kind's module doc), so they carry
@@ -12,10 +12,13 @@
 //!   line (every 3 deg of arc), where `strut-hook` holds
 //!   it; the roller at G pushes it square to the lead-in or along the hook's radius,
 //!   -N_G m, and the part of the hook between the clamp and the roller carries it.
-//! - **strut-rail**, **strut-hook**: clamped to the lower skin, each carrying its rail's
-//!   root force and couple at its foot.
+//! - **strut-rail**, **strut-hook**: clamped to the lower skin (the rail's strut, where
+//!   none to the skin keeps clear, to the rear spar's web), each carrying its rail's root
+//!   force and couple at its foot.
 //!
-//! Each is a cantilever under one force and a couple ([`MemberLoad::of_cantilever_line`]):
+//! Each is a cantilever under one force and a couple ([`MemberLoad::of_cantilever_line`];
+//! the hook through [`MemberLoad::of_cantilever_curve`] with its exact tangents and the arc's
+//! points farthest from the push's line):
 //! the rail and the hook are sized where they bend most, the struts for what they hand to
 //! the skin. The two load paths are taken apart (the support is one rigid body in the
 //! kinematics; how its parts share load between them is a structural design left open).

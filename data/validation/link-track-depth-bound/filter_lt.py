@@ -11,6 +11,8 @@ from checks import *
 poses,polys,s=load(sys.argv[1]); res=pickle.load(open(sys.argv[2],'rb'))
 wing=polys['wing'][0]; flap=polys['outboard'][0]
 cf=flap[:,0].max()-flap[:,0].min()
+import os
+LIPC=float(os.environ.get('LIPC','0.009'))
 LIP=np.array(s['flap_position']['trailing_edge_st_m'])
 def rot(t): return np.array([[np.cos(t),-np.sin(t)],[np.sin(t),np.cos(t)]])
 def turn(o,a,b):
@@ -34,7 +36,7 @@ for dep,mu,k,o,a,c,oin in res:
         v0=c-a; v1=C-A; th=np.arctan2(v0[0]*v1[1]-v0[1]*v1[0], v0@v1)
         F=(rot(th)@(flap-a).T).T+A
         if inside(F,o) or dist_pt_poly(F,o)<0.05: ok=False; why='flap hits O'; break
-        if inside(F,LIP) or dist_pt_poly(F,LIP)<0.009: ok=False; why='flap at lip'; break
+        if inside(F,LIP) or dist_pt_poly(F,LIP)<LIPC: ok=False; why='flap at lip'; break
         if inside(wing,A) or inside(wing,C): ok=False; why='pin in wing'; break
         if not oin and seg_hits_poly(o,A,wing): ok=False; why='link cuts wing'; break
         if not ain and seg_hits_poly(o,A,F): ok=False; why='link cuts flap'; break

@@ -175,9 +175,10 @@ fn hooked_track_choices_given_back_or_refused() {
 /// The roller and its fitting run beside the straight rail and the screw, not in their
 /// layer: the roller's lead-in lies close to the rail's line and the fitting starts at the
 /// carriage on it, so in one layer they would overlap (they did, by 21-43 mm on the
-/// transport scene's study, before the roller's joint stopped declaring the fitting in
-/// touch with the rail). The carriage stays on the rail's and the screw's layer, and the
-/// roller on the hook's.
+/// transport scene's study, while the roller's joint declared the fitting in touch with the
+/// rail). The carriage stays on the rail's and the screw's layer, the roller on the hook's;
+/// the jack body and the rail's strut stand next to what they hold (the screw, the rail),
+/// on the side away from the fitting, and the hook's strut next to the hook.
 #[test]
 fn the_roller_and_its_fitting_stand_beside_the_rail_and_the_screw() {
     let hooked_track = HookedTrack::synthesise(hooked_track_spec()).unwrap();
@@ -193,9 +194,20 @@ fn the_roller_and_its_fitting_stand_beside_the_rail_and_the_screw() {
     assert_eq!(z("carriage"), z("rail"));
     assert_eq!(z("carriage"), z("screw"));
     assert_eq!(z("roller"), z("hook"));
+    assert_eq!(z("roller"), z("fitting"));
     for moving in ["roller", "fitting"] {
-        for fixed in ["rail", "screw"] {
+        for fixed in ["rail", "screw", "jack-body", "strut-rail"] {
             assert_ne!(z(moving), z(fixed), "{moving} and {fixed} share a layer");
         }
     }
+    // Neighbours: one layer apart, on the side away from the fitting.
+    let spacing = (z("rail") - z("fitting")).abs();
+    assert!(spacing > 0.0);
+    for (part, holds) in [("jack-body", "screw"), ("strut-rail", "rail"), ("strut-hook", "hook")] {
+        assert!(
+            ((z(part) - z(holds)).abs() - spacing).abs() < 1e-12,
+            "{part} beside {holds}"
+        );
+    }
+    assert!((z("jack-body") - z("fitting")).abs() > (z("screw") - z("fitting")).abs());
 }

@@ -67,7 +67,7 @@ pub(super) fn bodies_and_joints(
         width_m: 0.0,
         offset_m: 0.0,
     };
-    let bodies = vec![
+    let mut bodies = vec![
         Body {
             name: "flap".into(),
             role: BodyRole::Flap,
@@ -139,5 +139,25 @@ pub(super) fn bodies_and_joints(
             &[("roller", "hook"), ("fitting", "hook")],
         ),
     ];
+    // Spanwise, side by side (`crate::spanwise`'s spacing: layers 3 r_max apart clear each
+    // other by r_max): the roller, its fitting and the hook in the station plane; the rail
+    // with its carriage and screw beside them; the jack body and the rail's strut beside
+    // those, each next to what it holds (the screw, the rail's forward end); the hook's
+    // strut on the hook's other side. The layout from the joints alone would part the
+    // fitting from the rail but put the jack and the strut two layers from what they hold,
+    // across the fitting's layer.
+    let r_max = [hw.link_radius_m, hw.nut_radius_m, hw.jack_body_radius_m]
+        .into_iter()
+        .fold(0.0, f64::max);
+    let spacing = 3.0 * r_max;
+    for solid in bodies.iter_mut().flat_map(|body| body.solids.iter_mut()) {
+        solid.offset_m = spacing
+            * match solid.name.as_str() {
+                "carriage" | "rail" | "screw" => -1.0,
+                "jack-body" | "strut-rail" => -2.0,
+                "strut-hook" => 1.0,
+                _ => 0.0,
+            };
+    }
     (bodies, joints)
 }

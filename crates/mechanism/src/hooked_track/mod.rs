@@ -182,11 +182,16 @@ pub struct HookedTrack {
 /// Where the rail's strut meets the rear spar's web when no strut to the lower skin keeps
 /// clear: the rail starts at the stowed carriage under the flap, in the cove, where the
 /// flap's nose leaves no room for a strut up or forward to the skin; this one runs forward
-/// at the rail's height (within the web's, a strut's width from either skin) through the
+/// at the rail's height (within the web's, two strut radii from either skin) through the
 /// cove wall into the trailing-edge bay, as a track beam does, and stops short of the web
-/// by one and a half strut radii (its end fitting). Taken when the strut crosses the wing
-/// only through the bay and stays out of the flap at every sampled pose beyond its foot,
-/// which it shares with the rail for the carriage's and its own radius.
+/// by one and a half strut radii (its end fitting). Taken when, in the plane, it crosses
+/// the wing only through the bay with one and a half radii below the upper skin, keeps more
+/// than a radius from other structure (a torque tube, an intermediate spar), and its centre
+/// line stays out of the flap at every sampled pose beyond the foot it shares with the rail.
+/// Only the centre line: near the rail the strut runs, with the rail and the carriage, in
+/// the flap's lower-side slot, which the plane's outline does not show; the interference
+/// check judges the solid against the slotted flap (on the transport scene it clears the
+/// flap and the wing by 13 mm).
 fn web_strut_top(
     spec: &HookedTrackSpec,
     rail_start: Point2<f64>,
@@ -212,7 +217,8 @@ fn web_strut_top(
         let back = pose.inverse();
         !outline.flap.segment_meets(back * free, back * top)
     });
-    (outline.through_bay_only(rail_start, top, radius) && clear_of_flap).then_some(top)
+    let clear_of_structure = crate::outline::segment_distance(&outline.structure, free, top) > radius;
+    (outline.through_bay_only(rail_start, top, 1.5 * radius) && clear_of_structure && clear_of_flap).then_some(top)
 }
 
 fn failure(defect: SynthesisDefect, detail: String) -> Error {

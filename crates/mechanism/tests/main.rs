@@ -13,4 +13,5 @@ mod synthesised;
 mod thesis_appendix_c;
 mod thesis_tables;
 mod toggle;
+mod track_members;
 mod urdf;

@@ -10,21 +10,12 @@ it. Inputs: a link-track report.json of `flapwright study` (for the precision po
 the station's sections)."""
 import sys, numpy as np
 from poses import load
-from checks import seg_hits_poly, inside
+from checks import seg_hits_poly, inside, depth_below
 poses, polys, s = load(sys.argv[1])
 nut = s['mechanism']['details']['hardware']['nut_radius_m']
 wing = polys['wing'][0]; flap = polys['outboard'][0]
 cf = flap[:, 0].max() - flap[:, 0].min()
-def lower_y(x):
-    ys = []
-    for P in (wing, flap):
-        a = P; b = np.roll(P, -1, axis=0)
-        m = ((a[:, 0] - x) * (b[:, 0] - x) <= 0) & (a[:, 0] != b[:, 0])
-        ys += list(a[m, 1] + (b[m, 1] - a[m, 1]) * (x - a[m, 0]) / (b[m, 0] - a[m, 0]))
-    return min(ys) if ys else None
-xs = np.concatenate([wing[:, 0], flap[:, 0]]); lo, hi = xs.min(), xs.max()
-GX = np.linspace(lo + 1e-9, hi - 1e-9, 8001); GY = np.array([lower_y(x) for x in GX])
-depth = lambda p: np.interp(p[0], GX, GY) - p[1]
+depth = depth_below((wing, flap), 8001)
 best = None; admissible = 0
 for k in range(3600):
     a = np.radians(k / 10); d = np.array([np.cos(a), np.sin(a)]); m = np.array([d[1], -d[0]])

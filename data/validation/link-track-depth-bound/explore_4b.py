@@ -8,7 +8,7 @@ wing's trailing edge; pins never in the wing; links not through the wing (outsid
 Usage: explore_4b.py LINK_TRACK_REPORT.json (for the poses and sections)."""
 import sys, numpy as np
 from poses import load
-from checks import seg_hits_poly, inside, dist_pt_poly
+from checks import seg_hits_poly, inside, dist_pt_poly, depth_below
 poses, polys, s = load(sys.argv[1])
 wing = polys['wing'][0]; flap = polys['outboard'][0]
 cf = flap[:, 0].max() - flap[:, 0].min(); le = flap[:, 0].max()
@@ -19,10 +19,7 @@ def span_at(P, x):
     m = ((a[:, 0] - x) * (b[:, 0] - x) <= 0) & (a[:, 0] != b[:, 0])
     ys = a[m, 1] + (b[m, 1] - a[m, 1]) * (x - a[m, 0]) / (b[m, 0] - a[m, 0])
     return (ys.min(), ys.max()) if len(ys) else None
-xs = np.concatenate([wing[:, 0], flap[:, 0]]); X0, X1 = xs.min(), xs.max()
-GX = np.linspace(X0 + 1e-9, X1 - 1e-9, 4001)
-GY = np.array([min(v[0] for v in (span_at(wing, x), span_at(flap, x)) if v) for x in GX])
-depth = lambda p: np.interp(p[0], GX, GY) - p[1]
+depth = depth_below((wing, flap))
 rot = lambda t: np.array([[np.cos(t), -np.sin(t)], [np.sin(t), np.cos(t)]])
 def centre(a):
     pts = [a] + [R @ a + t for R, t, _ in poses]

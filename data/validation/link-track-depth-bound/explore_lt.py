@@ -7,6 +7,7 @@ transmission angle. Usage: explore_lt.py REPORT.json OUT.pkl (a link-track repor
 `flapwright study`); filter_lt.py then applies the checks over the deployment."""
 import numpy as np, sys
 from poses import load
+from checks import depth_below
 
 class Path:
     def __init__(self,P): self.P=np.asarray(P)
@@ -19,17 +20,7 @@ poses,polys,s=load(sys.argv[1])
 cf=None
 wing=polys['wing'][0]; flap=polys['outboard'][0]
 allp=[wing,flap]
-def lower_y(x):
-    ys=[]
-    for P in allp:
-        a=P; b=np.roll(P,-1,axis=0)
-        m=((a[:,0]-x)*(b[:,0]-x)<=0)&(a[:,0]!=b[:,0])
-        ys+=list(a[m,1]+(b[m,1]-a[m,1])*(x-a[m,0])/(b[m,0]-a[m,0]))
-    return min(ys) if ys else None
-xs_all=np.concatenate([wing[:,0],flap[:,0]]); XLO,XHI=xs_all.min(),xs_all.max()
-GX=np.linspace(XLO+1e-9,XHI-1e-9,4001); GY=np.array([lower_y(x) for x in GX])
-def depth(p):
-    return np.interp(p[0],GX,GY)-p[1]
+depth=depth_below(allp)
 fl_x=flap[:,0]; cf=fl_x.max()-fl_x.min(); print('flap chord',cf, 'nose', fl_x.max())
 wpath=Path(wing); fpath=Path(flap)
 def rot(t): return np.array([[np.cos(t),-np.sin(t)],[np.sin(t),np.cos(t)]])

@@ -17,6 +17,14 @@ LIP=np.array(s['flap_position']['trailing_edge_st_m'])
 def rot(t): return np.array([[np.cos(t),-np.sin(t)],[np.sin(t),np.cos(t)]])
 def turn(o,a,b):
     u=a-o;v=b-o; return np.arctan2(u[0]*v[1]-u[1]*v[0],u@v)
+def loop_poses(o,a,c,d,turns,span,br):
+    """The link point, the carriage and the flap's section at 49 samples of the link's turn."""
+    for kk in range(49):
+        ph=turns[1]*kk/48
+        A=o+rot(ph)@(a-o); to_c=c-A; b=d@to_c; disc=b*b-(to_c@to_c-span**2)
+        C=c+d*(-b+br*np.sqrt(max(disc,0)))
+        v0=c-a; v1=C-A; th=np.arctan2(v0[0]*v1[1]-v0[1]*v1[0], v0@v1)
+        yield A,C,(rot(th)@(flap-a).T).T+A
 allow_a_in_flap = len(sys.argv)>3
 shown=0; stats={}
 for dep,mu,k,o,a,c,oin in res:
@@ -29,12 +37,7 @@ for dep,mu,k,o,a,c,oin in res:
     if ain and not allow_a_in_flap: ok=False; why='A in flap'
     Cl=None
     if ok:
-      for kk in range(49):
-        ph=turns[1]*kk/48
-        A=o+rot(ph)@(a-o); to_c=c-A; b=d@to_c; disc=b*b-(to_c@to_c-span**2)
-        C=c+d*(-b+br*np.sqrt(max(disc,0)))
-        v0=c-a; v1=C-A; th=np.arctan2(v0[0]*v1[1]-v0[1]*v1[0], v0@v1)
-        F=(rot(th)@(flap-a).T).T+A
+      for A,C,F in loop_poses(o,a,c,d,turns,span,br):
         if inside(F,o) or dist_pt_poly(F,o)<0.05: ok=False; why='flap hits O'; break
         if inside(F,LIP) or dist_pt_poly(F,LIP)<LIPC: ok=False; why='flap at lip'; break
         if inside(wing,A) or inside(wing,C): ok=False; why='pin in wing'; break
@@ -44,12 +47,7 @@ for dep,mu,k,o,a,c,oin in res:
       if ok:
         if seg_hits_poly(c,Cl,wing): ok=False; why='track cuts wing'
     if ok:
-      for kk in range(49):
-        ph=turns[1]*kk/48
-        A=o+rot(ph)@(a-o); to_c=c-A; b=d@to_c; disc=b*b-(to_c@to_c-span**2)
-        C=c+d*(-b+br*np.sqrt(max(disc,0)))
-        v0=c-a; v1=C-A; th=np.arctan2(v0[0]*v1[1]-v0[1]*v1[0], v0@v1)
-        F=(rot(th)@(flap-a).T).T+A
+      for A,C,F in loop_poses(o,a,c,d,turns,span,br):
         if not cin and seg_hits_poly(c,Cl,F): ok=False; why='flap hits track'; break
     stats[why]=stats.get(why,0)+1
     if ok:

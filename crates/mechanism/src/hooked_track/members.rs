@@ -25,7 +25,6 @@
 
 use nalgebra::{Point2, Vector2};
 
-use super::bodies::hook_centre_line;
 use super::HookedTrack;
 use crate::members::{Member, MemberLoad};
 use crate::outline::point_segment_distance;
@@ -128,17 +127,13 @@ fn polyline_length(line: &[Point2<f64>]) -> f64 {
 }
 
 impl HookedTrack {
-    fn hook_line(&self) -> Vec<Point2<f64>> {
-        hook_centre_line(&self.rail, self.spec.landing.flap * self.rail.g)
-    }
-
     /// The rail, the hook and their struts (see the module doc).
     pub(super) fn member_list(&self) -> Vec<Member> {
         let s = &self.synthesis;
         let member = |name: &str, length_m: f64| Member::cantilever(name, length_m, self.spec.hardware.link_radius_m);
         vec![
             member("rail", (s.rail_ends_m[1] - s.rail_ends_m[0]).norm()),
-            member("hook", polyline_length(&self.hook_line())),
+            member("hook", polyline_length(&self.hook_line)),
             member("strut-rail", (s.strut_tops_m[0] - s.rail_ends_m[0]).norm()),
             member("strut-hook", (s.strut_tops_m[1] - s.hook_strut_foot_m).norm()),
         ]
@@ -158,7 +153,7 @@ impl HookedTrack {
         let rail_start = s.rail_ends_m[0];
         let on_rail = -carriage_push;
         let on_hook = -roller_push;
-        let line = self.hook_line();
+        let line = &self.hook_line;
         let foot = line.len() / 2;
         let clamp = line[foot];
         vec![
@@ -170,7 +165,7 @@ impl HookedTrack {
                 "hook".into(),
                 MemberLoad::of_cantilever_curve(
                     &with_arc_extremes(
-                        &hook_from_clamp(&line, foot, g, self.rail.k, self.rail.lead_m > 0.0),
+                        &hook_from_clamp(line, foot, g, self.rail.k, self.rail.lead_m > 0.0),
                         self.rail.k,
                         on_hook,
                     ),

@@ -175,6 +175,9 @@ pub struct HookedTrack {
     spec: HookedTrackSpec,
     synthesis: HookedTrackSynthesis,
     rail: Rail,
+    /// The hook's centre line (`bodies::hook_centre_line`), found once: the members' loads
+    /// ask for it at every sample.
+    hook_line: Vec<Point2<f64>>,
     bodies: Vec<Body>,
     joints: Vec<Joint>,
 }
@@ -396,6 +399,7 @@ impl HookedTrack {
             spec,
             synthesis,
             rail,
+            hook_line,
             bodies,
             joints,
         })

@@ -12,6 +12,7 @@ mod sizing_figures;
 mod stations;
 mod stl_reader;
 mod synthesised_kinds;
+mod trust;
 mod two_element;
 mod viewer_exports;
 

@@ -211,7 +211,7 @@ pub fn design_with_progress(
                 let cases = mechanisms::load_cases(scene, record);
                 let mut report = mechanisms::sweep_station(record, &cases, samples, &mut warnings)?;
                 if let Some(measure) = &record.flap_behind_wing {
-                    flap_position::annotate_samples(record, measure, &mut report)?;
+                    flap_position::annotate_samples(record, measure, &mut report, &scene.flap)?;
                 }
                 record.kinematics = Some(report);
             }
@@ -244,7 +244,7 @@ pub fn design_with_progress(
     if full && placed && (outputs.stl || outputs.urdf || outputs.gltf) {
         let fractions = mechanism_parts::setting_fractions(scene, &records, outputs.stl_setting)?;
         solids = stages.run("mechanism-parts", || {
-            mechanism_parts::build(scene, &records, &fractions)
+            mechanism_parts::build(scene, &records, &fractions, sizing_report.as_ref())
         })?;
         // URDF meshes are the STL files: writing a URDF writes them too.
         mechanism_part_reports = mechanism_parts::write_stl(&solids, outputs.stl || outputs.urdf, out)?;

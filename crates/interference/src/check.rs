@@ -214,9 +214,10 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
                 }
             }
         }
-        // Against the flap it carries: not the flap's own body; what is joined to it (pinned
-        // to a fitting, a track through it) against the flap with its slot cut. Against
-        // every other flap: everything.
+        // Against the flap it carries: not the flap's own body; the solids joined to it by
+        // design (the joint's touching solids: a link on its fitting, a hook carrying its
+        // roller) against the flap with its slot cut; everything else, on whatever body,
+        // against the whole flap. Against every other flap: everything.
         let flap_body = station.parts.iter().find(|p| p.role == BodyRole::Flap).map(|p| p.body);
         for flap in &assembly.flaps {
             if station.flap.as_deref() != Some(flap.name.as_str()) {
@@ -226,13 +227,11 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
                 continue;
             }
             for part in station.parts.iter().filter(|p| Some(p.body) != flap_body) {
-                match (
-                    flap_body.and_then(|f| station.joint_between(f, part.body)),
-                    &station.slotted_flap,
-                ) {
-                    (None, _) => jobs.push((name(), &part.part, flap)),
-                    (Some(_), Some(slotted)) => jobs.push((name(), &part.part, slotted)),
-                    (Some(_), None) => skip(&part.part, flap, NO_SLOT),
+                let joined = flap_body.is_some_and(|f| part.joined_to.contains(&f));
+                match (joined, &station.slotted_flap) {
+                    (false, _) => jobs.push((name(), &part.part, flap)),
+                    (true, Some(slotted)) => jobs.push((name(), &part.part, slotted)),
+                    (true, None) => skip(&part.part, flap, NO_SLOT),
                 }
             }
         }
@@ -256,7 +255,7 @@ fn pair_jobs(assembly: &Assembly) -> (Vec<PairJob<'_>>, Vec<UncheckedPair>) {
                     skip(&part.part, aft, ON_AFT_BODY);
                 } else if Some(part.body) == aft_body {
                     jobs.push((name(), &part.part, aft));
-                } else if aft_body.and_then(|b| station.joint_between(b, part.body)).is_some() {
+                } else if aft_body.is_some_and(|b| part.joined_to.contains(&b)) {
                     match &station.slotted_aft_element {
                         Some(slotted) => jobs.push((name(), &part.part, slotted)),
                         None => skip(&part.part, aft, NO_AFT_SLOT),

@@ -27,13 +27,13 @@
 
 use flapwright_geom::TriMesh;
 use flapwright_mechanism::outline::{point_segment_distance, vertical_span};
-use flapwright_mechanism::seam::FlapMechanism;
+use flapwright_mechanism::seam::{BodyRole, FlapMechanism};
 use flapwright_mechanism::spanwise::spanwise_layout;
 use nalgebra::{Isometry3, Point2, Point3, Vector3};
 use serde::Serialize;
 
 use crate::error::{Error, Result};
-use crate::station::planar_parts;
+use crate::station::{joined_solids, planar_parts};
 
 /// Faces whose outward normal makes less than 60 deg with the station's up axis
 /// (cos 60 deg = 0.5) belong to the upper side of the skin or the flap and are never cut.
@@ -47,9 +47,14 @@ pub const OPENING_SAMPLES: usize = 33;
 pub struct Opening {
     /// Station.
     pub station: String,
-    /// Half the spanwise width of the openings about the station plane: the widest solid's
-    /// half width plus the margin (m).
+    /// Half the spanwise width of the skin's openings about the station plane: the widest
+    /// solid's half width plus the margin (m).
     pub half_width_m: f64,
+    /// Half the spanwise width of the flap's slot: the widest of the solids on the flap's
+    /// bodies and those joined to them by design ([`crate::station::joined_solids`]), plus
+    /// the margin (m). Only those pass through it; the station's other solids are checked
+    /// against the whole flap.
+    pub slot_half_width_m: f64,
     /// Chordwise extent of the skin's opening, station x (forward positive): the swept
     /// solids' extent widened by the margin, never ahead of the rear spar's aft face (m).
     pub chordwise_x_m: [f64; 2],
@@ -111,6 +116,26 @@ pub fn station_opening(
                 .map(|(s, z)| z.abs() + s.shape.radius_m())
         })
         .fold(0.0, f64::max);
+    let is_flap = |b: usize| {
+        mechanism
+            .bodies()
+            .get(b)
+            .is_some_and(|body| matches!(body.role, BodyRole::Flap | BodyRole::AftFlap))
+    };
+    let joined = joined_solids(mechanism);
+    let slot_half_width = mechanism
+        .bodies()
+        .iter()
+        .enumerate()
+        .flat_map(|(b, body)| {
+            let (offsets, joined) = (&offsets[b], &joined[b]);
+            body.solids
+                .iter()
+                .enumerate()
+                .filter(move |&(s, _)| is_flap(b) || joined[s].iter().any(|&other| is_flap(other)))
+                .map(move |(s, solid)| offsets[s].abs() + solid.shape.radius_m())
+        })
+        .fold(0.0, f64::max);
     let (mut low, mut high) = (f64::INFINITY, f64::NEG_INFINITY);
     for i in 0..OPENING_SAMPLES {
         let capsules = planar_parts(mechanism, i as f64 * spacing).map_err(|source| Error::Pose {
@@ -152,6 +177,7 @@ pub fn station_opening(
     Ok(Opening {
         station: station.to_string(),
         half_width_m: half_width + margin_m,
+        slot_half_width_m: slot_half_width + margin_m,
         chordwise_x_m: [low - reach, high.max(low - reach)],
         pads_x_m,
         margin_m,
@@ -193,7 +219,7 @@ pub enum OpenedSurface {
     /// The wing skin: the box's full extent.
     WingSkin,
     /// The station's flap (stowed): its slot runs the flap's whole chord within the
-    /// spanwise width, since the flap moves along the parts that pass through it.
+    /// slot's spanwise width, since the flap moves along the parts that pass through it.
     Flap,
 }
 
@@ -214,7 +240,10 @@ pub fn cut_opening(
     };
     // Only triangles reaching into a box are cut (a wing's skin has tens of thousands, a
     // station's boxes meet a few hundred); the others are kept as they are.
-    let half_width = opening.half_width_m;
+    let half_width = match surface {
+        OpenedSurface::WingSkin => opening.half_width_m,
+        OpenedSurface::Flap => opening.slot_half_width_m,
+    };
     let reaches_a_box = |corners: &[Point3<f64>; 3]| {
         let (z_low, z_high) = span(corners.map(|p| p.z));
         let (x_low, x_high) = span(corners.map(|p| p.x));
@@ -326,6 +355,7 @@ mod tests {
         let opening = Opening {
             station: "s".into(),
             half_width_m: 0.1,
+            slot_half_width_m: 0.1,
             chordwise_x_m: [-0.5, 0.25],
             pads_x_m: vec![[0.5, 0.6]],
             margin_m: 0.0,

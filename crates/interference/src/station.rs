@@ -10,7 +10,7 @@ use std::sync::Arc;
 
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::TriMesh;
-use flapwright_mechanism::seam::{BodyRole, FlapMechanism, PlanarShape, SpeedBound};
+use flapwright_mechanism::seam::{BodyRole, FlapMechanism, JointEnd, PlanarShape, SpeedBound};
 use flapwright_mechanism::spanwise::spanwise_layout;
 use nalgebra::{Isometry2, Isometry3, Point2, Point3, Translation3, UnitQuaternion, Vector3};
 use serde::Serialize;
@@ -51,6 +51,44 @@ pub struct StationPart {
     pub role: BodyRole,
     /// True when its body moves with the deployment.
     pub moving: bool,
+    /// The other bodies this solid touches by design ([`joined_solids`]): it passes
+    /// through their slot, and only it does.
+    pub joined_to: Vec<usize>,
+}
+
+/// For every body, for each of its solids, the other bodies it is joined to by design: a
+/// joint between its body and another names the solid among its touching pairs, or names
+/// no touching pair at all (then every solid of the body counts, as a bare pin joins the
+/// whole body). A solid of a body that a joint holds elsewhere is not joined: on a
+/// hooked-track the hook carries the flap's roller and passes through the flap's slot, the
+/// jack body on the same support does not, and is checked against the whole flap.
+pub fn joined_solids(mechanism: &dyn FlapMechanism) -> Vec<Vec<Vec<usize>>> {
+    let bodies = mechanism.bodies();
+    let mut joined: Vec<Vec<Vec<usize>>> = bodies.iter().map(|b| vec![Vec::new(); b.solids.len()]).collect();
+    for joint in mechanism.joints() {
+        let [JointEnd::Body(a), JointEnd::Body(b)] = joint.ends else {
+            continue;
+        };
+        for (this, other, end) in [(a, b, 0), (b, a, 1)] {
+            let Some(body) = bodies.get(this) else {
+                continue;
+            };
+            for (s, solid) in body.solids.iter().enumerate() {
+                let named = joint.touching_solids.is_empty()
+                    || joint.touching_solids.iter().any(|pair| {
+                        if end == 0 {
+                            pair.0 == solid.name
+                        } else {
+                            pair.1 == solid.name
+                        }
+                    });
+                if named && !joined[this][s].contains(&other) {
+                    joined[this][s].push(other);
+                }
+            }
+        }
+    }
+    joined
 }
 
 /// The parts of one station.
@@ -306,9 +344,10 @@ pub fn station_parts(
         parameter: 0.0,
         source,
     })?;
+    let joined_to = joined_solids(mechanism.as_ref());
     let mut parts = Vec::new();
     for (index, body) in mechanism.bodies().iter().enumerate() {
-        for (solid, &z) in body.solids.iter().zip(&offsets[index]) {
+        for (s, (solid, &z)) in body.solids.iter().zip(&offsets[index]).enumerate() {
             let name = format!("{station}.{}", solid.name);
             // The solid at spanwise offset z, as a part moving with its body.
             let part_at = |z: f64| -> Result<Part> {
@@ -359,6 +398,7 @@ pub fn station_parts(
                 body: index,
                 role: body.role,
                 moving: body.is_moving(),
+                joined_to: joined_to[index][s].clone(),
             });
         }
     }
@@ -374,9 +414,7 @@ pub fn station_parts(
                 joint: label.clone(),
             });
         }
-        if let [flapwright_mechanism::seam::JointEnd::Body(a), flapwright_mechanism::seam::JointEnd::Body(b)] =
-            joint.ends
-        {
+        if let [JointEnd::Body(a), JointEnd::Body(b)] = joint.ends {
             joined.push((a, b, joint.name.clone()));
         }
     }

@@ -48,6 +48,7 @@ fn opening() -> Opening {
     Opening {
         station: "s".into(),
         half_width_m: 0.016,
+        slot_half_width_m: 0.016,
         chordwise_x_m: [-0.606, -0.194],
         pads_x_m: Vec::new(),
         margin_m: 0.006,

@@ -44,6 +44,26 @@ pub struct DeploymentSample {
     /// knows the wing section (absent without one).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub flap_position: Option<FlapGapOverlap>,
+    /// A two-element flap's aft element moved by a body of its own (the five-bar's
+    /// secondary flap): its deflection here, and the second slot where the caller knows
+    /// the sections (absent for kinds without one).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub aft_element: Option<AftElementSample>,
+}
+
+/// The aft element of a two-element flap at one sample.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct AftElementSample {
+    /// Its rotation from stowed (deg), trailing edge down positive, as the main flap's
+    /// `deflection_deg`.
+    pub deflection_deg: f64,
+    /// Its rotation relative to the main element from stowed (deg).
+    pub relative_deflection_deg: f64,
+    /// The second slot: gap and overlap of the aft element behind the main element's
+    /// trailing edge (% of the chord to the aft element's trailing edge); filled by the
+    /// caller that knows the sections.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub slot: Option<FlapGapOverlap>,
 }
 
 /// Gap and overlap of the flap behind the main wing at one sample (`003_...` Fig. 3
@@ -95,9 +115,20 @@ pub fn sweep_deployment(mechanism: &dyn FlapMechanism, samples: usize, load: &Lo
         samples: Vec::with_capacity(samples),
         stopped: None,
     };
+    let aft_body = crate::seam::aft_flap_body(mechanism.bodies());
     for (sample_index, input) in mechanism.input_range().samples(samples).into_iter().enumerate() {
-        match mechanism.kinetostatics(input, load) {
-            Ok(loads) => deployment.samples.push(DeploymentSample {
+        let aft_element = match aft_body.map(|k| mechanism.pose(input).map(|pose| (pose, k))) {
+            None => Ok(None),
+            Some(Ok((pose, k))) => Ok(Some(AftElementSample {
+                deflection_deg: (pose.deflection_rad + (pose.flap.inverse() * pose.bodies[k]).rotation.angle())
+                    .to_degrees(),
+                relative_deflection_deg: (pose.flap.inverse() * pose.bodies[k]).rotation.angle().to_degrees(),
+                slot: None,
+            })),
+            Some(Err(reason)) => Err(reason),
+        };
+        match aft_element.and_then(|aft| Ok((mechanism.kinetostatics(input, load)?, aft))) {
+            Ok((loads, aft_element)) => deployment.samples.push(DeploymentSample {
                 input,
                 deflection_deg: loads.deflection_rad.to_degrees(),
                 transmission_angle_deg: loads.transmission_angle_rad.to_degrees(),
@@ -111,6 +142,7 @@ pub fn sweep_deployment(mechanism: &dyn FlapMechanism, samples: usize, load: &Lo
                 screw_torques_nm: loads.screw_torques,
                 member_loads: loads.members.into_iter().collect(),
                 flap_position: None,
+                aft_element,
             }),
             Err(reason) => {
                 deployment.stopped = Some(DeploymentStop {

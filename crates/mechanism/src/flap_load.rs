@@ -42,17 +42,17 @@ impl FlapWrench {
     /// The wrench for `mass` with the flap at `flap` (displacement from stowed), under
     /// `load` at drive fraction `fraction` (the external moment's interpolation variable);
     /// the normal force at the flap's deflection (its displacement's rotation), along the
-    /// stowed +y turned with the flap.
+    /// stowed chord's normal turned with the flap; the weight times the load factor.
     pub fn new(mass: &FlapMass, flap: &Isometry2<f64>, load: &LoadCase, fraction: f64) -> Self {
         let (aero_n, aero_at) = match &load.flap_normal_force {
             Some(normal) => (
-                flap.rotation * Vector2::y() * normal.at(flap.rotation.angle()),
+                flap.rotation * normal.normal_stowed * normal.at(flap.rotation.angle()),
                 flap * normal.at_stowed_m,
             ),
             None => (Vector2::zeros(), flap * mass.centre_of_mass_stowed_m),
         };
         Self {
-            weight_n: mass.gravity_mps2 * mass.mass_kg,
+            weight_n: mass.gravity_mps2 * mass.mass_kg * load.load_factor,
             centre_of_mass: flap * mass.centre_of_mass_stowed_m,
             aero_n,
             aero_at,
@@ -103,6 +103,46 @@ impl LinkHardware {
             nut_radius_m: 0.035 * flap_chord_m,
             jack_body_length_m: 0.10 * flap_chord_m,
             jack_body_radius_m: 0.035 * flap_chord_m,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kinetostatics::{ExternalMoment, FlapNormalForce};
+
+    /// `003_...` eq. 1's normal force stays square to the flap's chord at every deflection,
+    /// whatever the chord's incidence in the station plane; the weight takes the load factor.
+    #[test]
+    fn the_normal_force_is_square_to_the_chord_and_the_weight_takes_the_load_factor() {
+        let incidence = 5.6f64.to_radians();
+        // The stowed chord from the trailing edge to the leading edge, nose down by the incidence.
+        let chord = Vector2::new(incidence.cos(), -incidence.sin());
+        let mass = FlapMass {
+            mass_kg: 100.0,
+            centre_of_mass_stowed_m: Point2::new(-0.3, 0.0),
+            gravity_mps2: Vector2::new(0.0, -9.81),
+        };
+        let load = LoadCase {
+            name: "manoeuvre".into(),
+            external_moment: ExternalMoment::Constant(0.0),
+            include_inertia: false,
+            flap_normal_force: Some(FlapNormalForce {
+                coefficients: vec![(0.0, 1.0)],
+                newtons_per_coefficient: 1000.0,
+                at_stowed_m: Point2::new(-0.2, 0.0),
+                normal_stowed: Vector2::new(-chord.y, chord.x),
+            }),
+            load_factor: 2.5,
+        };
+        for deg in [0.0, 15.0, 40.0] {
+            let flap = Isometry2::new(Vector2::new(-0.1, -0.05), -f64::to_radians(deg));
+            let wrench = FlapWrench::new(&mass, &flap, &load, 0.5);
+            let turned_chord = flap.rotation * chord;
+            assert!(wrench.aero_n.dot(&turned_chord).abs() < 1e-9, "{deg} deg");
+            assert!((wrench.aero_n.norm() - 1000.0).abs() < 1e-9);
+            assert!((wrench.weight_n.y + 2.5 * 100.0 * 9.81).abs() < 1e-9);
         }
     }
 }

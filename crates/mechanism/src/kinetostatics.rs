@@ -54,13 +54,23 @@ pub struct LoadCase {
     /// statics (thesis eqs. 3.4.x) have a moment and the weight only and refuse it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub flap_normal_force: Option<FlapNormalForce>,
+    /// Load factor n on the flap's weight (and, through [`FlapNormalForce`], its air load):
+    /// `003_...` eq. 1 scales the normal force by n, and the weight of a manoeuvring flap
+    /// is n m g as well. 1 in level flight and in the thesis cases.
+    #[serde(default = "unit_load_factor")]
+    pub load_factor: f64,
+}
+
+fn unit_load_factor() -> f64 {
+    1.0
 }
 
 /// The normal force a flight condition puts on the flap share of one station: `C_N(δ)`
 /// times `newtons_per_coefficient` (dynamic pressure x load factor x the station's share
 /// of the flap area, `003_...` eq. 1 summed over the spanwise elements the station
-/// carries), along the flap's upward normal (the stowed +y turned with the flap), at a
-/// point fixed to the flap (the quarter chord).
+/// carries), normal to the flap's chord (`003_...` eq. 1: "the normal force ... normal to
+/// the flap chord"; the stowed chord's upward normal turned with the flap), at a point
+/// fixed to the flap (the quarter chord).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FlapNormalForce {
     /// (deflection rad, C_N) rows, deflection increasing; linear between, held beyond.
@@ -69,6 +79,10 @@ pub struct FlapNormalForce {
     pub newtons_per_coefficient: f64,
     /// Where it acts on the stowed flap (station frame, m).
     pub at_stowed_m: nalgebra::Point2<f64>,
+    /// The unit upward normal of the stowed flap's chord line (station frame): the chord
+    /// from the trailing edge to the leading edge turned a quarter turn counter-clockwise
+    /// (a flap with its own incidence has it tilted from the station's +y).
+    pub normal_stowed: nalgebra::Vector2<f64>,
 }
 
 impl FlapNormalForce {
@@ -98,6 +112,7 @@ impl LoadCase {
             external_moment: ExternalMoment::Constant(0.5 * 750.0),
             include_inertia: false,
             flap_normal_force: None,
+            load_factor: 1.0,
         }
     }
 
@@ -112,6 +127,7 @@ impl LoadCase {
             },
             include_inertia: false,
             flap_normal_force: None,
+            load_factor: 1.0,
         }
     }
 }
@@ -148,7 +164,7 @@ impl CircularArcTrack {
         let input_m = pose.linkage.input_m;
         let fraction = (input_m - synthesis.stroke_start_m) / synthesis.stroke_m;
         let moment = load.external_moment.at(fraction);
-        let weight = spec.flap_mass_kg * spec.gravity_mps2;
+        let weight = load.load_factor * spec.flap_mass_kg * spec.gravity_mps2;
         let d = pose.centre_of_mass_d.position_m;
         // r_D cos θD = x_D and r_D sin(3π/2 - θD) = -x_D: no trigonometry needed.
         let weight_moment = weight * d.x;

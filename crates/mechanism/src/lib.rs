@@ -113,7 +113,9 @@ mod track_synthesis;
 pub mod urdf;
 
 pub use angle::{four_times_triangle_area, guarded_acos, ACOS_ROUNDING_TOLERANCE, DEFAULT_TOGGLE_TOLERANCE_RAD};
-pub use deployment::{sweep_deployment, Deployment, DeploymentSample, DeploymentStop, FlapGapOverlap};
+pub use deployment::{
+    sweep_deployment, AftElementSample, Deployment, DeploymentSample, DeploymentStop, FlapGapOverlap,
+};
 pub use dropped_hinge::{DroppedHinge, DroppedHingeActuator, DroppedHingeSpec};
 pub use error::{Error, Result, SynthesisDefect};
 pub use five_bar::{DoubleFlapLoads, FiveBarDimensions, FiveBarDoubleFlap, FiveBarKind, FiveBarPose, LoadedFiveBar};

@@ -112,16 +112,20 @@ pub fn screw_jack_placement(
     best.map(|(attachment, mount, _)| (attachment, mount)).ok_or(fallback)
 }
 
+/// The first attachment fraction a screw-jack search tries: the arm's middle.
+pub const DEFAULT_ATTACHMENT_FRACTION: f64 = 0.5;
+
 /// How a kind's screw jack is placed: the designer's choices.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ScrewJackChoice {
     /// The arm the screw pushes, from its fraction 0 end to its fraction 1 end (stowed).
     pub arm: (Point2<f64>, Point2<f64>),
-    /// Where on the arm the screw takes hold (first candidate).
-    pub attachment_fraction: f64,
-    /// Further candidates when the first is not clear; outside [0, 1] on a horn beyond an
-    /// end of the arm (a horn beyond the pivot moves the other way, so its screw can sit on
-    /// the other side).
+    /// Where on the arm the screw takes hold: the designer's fraction (the only one
+    /// tried), or `None` for a search from [`DEFAULT_ATTACHMENT_FRACTION`] on.
+    pub attachment_fraction: Option<f64>,
+    /// The search's further candidates when the first is not clear; outside [0, 1] on a
+    /// horn beyond an end of the arm (a horn beyond the pivot moves the other way, so its
+    /// screw can sit on the other side). Not tried when the designer gives the fraction.
     pub other_fractions: &'static [f64],
     /// The mount, if the designer gives it.
     pub mount: Option<Point2<f64>>,
@@ -132,10 +136,11 @@ pub struct ScrewJackChoice {
 }
 
 /// The screw jack of a body turning by `rotation_rad` about `pivot`: the designer's mount,
-/// or the first clear candidate of [`screw_jack_placement`] over attachments at
-/// `choice.attachment_fraction` and `choice.other_fractions` of the arm and standoffs 1, 1.6, 2.4
-/// and 0.7 times `choice.standoff_m`; when none is clear, the first that transmits well
-/// enough (or the first candidate) and `false`.
+/// or the first clear candidate of [`screw_jack_placement`] over attachments (the
+/// designer's `choice.attachment_fraction` alone, or [`DEFAULT_ATTACHMENT_FRACTION`] then
+/// `choice.other_fractions` of the arm) and standoffs 1, 1.6, 2.4 and 0.7 times
+/// `choice.standoff_m`; when none is clear, the first that transmits well enough (or the
+/// first candidate) and `false`.
 /// Returns (attachment, mount, clear).
 pub fn place_screw_jack(
     pivot: Point2<f64>,
@@ -148,13 +153,17 @@ pub fn place_screw_jack(
 ) -> (Point2<f64>, Point2<f64>, bool) {
     let (from, to) = choice.arm;
     let on_arm = |fraction: f64| from + (to - from) * fraction;
-    let first = on_arm(choice.attachment_fraction);
+    let first = on_arm(choice.attachment_fraction.unwrap_or(DEFAULT_ATTACHMENT_FRACTION));
     if let Some(mount) = choice.mount {
         return (first, mount, true);
     }
-    let attachments: Vec<Point2<f64>> = std::iter::once(choice.attachment_fraction)
-        .chain(choice.other_fractions.iter().copied())
-        .map(on_arm)
+    let others: &[f64] = if choice.attachment_fraction.is_some() {
+        &[]
+    } else {
+        choice.other_fractions
+    };
+    let attachments: Vec<Point2<f64>> = std::iter::once(first)
+        .chain(others.iter().copied().map(on_arm))
         .collect();
     let standoffs: Vec<f64> = [1.0, 1.6, 2.4, 0.7].iter().map(|k| k * choice.standoff_m).collect();
     match screw_jack_placement(

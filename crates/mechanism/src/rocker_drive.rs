@@ -144,6 +144,34 @@ impl RockerDrive {
         lo >= margin_rad && hi <= std::f64::consts::PI - margin_rad
     }
 
+    /// Why this drive cannot turn its body from 0 to `rotation_rad` with a transmission
+    /// angle of at least `min_rad` (sampled `samples` + 1 times), in words for a synthesis
+    /// failure naming `holder` (what the screw takes hold of); `None` when it can. A
+    /// toggle inside the rotation is named as such: the sampled angles may all pass the
+    /// minimum while the screw's line sweeps through the pivot between them.
+    pub fn transmission_problem(
+        &self,
+        rotation_rad: f64,
+        min_rad: f64,
+        samples: usize,
+        holder: &str,
+    ) -> Option<String> {
+        let smallest = self.min_transmission_rad(rotation_rad, samples);
+        if !self.clear_of_toggles(rotation_rad, 1e-3) {
+            Some(format!(
+                "the screw on the {holder} passes through a toggle (its line through the pivot) within the deployment; move the actuator mount or its attachment"
+            ))
+        } else if smallest < min_rad {
+            Some(format!(
+                "the screw's transmission angle on the {holder} falls to {:.1} deg, below the minimum of {:.1} deg; move the actuator mount or its attachment",
+                smallest.to_degrees(),
+                min_rad.to_degrees()
+            ))
+        } else {
+            None
+        }
+    }
+
     /// The drive at stroke `stroke_m`. Errors: [`Error::CannotAssemble`] beyond the
     /// triangle's reach, [`Error::Toggle`] within the toggle tolerance.
     pub fn state(&self, stroke_m: f64) -> Result<RockerState> {

@@ -366,6 +366,19 @@ pub enum JointGeometry {
         /// Direction of the slot (unit).
         direction: Unit<Vector2<f64>>,
     },
+    /// A pin of the first end in a hooked slot of the second: straight along `direction`
+    /// for `lead_m` from the pin (stowed), then on the circular arc about `centre` tangent
+    /// to it (the hooked-track's lead-in and hook, `003_...` Fig. 10).
+    PinInHookedSlot {
+        /// The pin's centre (stowed).
+        pin: Point2<f64>,
+        /// Direction of the straight lead-in (unit).
+        direction: Unit<Vector2<f64>>,
+        /// Length of the lead-in (m).
+        lead_m: f64,
+        /// The hook's centre of curvature.
+        centre: Point2<f64>,
+    },
 }
 
 /// One end of a joint: a body, or the wing (ground).

@@ -148,6 +148,7 @@ fn inertia_balances_by_virtual_work_and_by_newton_euler() {
         },
         include_inertia: true,
         flap_normal_force: None,
+        load_factor: 1.0,
     };
     let weight = spec.flap_mass_kg * spec.gravity_mps2;
     let synthesis = track.synthesis();

@@ -41,6 +41,7 @@ fn actuator_work_over_a_deployment_balances_the_couple() {
         external_moment: ExternalMoment::Constant(moment),
         include_inertia: false,
         flap_normal_force: None,
+        load_factor: 1.0,
     };
     for mechanism in &kinds {
         let inputs = mechanism.input_range().samples(2001);
@@ -130,6 +131,7 @@ fn hooked_track_rates_match_finite_differences() {
         external_moment: ExternalMoment::Constant(-1.0),
         include_inertia: false,
         flap_normal_force: None,
+        load_factor: 1.0,
     };
     let s = track.synthesis().clone();
     let h = 1e-7;

@@ -34,7 +34,7 @@ pub fn outline() -> StationOutline {
         wing: wing.into(),
         flap: flap.into(),
         structure: Default::default(),
-        lip: Some(Point2::new(-0.05, 0.175)),
+        lip: vec![Point2::new(-0.05, 0.175)],
         lip_clearance_m: 0.0,
     }
 }
@@ -84,7 +84,7 @@ pub fn dropped_hinge_spec() -> DroppedHingeSpec {
             outline.flap_lower_point(0.5).unwrap(),
         ],
         actuator: DroppedHingeActuator::ScrewJack {
-            attachment_fraction: 0.5,
+            attachment_fraction: None,
             mount: None,
             standoff_m: 0.4,
             drive: drive(),
@@ -119,7 +119,7 @@ pub fn four_bar_spec() -> FourBarSpec {
         forward_pivot: None,
         aft_pivot: None,
         min_transmission_angle_rad: 30f64.to_radians(),
-        actuator_attachment_fraction: 0.5,
+        actuator_attachment_fraction: None,
         actuator_mount: None,
         actuator_standoff_m: 0.4,
         flap_mass: flap_mass(),

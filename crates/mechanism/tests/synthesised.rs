@@ -7,7 +7,7 @@ use flapwright_mechanism::hooked_track::HookedTrack;
 use flapwright_mechanism::link_track::LinkTrack;
 use flapwright_mechanism::seam::{FlapMechanism, MemberLoad, MemberLoading};
 use flapwright_mechanism::{Error, ExternalMoment, FlapNormalForce, LoadCase, PrecisionPosition, SynthesisDefect};
-use nalgebra::{Isometry2, Point2};
+use nalgebra::{Isometry2, Point2, Vector2};
 
 #[path = "model_section.rs"]
 pub(crate) mod model_section;
@@ -23,6 +23,7 @@ pub(crate) fn landing_load() -> LoadCase {
         },
         include_inertia: false,
         flap_normal_force: None,
+        load_factor: 1.0,
     }
 }
 
@@ -94,13 +95,16 @@ fn statics_and_virtual_work_agree() {
         Box::new(LinkTrack::synthesise(link_track_spec()).unwrap()),
         Box::new(HookedTrack::synthesise(hooked_track_spec()).unwrap()),
     ];
-    // A flight condition's normal force at the quarter chord, C_N rising with deflection.
+    // A flight condition's normal force at the quarter chord, C_N rising with deflection,
+    // normal to a chord with 5 deg of incidence, at a load factor of 2.5.
     let flight = LoadCase {
         flap_normal_force: Some(FlapNormalForce {
             coefficients: vec![(0.0, 0.3), (20f64.to_radians(), 0.9), (35f64.to_radians(), 1.3)],
             newtons_per_coefficient: 8000.0,
             at_stowed_m: Point2::new(-0.12, 0.1),
+            normal_stowed: Vector2::new(5f64.to_radians().sin(), 5f64.to_radians().cos()),
         }),
+        load_factor: 2.5,
         ..landing_load()
     };
     for mechanism in &kinds {
@@ -134,6 +138,7 @@ fn rates_and_transmission_angle_match_finite_differences() {
             external_moment: ExternalMoment::Constant(-1.0),
             include_inertia: false,
             flap_normal_force: None,
+            load_factor: 1.0,
         };
         let mut massless = four_bar_spec();
         massless.flap_mass.mass_kg = 0.0;

@@ -18,6 +18,11 @@
 //! normal points up (within [`UPPER_SKIN_MAX_NORMAL_TILT_DEG`] of the station's y axis). A
 //! cove wall faces aft and a lower skin down, so neither can take its place, and the lip is
 //! found at any airfoil resolution; a closed trailing edge without a cove is its own lip.
+//! A blunt lip (a shroud that ends in a base 0.05 %c thick) is the upper corner and the
+//! aft-facing edges below it down to the lower corner ([`FlapBehindWing::lip`]): the gap is
+//! measured from the nearest point of it, as the flow sees the slot's throat (measured from
+//! the upper corner alone, the slot at `transport-flap`'s ob-outer read 2.8 mm wider than
+//! it is). The overlap is still measured from the upper corner, `003_...`'s trailing edge.
 //! (An earlier rule took the highest point within 1 % chord of the aft-most point: on a
 //! cambered upper skin that is the front of the band, 14-16 mm ahead of the lip in the
 //! default scene.)
@@ -62,6 +67,7 @@ pub struct GapOverlap {
 #[derive(Debug, Clone, PartialEq)]
 pub struct FlapBehindWing {
     trailing_edge: Point2<f64>,
+    lip: Vec<Point2<f64>>,
     flap_stowed: Vec<Vec<Point2<f64>>>,
     chord_m: f64,
 }
@@ -99,6 +105,64 @@ fn upper_lip(wing: &[Vec<Point2<f64>>]) -> Option<Point2<f64>> {
     lip
 }
 
+/// The deepest a blunt trailing edge's base may reach below its upper corner to count as the
+/// lip, as a fraction of the local clean chord: a shroud's base is 0.05 %c; a cove wall
+/// with no shroud (several %c deep) is the wing's aft face, not its trailing edge.
+pub const LIP_MAX_DEPTH_CHORD_FRACTION: f64 = 0.005;
+
+/// The lip from its upper corner `upper` (a vertex of `wing`) down the aft-facing edges that
+/// follow it away from the upper skin, while they stay within `max_depth_m` of it: the blunt
+/// trailing edge's base, to its lower corner. An edge faces aft when its outward normal
+/// leans at most [`UPPER_SKIN_MAX_NORMAL_TILT_DEG`] from the station's -x axis. Just
+/// `[upper]` for a sharp edge.
+fn lip_from(wing: &[Vec<Point2<f64>>], upper: Point2<f64>, max_depth_m: f64) -> Vec<Point2<f64>> {
+    let cos_tilt = UPPER_SKIN_MAX_NORMAL_TILT_DEG.to_radians().cos();
+    for polygon in wing {
+        let n = polygon.len();
+        let Some(start) = polygon.iter().position(|p| *p == upper) else {
+            continue;
+        };
+        let orientation = signed_area_m2(polygon).signum();
+        // Outward normal of an edge a -> b of a counter-clockwise polygon: the edge turned
+        // clockwise, (edge.y, -edge.x); walked backwards the edge's direction flips.
+        let faces_aft = |a: Point2<f64>, b: Point2<f64>, forwards: bool| {
+            let edge = if forwards { b - a } else { a - b };
+            let normal_x = orientation * edge.y;
+            let length = edge.norm();
+            length > 0.0 && -normal_x >= cos_tilt * length
+        };
+        for forwards in [true, false] {
+            let step = |i: usize| if forwards { (i + 1) % n } else { (i + n - 1) % n };
+            let mut lip = vec![upper];
+            let mut at = start;
+            while lip.len() < n
+                && faces_aft(polygon[at], polygon[step(at)], forwards)
+                && (upper - polygon[step(at)]).norm() <= max_depth_m
+            {
+                at = step(at);
+                lip.push(polygon[at]);
+            }
+            if lip.len() > 1 {
+                return lip;
+            }
+        }
+    }
+    vec![upper]
+}
+
+/// The shortest distance between the segments `a`-`b` and `c`-`d` (0 where they cross).
+fn segment_distance(a: Point2<f64>, b: Point2<f64>, c: Point2<f64>, d: Point2<f64>) -> f64 {
+    let cross = |o: Point2<f64>, p: Point2<f64>, q: Point2<f64>| (p - o).perp(&(q - o));
+    let (d1, d2, d3, d4) = (cross(c, d, a), cross(c, d, b), cross(a, b, c), cross(a, b, d));
+    if d1 * d2 < 0.0 && d3 * d4 < 0.0 {
+        return 0.0;
+    }
+    distance_to_segment_m(&a, &c, &d)
+        .min(distance_to_segment_m(&b, &c, &d))
+        .min(distance_to_segment_m(&c, &a, &b))
+        .min(distance_to_segment_m(&d, &a, &b))
+}
+
 impl FlapBehindWing {
     /// From the wing section's polygons and the stowed flap section's polygons (station
     /// frame, m; closed, last point not repeated).
@@ -126,6 +190,7 @@ impl FlapBehindWing {
         let trailing_edge = upper_lip(wing).ok_or_else(|| empty("upper-skin edges of the wing section"))?;
         Ok(Self {
             trailing_edge,
+            lip: lip_from(wing, trailing_edge, LIP_MAX_DEPTH_CHORD_FRACTION * chord_m),
             flap_stowed: flap_stowed.to_vec(),
             chord_m,
         })
@@ -157,6 +222,13 @@ impl FlapBehindWing {
     /// The main-wing trailing edge used (station frame, m).
     pub fn trailing_edge(&self) -> Point2<f64> {
         self.trailing_edge
+    }
+
+    /// The lip the gap is measured from (station frame, m): the upper corner (the
+    /// [`Self::trailing_edge`]) first, then down a blunt trailing edge's base to its lower
+    /// corner; the upper corner alone for a sharp edge.
+    pub fn lip(&self) -> &[Point2<f64>] {
+        &self.lip
     }
 
     /// The local clean chord (m).
@@ -243,14 +315,31 @@ impl FlapBehindWing {
             .iter()
             .map(|polygon| polygon.iter().map(|p| turn * p).collect())
             .collect();
+        // The lip's corners inside the flap, each with its depth below the flap's outline.
+        let mut depth: f64 = 0.0;
+        for &corner in &self.lip {
+            if polygons_contain(&turned, &corner) {
+                let below = turned
+                    .iter()
+                    .flat_map(|polygon| polygon.iter().zip(polygon.iter().cycle().skip(1)))
+                    .map(|(a, b)| distance_to_segment_m(&corner, a, b))
+                    .fold(f64::INFINITY, f64::min);
+                depth = depth.max(below);
+            }
+        }
+        let lip_segments: Vec<(Point2<f64>, Point2<f64>)> = match self.lip.as_slice() {
+            [one] => vec![(*one, *one)],
+            lip => lip.windows(2).map(|w| (w[0], w[1])).collect(),
+        };
         for polygon in &turned {
             for (a, b) in polygon.iter().zip(polygon.iter().cycle().skip(1)) {
-                distance = distance.min(distance_to_segment_m(&te, a, b));
+                for &(c, d) in &lip_segments {
+                    distance = distance.min(segment_distance(*a, *b, c, d));
+                }
                 nose_x = nose_x.max(a.x);
             }
         }
-        let is_inside = polygons_contain(&turned, &te);
-        let gap_m = if is_inside { -distance } else { distance };
+        let gap_m = if depth > 0.0 { -depth } else { distance };
         let overlap_m = nose_x - te.x;
         GapOverlap {
             rotation_rad,

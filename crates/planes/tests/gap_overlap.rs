@@ -222,3 +222,29 @@ fn the_chord_runs_to_the_whole_flaps_trailing_edge() {
     assert_eq!(shorter.chord_m(), own.chord_m());
     assert!(matches!(own.with_chord_to(&[]), Err(Error::TooFew { .. })));
 }
+
+/// A shroud ending in a blunt base 2.5 mm high (issue 35 item 4): the gap is measured from
+/// the base's nearest point, here its lower corner, not from the upper corner; a cove wall
+/// 5 %c deep (the box wing above) is no lip.
+#[test]
+fn the_gap_is_measured_from_the_nearest_point_of_a_blunt_lip() {
+    let (upper, lower) = (Point2::new(0.5, 0.1), Point2::new(0.5, 0.0975));
+    let wing = vec![vec![
+        Point2::new(1.0, 0.0),
+        Point2::new(2.0, 0.0),
+        Point2::new(2.0, 0.12),
+        upper,
+        lower,
+        Point2::new(1.0, 0.0975),
+    ]];
+    let (centre, r) = (Point2::new(0.45, 0.0), 0.05);
+    let measure = FlapBehindWing::new(&wing, &disc(centre, r, 4000)).unwrap();
+    assert_eq!(measure.trailing_edge(), upper);
+    assert_eq!(measure.lip(), &[upper, lower]);
+    let gap = measure.at_rotation(0.0).gap_m;
+    let from_lower = (lower - centre).norm() - r;
+    assert!((gap - from_lower).abs() < 1e-6, "{gap} against {from_lower}");
+    assert!((upper - centre).norm() - r - gap > 2e-3);
+    let boxed = FlapBehindWing::new(&self::wing(0.5, 0.0), &disc(centre, r, 64)).unwrap();
+    assert_eq!(boxed.lip(), &[Point2::new(0.5, 0.1)]);
+}

@@ -6,11 +6,18 @@
 //! pinned at both ends. Each span is then a simply supported beam, statically
 //! determinate: an element load between stations k and k+1 goes to those two by the
 //! lever rule, R_k = N (y_{k+1} - y) / (y_{k+1} - y_k), R_{k+1} = N (y - y_k) / (y_{k+1} - y_k).
-//! Loads outboard of the end stations go to the two end stations as an overhang (the
-//! nearer reaction exceeds N, the farther is negative). For two stations this is the
-//! exact simple-beam solution; for n > 2 it ignores the continuity of a real one-piece
-//! flap over interior supports (a continuous beam would load interior supports about
-//! 25 % more, three-moment equation). Forces and moments balance exactly either way.
+//! Loads outboard of the end stations (the flap's overhangs) go wholly to the nearer end
+//! station: the tributary rule, each station carrying what lies between it and its
+//! neighbours' lever points and the overhang beyond it. Every element's load is then split
+//! into shares in [0, 1], so no station carries more than the whole flap and none a
+//! negative share, however close two stations stand. (An earlier rule carried the overhang
+//! as a rigid beam over the end span, the nearer reaction above N and the farther negative:
+//! two stations 1 mm apart under a 13.4 m² flap gave shares of +-39,775 m².) The forces
+//! balance exactly; the overhang's moment about the end station is not passed to its
+//! neighbour (the flap's spanwise bending over the end span is not modelled). For two
+//! stations with no overhang this is the exact simple-beam solution; for n > 2 it ignores
+//! the continuity of a real one-piece flap over interior supports (a continuous beam would
+//! load interior supports about 25 % more, three-moment equation).
 //!
 //! Chordwise (attachments): `003_...` eqs 2-3 as printed,
 //! N'_1,2 = N/2 +- (M + N (l/2 + d)) / 2, are dimensionally wrong (a moment divided by 2
@@ -83,10 +90,10 @@ pub fn distribute_to_stations(elements: &[ElementLoad], station_positions_m: &[f
         finite(format!("elements[{i}].normal_force_n"), e.normal_force_n)?;
         finite(format!("elements[{i}].chordwise_position_m"), e.chordwise_position_m)?;
         finite(format!("elements[{i}].pitching_moment_nm"), e.pitching_moment_nm)?;
-        // Segment [k, k+1] holding y; overhangs use the end segments.
+        // Segment [k, k+1] holding y; an overhang goes wholly to its end station.
         let k = station_positions_m.partition_point(|&s| s <= y).clamp(1, n - 1) - 1;
         let (y0, y1) = (station_positions_m[k], station_positions_m[k + 1]);
-        let inner_share = (y1 - y) / (y1 - y0);
+        let inner_share = ((y1 - y) / (y1 - y0)).clamp(0.0, 1.0);
         let outer_share = 1.0 - inner_share;
         // Moment about the hinge line of a force at chordwise position s (aft positive):
         // an upward force aft of the hinge pitches nose-down, hence -N s.

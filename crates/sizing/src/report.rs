@@ -9,15 +9,23 @@ use crate::torque_tube::TorqueTubeSizing;
 use crate::warning::SizingWarning;
 use crate::weights::{MassBreakdown, MassItem};
 
+/// What [`SizingTotals::mass_kg`] covers, in words for the report.
+pub const TOTAL_MASS_COVERS: &str =
+    "the sized members (rods, links, arms, beams, rails, hooks, struts) and torque tubes; not the screw jacks, gearboxes, fittings, bearings or the flaps";
+
 /// Whole-wing totals.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct SizingTotals {
-    /// Mass of rods and torque tubes, kg (screw jacks, gearboxes, bearings not modelled).
+    /// Mass of the sized members and torque tubes, kg ([`TOTAL_MASS_COVERS`]).
     pub mass_kg: f64,
-    /// Peak drive power, W (with the safety factor, see [`DriveDemand::peak_power_w`]).
-    pub peak_power_w: f64,
-    /// Work per deployment of the most demanding load case, J (no safety factor).
-    pub work_per_deployment_j: f64,
+    /// What `mass_kg` covers.
+    pub mass_covers: &'static str,
+    /// Peak drive power, W (with the safety factor, see [`DriveDemand::peak_power_w`]);
+    /// `None` (null) when no drive line was sized (a scene without a torque tube).
+    pub peak_power_w: Option<f64>,
+    /// Work per deployment of the most demanding load case, J (no safety factor); `None`
+    /// (null) when no drive line was sized.
+    pub work_per_deployment_j: Option<f64>,
 }
 
 /// Sizing results: per rod the governing case, radius and mass; per screw jack the peak
@@ -72,10 +80,11 @@ impl SizingReport {
             .collect();
         let totals = SizingTotals {
             mass_kg: masses.total_kg,
-            peak_power_w: drive.as_ref().map_or(0.0, |d| d.peak_power_w),
-            work_per_deployment_j: drive.as_ref().map_or(0.0, |d| {
-                d.work_per_deployment.iter().map(|w| w.work_j).fold(0.0, f64::max)
-            }),
+            mass_covers: TOTAL_MASS_COVERS,
+            peak_power_w: drive.as_ref().map(|d| d.peak_power_w),
+            work_per_deployment_j: drive
+                .as_ref()
+                .map(|d| d.work_per_deployment.iter().map(|w| w.work_j).fold(0.0, f64::max)),
         };
         Self {
             rods,

@@ -58,16 +58,23 @@ fn element_strategy() -> impl Strategy<Value = ElementLoad> {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(200))]
 
-    /// Station loads balance the element loads: sum of forces, rolling moment about
-    /// y = 0 and pitching moment about the hinge line (relative 1e-9 of the load scale).
+    /// Station loads balance the element loads: sum of forces, pitching moment about the
+    /// hinge line, and rolling moment about y = 0 with each overhang's load taken at its end
+    /// station (the overhang's own moment about it is not passed on: the tributary rule);
+    /// every station carries at most the sum of the loads' magnitudes (relative 1e-9 of
+    /// the load scale).
     #[test]
     fn station_equilibrium(elements in prop::collection::vec(element_strategy(), 1..12), n in 2usize..6) {
         let stations_m: Vec<f64> = (0..n).map(|i| 10.0 * i as f64 / (n - 1) as f64).collect();
         let s = distribute_to_stations(&elements, &stations_m).unwrap();
         let scale: f64 = elements.iter().map(|e| e.normal_force_n.abs() * 11.0 + e.pitching_moment_nm.abs()).sum::<f64>() + 1.0;
         let force: f64 = elements.iter().map(|e| e.normal_force_n).sum::<f64>() - s.iter().map(|x| x.normal_force_n).sum::<f64>();
-        let roll: f64 = elements.iter().map(|e| e.normal_force_n * e.span_position_m).sum::<f64>()
+        let roll: f64 = elements.iter().map(|e| e.normal_force_n * e.span_position_m.clamp(0.0, 10.0)).sum::<f64>()
             - s.iter().map(|x| x.normal_force_n * x.span_position_m).sum::<f64>();
+        let magnitude: f64 = elements.iter().map(|e| e.normal_force_n.abs()).sum();
+        for station in &s {
+            prop_assert!(station.normal_force_n.abs() <= magnitude * (1.0 + 1e-12));
+        }
         let pitch: f64 = elements.iter().map(|e| e.pitching_moment_nm - e.normal_force_n * e.chordwise_position_m).sum::<f64>()
             - s.iter().map(|x| x.moment_about_hinge_nm).sum::<f64>();
         prop_assert!(force.abs() <= 1e-9 * scale);
@@ -124,4 +131,36 @@ fn three_stations_pinned_segments() {
     assert_relative_eq!(s[0].normal_force_n, 200.0, max_relative = 1e-12);
     assert_relative_eq!(s[1].normal_force_n, 400.0, max_relative = 1e-12);
     assert_relative_eq!(s[2].normal_force_n, 200.0, max_relative = 1e-12);
+}
+
+/// Overhangs go to their end station (issue 35 item 2): two stations 1 mm apart inside a
+/// 10 m flap under 100 N/m share its 1000 N with no share negative or above the whole (the
+/// rigid overhang over the 1 mm end span gave about +-2.5 MN); stations at 2 and 8 m take
+/// their tributary spans, 0-5 m and 5-10 m.
+#[test]
+fn overhangs_go_to_their_end_station_and_no_share_leaves_zero_to_whole() {
+    let elements: Vec<ElementLoad> = (0..100)
+        .map(|i| ElementLoad {
+            span_position_m: 0.1 * f64::from(i) + 0.05,
+            normal_force_n: 10.0,
+            chordwise_position_m: 0.0,
+            pitching_moment_nm: 0.0,
+        })
+        .collect();
+    let close = distribute_to_stations(&elements, &[4.0, 4.001]).unwrap();
+    for s in &close {
+        assert!(
+            (0.0..=1000.0 + 1e-9).contains(&s.normal_force_n),
+            "{}",
+            s.normal_force_n
+        );
+    }
+    assert_relative_eq!(
+        close[0].normal_force_n + close[1].normal_force_n,
+        1000.0,
+        max_relative = 1e-12
+    );
+    let apart = distribute_to_stations(&elements, &[2.0, 8.0]).unwrap();
+    assert_relative_eq!(apart[0].normal_force_n, 500.0, max_relative = 1e-12);
+    assert_relative_eq!(apart[1].normal_force_n, 500.0, max_relative = 1e-12);
 }

@@ -62,4 +62,16 @@ fn report_totals_and_json() {
     assert_eq!(json["warnings"][0]["kind"], "rod_exceeds_envelope");
     assert_eq!(json["totals"]["work_per_deployment_j"], 120.0);
     assert!(json["rods"][0].get("warnings").is_none());
+    assert!(json["totals"]["mass_covers"].as_str().unwrap().contains("torque tubes"));
+}
+
+/// Without a drive line (no torque tube) the drive's power and work are unknown: null in
+/// the report, not 0 (issue 35 item 5).
+#[test]
+fn totals_without_a_drive_line_are_null_not_zero() {
+    let report = SizingReport::assemble(Vec::new(), Vec::new(), Vec::new(), None);
+    let json = serde_json::to_value(report).unwrap();
+    assert!(json["totals"]["peak_power_w"].is_null(), "{json}");
+    assert!(json["totals"]["work_per_deployment_j"].is_null(), "{json}");
+    assert_eq!(json["totals"]["mass_kg"], 0.0);
 }

@@ -22,9 +22,10 @@ pub struct DroppedHingeScene {
     /// fractions of the flap chord from its leading edge.
     #[serde(default = "default_attachments")]
     pub attachment_chord_fractions: [f64; 2],
-    /// Where the screw takes hold of the forward arm: 0 at the flap, 1 at the hinge.
-    #[serde(default = "half")]
-    pub actuator_attachment_fraction: f64,
+    /// Where the screw takes hold of the forward arm: 0 at the flap, 1 at the hinge, the
+    /// only attachment tried; absent: searched (0.5 first, then 0.65, 0.8, 0.35 and a horn
+    /// below the hinge at 1.4 and 1.8) for the first whose screw keeps clear.
+    pub actuator_attachment_fraction: Option<f64>,
     /// The screw's mount; absent: square to the arm at mid-travel, at the first of a few
     /// distances (from half a flap chord) and attachments that keep clear of the wing, the
     /// structure and the turning flap.
@@ -49,10 +50,6 @@ pub struct DroppedHingeScene {
 
 pub(super) fn default_attachments() -> [f64; 2] {
     [0.15, 0.5]
-}
-
-pub(super) fn half() -> f64 {
-    0.5
 }
 
 pub(super) fn default_transmission() -> f64 {
@@ -89,13 +86,15 @@ impl KindScene for DroppedHingeScene {
                 format!("= [{forward}, {aft}]: the aft attachment must lie at least 5 % of the flap chord behind the forward one"),
             );
         }
-        checker.in_range(
-            &format!("{path}.actuator_attachment_fraction"),
-            self.actuator_attachment_fraction,
-            0.05,
-            0.95,
-            false,
-        );
+        if let Some(fraction) = self.actuator_attachment_fraction {
+            checker.in_range(
+                &format!("{path}.actuator_attachment_fraction"),
+                fraction,
+                0.05,
+                0.95,
+                false,
+            );
+        }
         if let Some(mount) = &self.actuator_mount_m {
             checker.point_within(&format!("{path}.actuator_mount_m"), mount);
             if self.actuator == ActuatorChoice::Rotary {

@@ -9,7 +9,7 @@ use flapwright_mechanism::{FlapMechanism, FourBar, FourBarSpec};
 use nalgebra::Point2;
 use serde::Deserialize;
 
-use super::dropped_hinge::{default_transmission, half};
+use super::dropped_hinge::default_transmission;
 use super::{check_synthesised, KindScene, ScrewDriveScene, SynthesisContext};
 use crate::scene::KeyChecker;
 
@@ -28,9 +28,10 @@ pub struct FourBarScene {
     /// Smallest transmission angle over the deployment, of the loop and the screw, deg.
     #[serde(default = "default_transmission")]
     pub min_transmission_angle_deg: f64,
-    /// Where the screw takes hold of the crank: 0 at its fixed pivot, 1 at the flap.
-    #[serde(default = "half")]
-    pub actuator_attachment_fraction: f64,
+    /// Where the screw takes hold of the crank: 0 at its fixed pivot, 1 at the flap, the
+    /// only attachment tried; absent: searched (0.5 first, then 0.35, 0.7, 0.9 and a horn
+    /// beyond the fixed pivot at -0.4 and -0.7) for the first whose screw keeps clear.
+    pub actuator_attachment_fraction: Option<f64>,
     /// The screw's mount; absent: square to the crank at mid-travel, half a flap chord off.
     pub actuator_mount_m: Option<[f64; 2]>,
     /// The screw jack's thread and the shared drive.
@@ -61,13 +62,15 @@ impl KindScene for FourBarScene {
                 checker.point_within(&format!("{path}.{key}"), p);
             }
         }
-        checker.in_range(
-            &format!("{path}.actuator_attachment_fraction"),
-            self.actuator_attachment_fraction,
-            0.05,
-            1.0,
-            false,
-        );
+        if let Some(fraction) = self.actuator_attachment_fraction {
+            checker.in_range(
+                &format!("{path}.actuator_attachment_fraction"),
+                fraction,
+                0.05,
+                1.0,
+                false,
+            );
+        }
     }
 
     fn deflection_range(&self) -> Option<(f64, &'static str)> {

@@ -33,6 +33,13 @@ pub struct SettingPosition {
     /// synthesised to instead (m): the slot is sealed, a seal on the lip closing the rest.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub sealed_gap_m: Option<f64>,
+    /// How far the gap misses what the mechanism was synthesised to (% of the local chord;
+    /// positive: wider): the target, or the sealed gap where the setting is sealed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gap_miss_percent_chord: Option<f64>,
+    /// How far the overlap misses its target (% of the local chord; positive: larger).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub overlap_miss_percent_chord: Option<f64>,
 }
 
 /// The gap (m) a setting's mechanism is synthesised to for a target of `gap_percent` of
@@ -47,15 +54,36 @@ pub fn structural_gap_m(gap_percent: f64, chord_m: f64, sealed_gap_m: f64) -> (f
 }
 
 impl SettingPosition {
-    /// How far the gap and the overlap miss their targets (% of the local chord; positive:
-    /// larger than the target), where the scene gives targets.
+    /// The setting at `position`, its misses measured against the targets, and a sealed
+    /// gap against the sealed gap (a sealed slot is built to it, not to the smaller target).
+    pub fn new(
+        setting: &str,
+        deflection_deg: f64,
+        position: GapOverlap,
+        targets: (Option<f64>, Option<f64>),
+        sealed_gap_m: Option<f64>,
+        chord_m: f64,
+    ) -> Self {
+        let (target_gap_percent_chord, target_overlap_percent_chord) = targets;
+        let built_gap_percent = sealed_gap_m
+            .map(|gap| 100.0 * gap / chord_m)
+            .or(target_gap_percent_chord);
+        Self {
+            setting: setting.into(),
+            deflection_deg,
+            position,
+            target_gap_percent_chord,
+            target_overlap_percent_chord,
+            sealed_gap_m,
+            gap_miss_percent_chord: built_gap_percent.map(|t| position.gap_percent_chord - t),
+            overlap_miss_percent_chord: target_overlap_percent_chord.map(|t| position.overlap_percent_chord - t),
+        }
+    }
+
+    /// How far the gap and the overlap miss what the setting was built to (% of the local
+    /// chord; positive: larger), where the scene gives targets.
     pub fn misses(&self) -> (Option<f64>, Option<f64>) {
-        (
-            self.target_gap_percent_chord
-                .map(|t| self.position.gap_percent_chord - t),
-            self.target_overlap_percent_chord
-                .map(|t| self.position.overlap_percent_chord - t),
-        )
+        (self.gap_miss_percent_chord, self.overlap_miss_percent_chord)
     }
 }
 
@@ -291,14 +319,14 @@ pub fn synthesis_context(
         structure: placed
             .polygons_of(|name| name != "wing" && !flaps.iter().any(|f| f.owns_part(name)))
             .into(),
-        lip: None,
+        lip: Vec::new(),
         lip_clearance_m: 0.0,
     };
     let Some(measure) = flap_behind_wing(placed, &flap.name)? else {
         return Ok((SynthesisContext::default(), None));
     };
     let outline = StationOutline {
-        lip: Some(measure.trailing_edge()),
+        lip: measure.lip().to_vec(),
         lip_clearance_m: flap.settings.sealed_gap_m(required_clearance_m) - required_clearance_m,
         ..outline
     };
@@ -372,24 +400,7 @@ fn flap_position(
         ("landing", flap.settings.landing_deg),
     ];
     let mut aft_settings = Vec::new();
-    let aft_measure = match &record.placed {
-        Some(placed) if flap.aft_element.is_some() => {
-            let aft_name = flapwright_geom::parts::aft_element_name(&flap.name);
-            let (main, aft) = (
-                placed.polygons_of(|name| name == flap.name),
-                placed.polygons_of(|name| name == aft_name),
-            );
-            if main.is_empty() || aft.is_empty() {
-                None
-            } else {
-                Some(
-                    FlapBehindWing::new(&main, &aft)
-                        .with_context(|| format!("second slot of flap {} at station {}", flap.name, record.station))?,
-                )
-            }
-        }
-        _ => None,
-    };
+    let aft_measure = second_slot(flap, record)?;
     let aft_body = flapwright_mechanism::seam::aft_flap_body(seam.bodies());
     let settings = named
         .into_iter()
@@ -416,14 +427,14 @@ fn flap_position(
                     structural_gap_m(gap, measure.chord_m(), flap.settings.sealed_gap_m(required_clearance_m));
                 sealed.then_some(gap_m)
             });
-            Ok(SettingPosition {
-                sealed_gap_m,
-                setting: setting.into(),
+            Ok(SettingPosition::new(
+                setting,
                 deflection_deg,
-                position: measure.at_displacement(&pose.flap),
-                target_gap_percent_chord,
-                target_overlap_percent_chord,
-            })
+                measure.at_displacement(&pose.flap),
+                (target_gap_percent_chord, target_overlap_percent_chord),
+                sealed_gap_m,
+                measure.chord_m(),
+            ))
         })
         .collect::<Result<Vec<_>>>()?;
     let te = measure.trailing_edge();
@@ -443,23 +454,62 @@ fn flap_position(
     }))
 }
 
+/// A two-element flap's second slot at `record`'s station: the aft element behind the
+/// main element (None for a one-element flap or an unplaced station).
+fn second_slot(flap: &FlapScene, record: &StationRecord) -> Result<Option<FlapBehindWing>> {
+    Ok(match &record.placed {
+        Some(placed) if flap.aft_element.is_some() => {
+            let aft_name = flapwright_geom::parts::aft_element_name(&flap.name);
+            let (main, aft) = (
+                placed.polygons_of(|name| name == flap.name),
+                placed.polygons_of(|name| name == aft_name),
+            );
+            if main.is_empty() || aft.is_empty() {
+                None
+            } else {
+                Some(
+                    FlapBehindWing::new(&main, &aft)
+                        .with_context(|| format!("second slot of flap {} at station {}", flap.name, record.station))?,
+                )
+            }
+        }
+        _ => None,
+    })
+}
+
 /// Fills each deployment sample's gap and overlap, where the mechanism puts the flap at
-/// that sample's input.
+/// that sample's input, and the second slot's where the kind moves an aft element.
 pub fn annotate_samples(
     mechanism: &StationRecord,
     measure: &FlapBehindWing,
     report: &mut crate::pipeline::mechanisms::MechanismReport,
+    flaps: &[FlapScene],
 ) -> Result<()> {
+    let flap = mechanism
+        .flap
+        .as_ref()
+        .and_then(|name| flaps.iter().find(|f| &f.name == name));
+    let second = match flap {
+        Some(flap) => second_slot(flap, mechanism)?,
+        None => None,
+    };
+    let aft_body = flapwright_mechanism::seam::aft_flap_body(mechanism.mechanism.bodies());
+    let gap_overlap = |at: &flapwright_planes::GapOverlap| flapwright_mechanism::FlapGapOverlap {
+        gap_m: at.gap_m,
+        gap_percent_chord: at.gap_percent_chord,
+        overlap_m: at.overlap_m,
+        overlap_percent_chord: at.overlap_percent_chord,
+    };
     for case in &mut report.load_cases {
         for sample in &mut case.samples {
             let pose = mechanism.mechanism.pose(sample.input)?;
             let at = measure.at_displacement(&pose.flap);
-            sample.flap_position = Some(flapwright_mechanism::FlapGapOverlap {
-                gap_m: at.gap_m,
-                gap_percent_chord: at.gap_percent_chord,
-                overlap_m: at.overlap_m,
-                overlap_percent_chord: at.overlap_percent_chord,
-            });
+            sample.flap_position = Some(gap_overlap(&at));
+            if let (Some(aft), Some(slot), Some(k)) = (&mut sample.aft_element, &second, aft_body) {
+                aft.slot = Some(gap_overlap(
+                    &slot.at_displacement(&(pose.flap.inverse() * pose.bodies[k])),
+                ));
+            }
         }
     }
     Ok(())

@@ -3,8 +3,10 @@
 //! shared among the flap's stations by the lever rule of
 //! [`flapwright_sizing::distribute_to_stations`] (each span between neighbouring stations
 //! a simply supported beam, overhangs to the end stations; one station takes it all), and
-//! applied at each station's flap quarter chord along the flap's normal (`003_...` section
-//! 4.1: "the resultant flap load distribution acts on the quarter-chord line").
+//! applied at each station's flap quarter chord normal to the flap's chord line (`003_...`
+//! eq. 1 and section 4.1: "the resultant flap load distribution acts on the quarter-chord
+//! line"; the chord of a flap set at its own incidence leans from the station's x axis, by
+//! 4-5.6 deg on `transport-flap`). The flap's weight takes the case's load factor too.
 //!
 //! C_N is the same along the span, so a station's share is C_N(δ) q n times its share of
 //! the flap's area, found once with unit loads c_i b_i. Simplification: each station's
@@ -16,7 +18,7 @@ use flapwright_geom::parts::WingModel;
 use flapwright_mechanism::outline::{extent_x, vertical_span};
 use flapwright_mechanism::{ExternalMoment, FlapNormalForce, LoadCase};
 use flapwright_sizing::{distribute_to_stations, ElementLoad};
-use nalgebra::Point2;
+use nalgebra::{Point2, Vector2};
 use serde::Serialize;
 
 use crate::pipeline::mechanisms::StationRecord;
@@ -34,6 +36,9 @@ pub struct FlapLoadShare {
     pub flap_area_share_m2: f64,
     /// The flap's quarter-chord point in the station plane, stowed (station frame, m).
     pub quarter_chord_st_m: [f64; 2],
+    /// The unit upward normal of the stowed flap's chord line (station frame): the normal
+    /// force's direction (`003_...` eq. 1).
+    pub chord_normal_st: [f64; 2],
 }
 
 /// Each placed record's share of its flap's area and the point its share acts at.
@@ -81,13 +86,31 @@ pub fn shares(scene: &Scene, model: &WingModel, records: &mut [StationRecord]) -
             let (te, le) = extent_x(&polygons).context("the station plane misses its flap")?;
             let x = le - 0.25 * (le - te);
             let (lo, hi) = vertical_span(&polygons, x).context("the station plane misses its flap")?;
+            let normal = chord_normal(&polygons).context("the station plane misses its flap")?;
             record.flap_load_share = Some(FlapLoadShare {
                 flap_area_share_m2: share,
                 quarter_chord_st_m: [x, 0.5 * (lo + hi)],
+                chord_normal_st: [normal.x, normal.y],
             });
         }
     }
     Ok(())
+}
+
+/// The unit upward normal of a flap section's chord line: the chord runs from the trailing
+/// edge (the aft-most point) to the point of the section farthest from it (the leading
+/// edge, as an airfoil's chord is defined), and the normal is that turned a quarter turn
+/// counter-clockwise. `None` for an empty or degenerate section.
+pub fn chord_normal(polygons: &[Vec<Point2<f64>>]) -> Option<Vector2<f64>> {
+    let points = || polygons.iter().flatten();
+    let trailing = points().min_by(|a, b| a.x.total_cmp(&b.x))?;
+    let leading = points().max_by(|a, b| {
+        (*a - trailing)
+            .norm_squared()
+            .total_cmp(&(*b - trailing).norm_squared())
+    })?;
+    let chord = (leading - trailing).try_normalize(0.0)?;
+    Some(Vector2::new(-chord.y, chord.x))
 }
 
 /// The load case `case` at `record`: its moments, or its flight condition's normal force on
@@ -108,6 +131,7 @@ pub fn load_case(case: &LoadCaseScene, record: &StationRecord) -> LoadCase {
             coefficients: rows.iter().map(|[deg, c]| (deg.to_radians(), *c)).collect(),
             newtons_per_coefficient: q * case.load_factor.unwrap_or(1.0) * share.flap_area_share_m2,
             at_stowed_m: Point2::new(share.quarter_chord_st_m[0], share.quarter_chord_st_m[1]),
+            normal_stowed: Vector2::new(share.chord_normal_st[0], share.chord_normal_st[1]),
         }),
         _ => None,
     };
@@ -116,5 +140,6 @@ pub fn load_case(case: &LoadCaseScene, record: &StationRecord) -> LoadCase {
         external_moment,
         include_inertia: false,
         flap_normal_force,
+        load_factor: case.load_factor.unwrap_or(1.0),
     }
 }

@@ -1,10 +1,13 @@
 //! Mechanism parts as files: every solid of every station's mechanism, as the interference
 //! check sweeps it (`flapwright_interference::station_parts`: capsules and balls as parry
 //! primitives, tracks as tube meshes), tessellated in the aircraft frame with the
-//! mechanism stowed, with its mass properties at the sizing material's density (the
-//! actuator's solids at `sizing.screw_material`, every other solid at
-//! `sizing.link_material`: the solids are the drawn envelopes, so these masses are upper
-//! bounds of the sized members').
+//! mechanism stowed, with its mass properties: a member the sizing stage sized carries its
+//! sized mass (the drawn envelope's inertia scaled by the mass ratio: exact for the
+//! length-dominated part of a slender member, whose sized bar is the drawn one thinner or
+//! thicker), in every output (report, URDF, glTF); an unsized solid (fittings, carriages,
+//! jack bodies, and every solid when sizing did not run) its drawn envelope at the sizing
+//! material's density (the actuator's solids at `sizing.screw_material`, every other solid
+//! at `sizing.link_material`), marked [`MassBasis::Drawn`].
 
 use anyhow::{Context, Result};
 use flapwright_geom::TriMesh;
@@ -18,6 +21,16 @@ use serde::Serialize;
 use crate::output::StagedDir;
 use crate::pipeline::mechanisms::StationRecord;
 use crate::scene::{Scene, StlSetting};
+
+/// Where a solid's mass comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum MassBasis {
+    /// The sizing stage's mass of the member (`sizing.rods`).
+    Sized,
+    /// The drawn envelope at the material's density: not sized.
+    Drawn,
+}
 
 /// One solid of one station's mechanism.
 pub struct MechanismSolid {
@@ -36,6 +49,8 @@ pub struct MechanismSolid {
     pub mesh_ac: TriMesh,
     /// Mass properties, aircraft frame, there.
     pub inertia: RigidInertia,
+    /// Where its mass comes from.
+    pub mass_basis: MassBasis,
     /// How it moves with the drive fraction (the check's motion).
     pub motion: Arc<dyn Motion>,
 }
@@ -56,8 +71,10 @@ pub struct MechanismPartReport {
     pub vertices: usize,
     /// Triangle count.
     pub triangles: usize,
-    /// Mass at the sizing material's density, kg.
+    /// Mass, kg: the sized member's, or the drawn envelope's ([`Self::mass_basis`]).
     pub mass_kg: f64,
+    /// Where the mass comes from: `sized` or `drawn`.
+    pub mass_basis: MassBasis,
     /// STL file, aircraft frame, stowed (relative to the output folder).
     pub stl_file: Option<String>,
 }
@@ -87,8 +104,14 @@ pub fn setting_fractions(scene: &Scene, records: &[StationRecord], setting: StlS
 }
 
 /// Every station's solids, each at its station's drive fraction in `fractions` (one per
-/// record; mass properties there too); all 0: stowed.
-pub fn build(scene: &Scene, records: &[StationRecord], fractions: &[f64]) -> Result<Vec<MechanismSolid>> {
+/// record; mass properties there too); all 0: stowed. A solid that `sized` holds a rod of
+/// carries that rod's mass.
+pub fn build(
+    scene: &Scene,
+    records: &[StationRecord],
+    fractions: &[f64],
+    sized: Option<&flapwright_sizing::SizingReport>,
+) -> Result<Vec<MechanismSolid>> {
     let screw = crate::pipeline::sizing::material(scene, &scene.sizing.screw_material)?;
     let link = crate::pipeline::sizing::material(scene, &scene.sizing.link_material)?;
     let mut solids = Vec::new();
@@ -114,6 +137,19 @@ pub fn build(scene: &Scene, records: &[StationRecord], fractions: &[f64]) -> Res
                 .part
                 .compute_mass_properties_ac(density, fraction)?
                 .with_context(|| format!("{name} holds no volume"))?;
+            let solid_name = name.strip_prefix(&format!("{}.", record.station)).unwrap_or(&name);
+            let sized_mass = sized
+                .and_then(|s| {
+                    s.rods
+                        .iter()
+                        .find(|r| r.station == record.station && r.name == solid_name)
+                })
+                .map(|rod| rod.mass_kg)
+                .filter(|m| m.is_finite() && *m > 0.0);
+            let (scale, mass_basis) = match sized_mass {
+                Some(mass) => (mass / properties.mass_kg, MassBasis::Sized),
+                None => (1.0, MassBasis::Drawn),
+            };
             solids.push(MechanismSolid {
                 station: record.station.clone(),
                 body: part.body,
@@ -121,10 +157,11 @@ pub fn build(scene: &Scene, records: &[StationRecord], fractions: &[f64]) -> Res
                 role: part.role,
                 mesh_ac: part.part.compute_mesh_ac(fraction)?,
                 inertia: RigidInertia {
-                    mass_kg: properties.mass_kg,
+                    mass_kg: properties.mass_kg * scale,
                     centre_of_mass_ac_m: properties.centre_of_mass,
-                    inertia_ac_kg_m2: properties.inertia_kg_m2,
+                    inertia_ac_kg_m2: properties.inertia_kg_m2 * scale,
                 },
+                mass_basis,
                 motion: Arc::clone(&part.part.motion),
                 name,
             });
@@ -155,6 +192,7 @@ pub fn write_stl(solids: &[MechanismSolid], write_stl: bool, out: &StagedDir) ->
                 vertices: solid.mesh_ac.vertices.len(),
                 triangles: solid.mesh_ac.triangles.len(),
                 mass_kg: solid.inertia.mass_kg,
+                mass_basis: solid.mass_basis,
                 stl_file,
             })
         })

@@ -319,6 +319,7 @@ fn degeneracies(mechanism: &dyn FlapMechanism, path: &str, keys: &str) -> Vec<Pr
         external_moment: ExternalMoment::Constant(0.0),
         include_inertia: false,
         flap_normal_force: None,
+        load_factor: 1.0,
     };
     let quantity = mechanism.input_range().quantity;
     let probe = match sweep_deployment(mechanism, 2, &unloaded) {
@@ -382,6 +383,7 @@ pub fn weight_only() -> LoadCase {
         external_moment: ExternalMoment::Constant(0.0),
         include_inertia: false,
         flap_normal_force: None,
+        load_factor: 1.0,
     }
 }
 

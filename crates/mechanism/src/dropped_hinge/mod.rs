@@ -80,8 +80,8 @@ pub enum DroppedHingeActuator {
     ScrewJack {
         /// Where the screw takes hold of the forward arm: 0 at the forward attachment, 1 at
         /// the hinge (`003_...`: "between the forward flap attachment and the lower
-        /// mechanism hinge").
-        attachment_fraction: f64,
+        /// mechanism hinge"); `None`: searched ([`crate::placement::place_screw_jack`]).
+        attachment_fraction: Option<f64>,
         /// The screw's mount; `None`: square to the arm at mid-travel, at the first of a
         /// few standoffs from `standoff_m` and attachments from `attachment_fraction` whose
         /// screw and jack body keep clear of the wing, the structure and the turning flap

@@ -61,15 +61,13 @@ pub(super) fn screw_jack_layout(
         )
     })?;
     let min_transmission = drive.min_transmission_rad(turn, TRANSMISSION_SAMPLES);
-    if !drive.clear_of_toggles(turn, 1e-3) || min_transmission < spec.min_transmission_angle_rad {
-        return Err(failure(
-            SynthesisDefect::Toggle,
-            format!(
-                "the screw's transmission angle falls to {:.1} deg (minimum {:.1} deg); move the actuator mount or its attachment",
-                min_transmission.to_degrees(),
-                spec.min_transmission_angle_rad.to_degrees()
-            ),
-        ));
+    if let Some(problem) = drive.transmission_problem(
+        turn,
+        spec.min_transmission_angle_rad,
+        TRANSMISSION_SAMPLES,
+        "forward arm",
+    ) {
+        return Err(failure(SynthesisDefect::Toggle, problem));
     }
     let stroke_m = [drive.stroke_at(0.0), drive.stroke_at(turn)];
     let (screw, nominal_speed_mps) = screw_drive.screw_for(stroke_m[1] - stroke_m[0]);

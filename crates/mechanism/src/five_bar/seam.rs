@@ -397,7 +397,8 @@ impl FlapMechanism for FiveBarKind {
         let at = |name: &str| point_named(&pose.points, name);
         let fraction = self.input_range().fraction(input).clamp(0.0, 1.0);
         let wrench = FlapWrench::new(&self.main_flap_mass(), &pose.flap, load, fraction);
-        let secondary_weight = Vector2::new(0.0, -self.loaded.loads.gravity_mps2) * self.loaded.loads.secondary_mass_kg;
+        let secondary_weight =
+            Vector2::new(0.0, -self.loaded.loads.gravity_mps2) * self.loaded.loads.secondary_mass_kg * load.load_factor;
         let secondary_centre = Point2::from((at("F").coords + at("L").coords) * 0.5);
         // Secondary flap: moments about F give the E-H link's force along u_eh (on the flap).
         let u_eh = (at("H") - at("E")).normalize();

@@ -69,8 +69,9 @@ pub struct FourBarSpec {
     pub follow: Option<FollowStation>,
     /// Smallest transmission angle over the deployment, of the loop and of the drive (rad).
     pub min_transmission_angle_rad: f64,
-    /// Where the screw takes hold of the crank: 0 at O1, 1 at A1.
-    pub actuator_attachment_fraction: f64,
+    /// Where the screw takes hold of the crank: 0 at O1, 1 at A1; `None`: searched
+    /// ([`crate::placement::place_screw_jack`]).
+    pub actuator_attachment_fraction: Option<f64>,
     /// The screw's mount; `None`: square to the crank at mid-travel.
     pub actuator_mount: Option<Point2<f64>>,
     /// Distance from the attachment's mid-travel position to a default mount (m).

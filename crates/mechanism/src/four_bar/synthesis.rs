@@ -262,15 +262,10 @@ impl FourBar {
             )
         })?;
         let drive_min = drive.min_transmission_rad(travel, LOOP_SAMPLES);
-        if !drive.clear_of_toggles(travel, 1e-3) || drive_min < spec.min_transmission_angle_rad {
-            return Err(failure(
-                SynthesisDefect::Toggle,
-                format!(
-                    "the screw's transmission angle on the crank falls to {:.1} deg (minimum {:.1} deg); move the actuator mount or its attachment",
-                    drive_min.to_degrees(),
-                    spec.min_transmission_angle_rad.to_degrees()
-                ),
-            ));
+        if let Some(problem) =
+            drive.transmission_problem(travel, spec.min_transmission_angle_rad, LOOP_SAMPLES, "crank")
+        {
+            return Err(failure(SynthesisDefect::Toggle, problem));
         }
         let stroke_m = [drive.stroke_at(0.0), drive.stroke_at(travel)];
         let (screw, nominal_speed_mps) = spec.screw_drive.screw_for(stroke_m[1] - stroke_m[0]);

@@ -131,9 +131,11 @@ pub(super) fn bodies_and_joints(
         Joint::new(
             "G",
             "the flap's roller in the lead-in (stowed: straight along the rail) and then the hook",
-            JointGeometry::PinInStraightSlot {
+            JointGeometry::PinInHookedSlot {
                 pin: g,
                 direction: rail.d,
+                lead_m: rail.lead_m,
+                centre: rail.k,
             },
             [JointEnd::Body(FLAP), JointEnd::Body(SUPPORT)],
             &[("roller", "hook"), ("fitting", "hook")],

@@ -22,9 +22,11 @@ pub struct StationOutline {
     pub flap: Polygons,
     /// Fixed structure the mechanism must keep clear of: spars, torque tube.
     pub structure: Polygons,
-    /// The main wing's trailing edge (the cove's upper lip) the gap is measured from; the
-    /// flap must not pass through it between the settings.
-    pub lip: Option<Point2<f64>>,
+    /// The main wing's trailing edge the gap is measured from: the cove's upper lip, then
+    /// down a blunt edge's base to its lower corner (`flapwright_planes`'s
+    /// `FlapBehindWing::lip`); empty without one. The flap must not pass through it
+    /// between the settings.
+    pub lip: Vec<Point2<f64>>,
     /// The clearance the flap keeps from the lip between the settings (m; the scene's
     /// required clearance; 0: it may touch).
     pub lip_clearance_m: f64,
@@ -205,13 +207,17 @@ impl StationOutline {
 
     /// True when the flap moved by `flap` passes through the wing's trailing edge (the lip)
     /// or closer to it than [`Self::lip_clearance_m`], less `tolerance_m` (a gap of exactly
-    /// the clearance at a setting passes within rounding). False without a lip.
+    /// the clearance at a setting passes within rounding). False without a lip. The lip's
+    /// corners are checked, not the base between them: on a base of height h the nearest
+    /// point may lie between them, at most h²/(8 clearance) nearer (0.09 mm for a 2.5 mm
+    /// base and a 9 mm slot).
     ///
     /// One pass over the flap's edges (every deployment sample of every candidate calls it):
     /// an edge nearer than the clearance ends it, else the even-odd count says inside.
     pub fn flap_near_lip(&self, flap: &nalgebra::Isometry2<f64>, tolerance_m: f64) -> bool {
-        self.lip.is_some_and(|lip| {
-            let at = flap.inverse() * lip;
+        let back = flap.inverse();
+        self.lip.iter().any(|&lip| {
+            let at = back * lip;
             self.flap.nearer_than(at, self.lip_clearance_m - tolerance_m) || self.flap.inside(at)
         })
     }
@@ -369,7 +375,7 @@ mod tests {
         // (no clearance asked).
         let outline = StationOutline {
             flap: square.clone().into(),
-            lip: Some(Point2::new(0.5, 1.0)),
+            lip: vec![Point2::new(0.5, 1.0)],
             ..Default::default()
         };
         let shifted = |d: f64| nalgebra::Isometry2::translation(0.0, d);

@@ -172,6 +172,7 @@ fn add_station(
             JointGeometry::Prismatic { origin, .. } => ("prismatic", origin),
             JointGeometry::PinInCircularSlot { pin, .. } => ("pin-in-circular-slot", pin),
             JointGeometry::PinInStraightSlot { pin, .. } => ("pin-in-straight-slot", pin),
+            JointGeometry::PinInHookedSlot { pin, .. } => ("pin-in-hooked-slot", pin),
         };
         cut_joints.push(CutJoint {
             station: station.name.clone(),

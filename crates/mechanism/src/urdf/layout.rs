@@ -82,7 +82,9 @@ fn joint_frame(geometry: &JointGeometry) -> Option<Isometry2<f64>> {
             Translation2::from(origin.coords),
             UnitComplex::new(direction.y.atan2(direction.x)),
         )),
-        JointGeometry::PinInCircularSlot { .. } | JointGeometry::PinInStraightSlot { .. } => None,
+        JointGeometry::PinInCircularSlot { .. }
+        | JointGeometry::PinInStraightSlot { .. }
+        | JointGeometry::PinInHookedSlot { .. } => None,
     }
 }
 

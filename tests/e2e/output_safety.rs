@@ -225,3 +225,39 @@ fn json_prints_an_error_object_on_every_failure() {
     let error: serde_json::Value = serde_json::from_slice(&missing.stdout).expect("JSON");
     assert!(error["error"].as_str().unwrap().contains("missing.toml"));
 }
+
+/// Issue 35 item 13: the scene file is read no further than the size limit: `/dev/zero`
+/// (endless) is refused at once, in little memory (the run gets 1 GB of address space; the
+/// earlier code read on until the allocator gave up).
+#[cfg(target_os = "linux")]
+#[test]
+fn an_endless_scene_file_is_read_no_further_than_the_limit() {
+    use std::io::Read;
+    use wait_timeout::ChildExt;
+    let dir = tempfile::tempdir().unwrap();
+    let mut child = std::process::Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -v 1000000 && exec \"$0\" design /dev/zero --out out")
+        .arg(env!("CARGO_BIN_EXE_flapwright"))
+        .current_dir(dir.path())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let status = match child.wait_timeout(std::time::Duration::from_secs(60)).unwrap() {
+        Some(status) => status,
+        None => {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("reading /dev/zero as a scene ran past 60 s");
+        }
+    };
+    let mut message = String::new();
+    child.stderr.take().unwrap().read_to_string(&mut message).unwrap();
+    assert_eq!(status.code(), Some(2), "{message}");
+    assert!(
+        message.contains("/dev/zero") && message.contains("at most 1048576 bytes"),
+        "{message}"
+    );
+    assert!(!dir.path().join("out").exists());
+}

@@ -412,10 +412,13 @@ fn read_scene_text(path: Option<&Path>) -> Result<(String, Option<PathBuf>), Fai
     match path {
         None => Ok((DEFAULT_SCENE_TOML.to_string(), None)),
         Some(path) => {
-            let bytes = std::fs::read(path).map_err(|e| Failure {
-                code: EXIT_BAD_INPUT,
-                error: anyhow::Error::new(e).context(format!("reading scene file {}", path.display())),
-            })?;
+            // No further than the size limit: an endless file (`/dev/zero`) is refused at once.
+            let bytes = std::fs::File::open(path)
+                .and_then(Scene::read_bytes)
+                .map_err(|e| Failure {
+                    code: EXIT_BAD_INPUT,
+                    error: anyhow::Error::new(e).context(format!("reading scene file {}", path.display())),
+                })?;
             let text = Scene::decode(bytes, &path.display().to_string()).map_err(|e| Failure {
                 code: EXIT_BAD_INPUT,
                 error: anyhow::Error::new(e).context(format!("invalid scene {}", path.display())),

@@ -261,3 +261,44 @@ fn an_endless_scene_file_is_read_no_further_than_the_limit() {
     );
     assert!(!dir.path().join("out").exists());
 }
+
+/// Issue 35 item 20: every subcommand's default output folder is ignored by git, and none
+/// is tracked. The defaults are read from the binary's own `--help`.
+#[test]
+fn default_output_folders_are_ignored_and_not_tracked() {
+    let root = repo_root();
+    let ignore = fs::read_to_string(root.join(".gitignore")).unwrap();
+    let mut defaults = Vec::new();
+    for command in ["design", "export", "study", "check"] {
+        let help = run_flapwright(&root, &[command, "--help"]);
+        let text = String::from_utf8_lossy(&help.stdout).into_owned();
+        let out = text
+            .split("--out <OUT>")
+            .nth(1)
+            .and_then(|rest| rest.split("[default: ").nth(1))
+            .and_then(|rest| rest.split(']').next())
+            .unwrap_or_else(|| panic!("{command} --help names the default --out: {text}"))
+            .to_string();
+        defaults.push(out);
+    }
+    for out in &defaults {
+        assert!(
+            ignore.lines().any(|line| line.trim() == format!("/{out}")),
+            ".gitignore lists /{out}"
+        );
+        // Only where git and the repository's history are at hand (not in a source archive).
+        if let Ok(listed) = std::process::Command::new("git")
+            .args(["ls-files", "--", out])
+            .current_dir(&root)
+            .output()
+        {
+            if listed.status.success() {
+                assert!(
+                    listed.stdout.is_empty(),
+                    "{out} is tracked: {}",
+                    String::from_utf8_lossy(&listed.stdout)
+                );
+            }
+        }
+    }
+}

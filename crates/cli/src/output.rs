@@ -16,7 +16,7 @@
 //!   is gone) are removed by the next run to the same `--out` and never block it.
 
 use std::fs;
-use std::io;
+use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::time::{SystemTime, UNIX_EPOCH};
 
@@ -284,13 +284,22 @@ pub fn check_writable_file(
 }
 
 /// Writes `contents` to `path` through a temporary file and a rename, so a reader never
-/// sees half a file.
+/// sees half a file; the temporary file is removed when any step fails (a full disk).
 pub fn write_file_atomically(path: &Path, contents: &[u8]) -> io::Result<()> {
+    write_atomically_with(path, |file| file.write_all(contents))
+}
+
+/// As [`write_file_atomically`], the contents written by `write`.
+fn write_atomically_with(path: &Path, write: impl FnOnce(&mut fs::File) -> io::Result<()>) -> io::Result<()> {
     let temporary = parent_of(path).join(format!(".{}.partial-{}", folder_name(path), run_tag()));
-    fs::write(&temporary, contents)?;
-    fs::rename(&temporary, path).inspect_err(|_| {
+    let mut file = fs::File::create_new(&temporary)?;
+    let written = write(&mut file).and_then(|()| file.sync_all());
+    drop(file);
+    let result = written.and_then(|()| fs::rename(&temporary, path));
+    if result.is_err() {
         let _ = fs::remove_file(&temporary);
-    })
+    }
+    result
 }
 
 /// The folder a symbolic link points to (followed, so the link itself is never replaced);
@@ -505,6 +514,15 @@ mod tests {
         staged.commit()
     }
 
+    fn names_in(dir: &Path) -> Vec<String> {
+        let mut names: Vec<String> = fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    }
+
     #[test]
     fn an_output_is_replaced_only_while_its_manifest_vouches_for_every_file() {
         let dir = tempfile::tempdir().unwrap();
@@ -547,5 +565,24 @@ mod tests {
             .collect();
         left.sort();
         assert_eq!(left, [live.as_str(), ".out.unrelated", "out"]);
+    }
+
+    /// Issue 35 item 12: a write that fails half-way (a full disk) leaves no temporary file,
+    /// and the file it was to replace as it was.
+    #[test]
+    fn a_failed_write_leaves_no_partial_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("j.xml");
+        fs::write(&path, "earlier").unwrap();
+        let failed = write_atomically_with(&path, |file| {
+            file.write_all(b"<testsuites")?;
+            Err(io::Error::new(io::ErrorKind::StorageFull, "no space left on device"))
+        });
+        assert!(failed.is_err());
+        assert_eq!(names_in(dir.path()), ["j.xml"]);
+        assert_eq!(fs::read_to_string(&path).unwrap(), "earlier");
+        write_file_atomically(&path, b"later").unwrap();
+        assert_eq!(names_in(dir.path()), ["j.xml"]);
+        assert_eq!(fs::read_to_string(&path).unwrap(), "later");
     }
 }

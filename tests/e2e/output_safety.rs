@@ -302,3 +302,110 @@ fn default_output_folders_are_ignored_and_not_tracked() {
         }
     }
 }
+
+/// The names in `dir`, sorted.
+fn names_in(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+/// Issue 35 item 10: `--out ./out/../out` names `out`: it is resolved once, before anything
+/// moves, and replaces `out` like `--out out` does.
+#[test]
+fn an_out_spelled_through_dot_dot_is_the_same_folder() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = thesis_scene(dir.path());
+    for out in ["out", "./out/../out", "./out/../out"] {
+        let output = run_flapwright(dir.path(), &["design", &scene, "--out", out]);
+        assert!(output.status.success(), "--out {out}: {}", stderr(&output));
+        assert!(dir.path().join("out/report.json").is_file(), "--out {out}");
+        assert_eq!(names_in(dir.path()), ["out", "thesis.toml"], "--out {out}");
+    }
+}
+
+/// Issue 35 item 12: `--out .` (the folder the run is in) is refused before any work, with
+/// the reason; nothing is written beside it.
+#[test]
+fn the_folder_the_run_is_in_is_refused_up_front() {
+    let dir = tempfile::tempdir().unwrap();
+    thesis_scene(dir.path());
+    fs::create_dir(dir.path().join("empty")).unwrap();
+    let here = dir.path().join("empty");
+    for out in [".", "../empty", "./."] {
+        let output = run_flapwright(&here, &["design", "../thesis.toml", "--out", out]);
+        assert_eq!(output.status.code(), Some(2), "--out {out}: {}", stderr(&output));
+        assert!(
+            stderr(&output).contains("the folder this run is in"),
+            "{}",
+            stderr(&output)
+        );
+        assert!(names_in(&here).is_empty(), "--out {out}");
+        assert_eq!(names_in(dir.path()), ["empty", "thesis.toml"], "--out {out}");
+    }
+}
+
+/// Issue 35 item 12: `--out out/.` is the folder `out`, replaced as `--out out` is.
+#[test]
+fn an_out_ending_in_dot_is_the_folder_itself() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = thesis_scene(dir.path());
+    for out in ["out/.", "out/.", "out"] {
+        let output = run_flapwright(dir.path(), &["design", &scene, "--out", out]);
+        assert!(output.status.success(), "--out {out}: {}", stderr(&output));
+        assert!(dir.path().join("out/report.json").is_file());
+        assert_eq!(names_in(dir.path()), ["out", "thesis.toml"], "--out {out}");
+    }
+}
+
+/// Issue 35 item 12: an earlier output the user made read-only is refused before any work
+/// (exit 2, saying so) and left whole; nothing hidden is left beside it. As root, where
+/// permissions do not stop a removal, one file is also made immutable (`chattr +i`), which
+/// is what stopped the earlier code half-way.
+#[cfg(unix)]
+#[test]
+fn a_read_only_earlier_output_is_refused_and_left_whole() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let scene = thesis_scene(dir.path());
+    assert!(run_flapwright(dir.path(), &["design", &scene, "--out", "prev"])
+        .status
+        .success());
+    let prev = dir.path().join("prev");
+    let before = names_in(&prev);
+    let set_mode = |mode: u32| {
+        for entry in fs::read_dir(&prev).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_file() {
+                fs::set_permissions(&path, fs::Permissions::from_mode(mode & 0o666)).unwrap();
+            }
+        }
+        fs::set_permissions(&prev, fs::Permissions::from_mode(mode)).unwrap();
+    };
+    set_mode(0o555);
+    let immutable = prev.join("report.json");
+    let chattr = |flag: &str| {
+        std::process::Command::new("chattr")
+            .arg(flag)
+            .arg(&immutable)
+            .output()
+            .is_ok_and(|o| o.status.success())
+    };
+    let made_immutable = chattr("+i");
+    let output = run_flapwright(dir.path(), &["design", &scene, "--out", "prev"]);
+    if made_immutable {
+        chattr("-i");
+    }
+    set_mode(0o755);
+    assert_eq!(output.status.code(), Some(2), "{}", stderr(&output));
+    assert!(stderr(&output).contains("read-only"), "{}", stderr(&output));
+    assert_eq!(names_in(&prev), before, "the earlier output is left whole");
+    assert_eq!(names_in(dir.path()), ["prev", "thesis.toml"], "nothing hidden is left");
+    // Writable again, it is replaced.
+    let output = run_flapwright(dir.path(), &["design", &scene, "--out", "prev"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(names_in(dir.path()), ["prev", "thesis.toml"]);
+}

@@ -230,7 +230,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 .map(|p| (p, "an airfoil file the scene reads".to_string(), false)),
         );
         reserved.push((
-            out.clone(),
+            staged.target().to_path_buf(),
             "inside --out, which each run replaces as a whole".to_string(),
             true,
         ));

@@ -2,6 +2,16 @@
 //! no run deletes or overwrites a file Flapwright did not write.
 //!
 //! The guarantees (the README's "Output folders" repeats them):
+//! - `--out` is resolved once, before anything is read or moved ([`resolve_out`]): made
+//!   absolute, `.` and `..` taken out, symbolic links followed. Every later step uses that
+//!   one path, so `--out ./out/../out` and `--out out/.` are `--out out`. A symbolic link as
+//!   `--out` is followed: the folder it points to is the output, and the link stays a link.
+//! - The scene's own folder and every folder above it are never an output; nor are the
+//!   folder the run is in and the folders above it (`--out .`, `--out ..`): a run replaces
+//!   `--out` as a whole, so it cannot be the folder the user's shell stands in, and writing
+//!   into it file by file would give up both the all-or-nothing replacement and the
+//!   guarantee that no file of the user's is touched. Both are refused before any work, with
+//!   the reason (exit 2).
 //! - A run writes into a staging folder beside `--out` (`.<out>.partial-<pid>-<nanos>`)
 //!   and moves it into place only when it succeeds (two renames on one file system).
 //! - Every output folder holds a manifest ([`MANIFEST`]): each file written, with its size
@@ -9,15 +19,17 @@
 //!   in it is in its manifest, unchanged; otherwise the run refuses with the foreign
 //!   files named ([`OutputError::Foreign`]), unless `--force` is given, which removes them
 //!   and says so.
-//! - The scene's own folder and every folder above it are never an output.
-//! - A symbolic link as `--out` is followed: the folder it points to is the output, and the
-//!   link stays a link.
+//! - An earlier output with a read-only folder in it (the user protected it) is never
+//!   replaced, not even with `--force` ([`OutputError::ReadOnly`], before any work): removing
+//!   it would stop half-way on a read-only folder and leave a hidden backup behind.
 //! - Staging and backup names are unique per run; leftovers of a killed run (its process
 //!   is gone) are removed by the next run to the same `--out` and never block it.
+//! - A single file (`--junit`) is written to a temporary file beside it and renamed into
+//!   place; the temporary file is removed when any step fails (a full disk).
 
 use std::fs;
 use std::io::{self, Write};
-use std::path::{Path, PathBuf};
+use std::path::{Component, Path, PathBuf};
 use std::time::{SystemTime, UNIX_EPOCH};
 
 use serde::{Deserialize, Serialize};
@@ -44,8 +56,20 @@ pub enum OutputError {
         /// The scene file.
         scene: PathBuf,
     },
+    /// `--out` is the folder the run is in or a folder above it (`--out .`).
+    ContainsWorkingFolder {
+        /// The output folder.
+        folder: PathBuf,
+    },
     /// `--out` exists and is not a folder.
     NotAFolder(PathBuf),
+    /// The earlier output has a read-only folder in it: the user protected it.
+    ReadOnly {
+        /// The output folder.
+        folder: PathBuf,
+        /// The read-only folder in it (or the output folder itself).
+        read_only: PathBuf,
+    },
     /// An output file (`--junit`) exists and Flapwright did not write it.
     ForeignFile {
         /// The option that names it.
@@ -97,7 +121,19 @@ impl std::fmt::Display for OutputError {
                 folder.display(),
                 scene.display()
             ),
+            Self::ContainsWorkingFolder { folder } => write!(
+                f,
+                "--out {} is the folder this run is in, or a folder above it: a run replaces --out as a whole, so it must be a folder of its own; name one inside it (for example --out flapwright-out)",
+                folder.display()
+            ),
             Self::NotAFolder(path) => write!(f, "--out {} exists and is not a folder", path.display()),
+            Self::ReadOnly { folder, read_only } => write!(
+                f,
+                "--out {}: {} is read-only, and Flapwright does not replace an output made read-only (removing it would stop half-way); make it writable (chmod -R u+w {}) or choose another --out",
+                folder.display(),
+                read_only.display(),
+                folder.display()
+            ),
             Self::ForeignFile { option, .. } => write!(
                 f,
                 "exists and Flapwright did not write it; choose another {option} path, or pass --force to replace it"
@@ -159,14 +195,22 @@ fn run_tag() -> String {
     format!("{}-{nanos}", std::process::id())
 }
 
+fn exists(path: &Path) -> bool {
+    fs::symlink_metadata(path).is_ok()
+}
+
 impl StagedDir {
     /// Checks that `target` may become an output (see the module docs) and creates an empty
     /// staging folder beside it. `scene` is the scene file, if any. With `force`, foreign
     /// files in `target` are replaced at commit.
     pub fn create(target: &Path, scene: Option<&Path>, force: bool) -> Result<Self, OutputError> {
-        let target = resolve_link(target)?;
+        let target = resolve_out(target)?;
         if let Some(scene) = scene {
             refuse_scene_folder(&target, scene)?;
+        }
+        refuse_working_folder(&target)?;
+        if target.file_name().is_none() {
+            return Err(OutputError::ContainsWorkingFolder { folder: target });
         }
         check_replaceable(&target, force)?;
         let parent = parent_of(&target);
@@ -187,6 +231,11 @@ impl StagedDir {
             force,
             removed: Vec::new(),
         })
+    }
+
+    /// The output folder, resolved.
+    pub fn target(&self) -> &Path {
+        &self.target
     }
 
     /// Path of a file inside the staging folder.
@@ -302,16 +351,87 @@ fn write_atomically_with(path: &Path, write: impl FnOnce(&mut fs::File) -> io::R
     result
 }
 
-/// The folder a symbolic link points to (followed, so the link itself is never replaced);
-/// other paths as given.
-fn resolve_link(target: &Path) -> Result<PathBuf, OutputError> {
-    match fs::symlink_metadata(target) {
-        Ok(meta) if meta.file_type().is_symlink() => fs::canonicalize(target).map_err(|e| OutputError::Unwritable {
-            path: target.to_path_buf(),
-            reason: format!("a link that leads nowhere ({e})"),
-        }),
-        _ => Ok(target.to_path_buf()),
+/// `--out` resolved once: absolute, `.` and `..` taken out, symbolic links followed (as far
+/// as the path exists; below that, `..` drops the name before it).
+pub fn resolve_out(path: &Path) -> Result<PathBuf, OutputError> {
+    resolve(path).map_err(|e| OutputError::Unwritable {
+        path: path.to_path_buf(),
+        reason: e.to_string(),
+    })
+}
+
+fn resolve(path: &Path) -> io::Result<PathBuf> {
+    let absolute = std::env::current_dir()?.join(path);
+    let mut resolved = PathBuf::new();
+    // `resolved` exists and is canonical (no links, no `..`).
+    let mut on_disk = true;
+    for component in absolute.components() {
+        match component {
+            Component::Prefix(_) | Component::RootDir => resolved.push(component.as_os_str()),
+            Component::CurDir => {}
+            Component::ParentDir => {
+                resolved.pop();
+                on_disk = exists(&resolved);
+            }
+            Component::Normal(name) => {
+                resolved.push(name);
+                if !on_disk {
+                    continue;
+                }
+                match fs::symlink_metadata(&resolved) {
+                    Ok(meta) => {
+                        resolved = fs::canonicalize(&resolved).map_err(|e| {
+                            if meta.file_type().is_symlink() {
+                                io::Error::new(e.kind(), format!("a link that leads nowhere ({e})"))
+                            } else {
+                                e
+                            }
+                        })?;
+                    }
+                    Err(e) if e.kind() == io::ErrorKind::NotFound => on_disk = false,
+                    Err(e) => return Err(e),
+                }
+            }
+        }
     }
+    Ok(resolved)
+}
+
+/// Refuses an output folder that is the folder the run is in or above it.
+fn refuse_working_folder(target: &Path) -> Result<(), OutputError> {
+    let Ok(here) = std::env::current_dir().and_then(fs::canonicalize) else {
+        return Ok(());
+    };
+    if here.starts_with(target) {
+        return Err(OutputError::ContainsWorkingFolder {
+            folder: target.to_path_buf(),
+        });
+    }
+    Ok(())
+}
+
+/// Refuses an earlier output with a read-only folder in it.
+fn refuse_read_only(target: &Path) -> Result<(), OutputError> {
+    match read_only_folder(target)? {
+        Some(read_only) => Err(OutputError::ReadOnly {
+            folder: target.to_path_buf(),
+            read_only,
+        }),
+        None => Ok(()),
+    }
+}
+
+/// The first folder in `folder` (itself included) that no one may write to.
+fn read_only_folder(folder: &Path) -> io::Result<Option<PathBuf>> {
+    if fs::metadata(folder)?.permissions().readonly() {
+        return Ok(Some(folder.to_path_buf()));
+    }
+    let mut entries = Vec::new();
+    list_entries(folder, Path::new(""), &mut entries)?;
+    Ok(entries
+        .into_iter()
+        .find(|(_, meta)| meta.is_dir() && meta.permissions().readonly())
+        .map(|(relative, _)| folder.join(relative)))
 }
 
 /// Refuses an output folder that is the scene's folder or above it.
@@ -331,20 +451,7 @@ fn refuse_scene_folder(target: &Path, scene: &Path) -> Result<(), OutputError> {
 
 /// `path` made absolute with symbolic links resolved as far as it exists.
 fn absolute(path: &Path) -> PathBuf {
-    if let Ok(canonical) = fs::canonicalize(path) {
-        return canonical;
-    }
-    match (path.parent(), path.file_name()) {
-        (Some(parent), Some(name)) => {
-            let parent = if parent.as_os_str().is_empty() {
-                Path::new(".")
-            } else {
-                parent
-            };
-            absolute(parent).join(name)
-        }
-        _ => std::env::current_dir().map_or_else(|_| path.to_path_buf(), |cwd| cwd.join(path)),
-    }
+    resolve(path).unwrap_or_else(|_| path.to_path_buf())
 }
 
 fn parent_of(path: &Path) -> PathBuf {
@@ -361,8 +468,8 @@ fn folder_name(path: &Path) -> String {
 }
 
 /// Checks that `target` may be replaced: absent, empty, or every file in it recorded in
-/// its manifest and unchanged. Returns the foreign files (only with `force`, which allows
-/// them).
+/// its manifest and unchanged, and no folder in it read-only. Returns the foreign files
+/// (only with `force`, which allows them).
 fn check_replaceable(target: &Path, force: bool) -> Result<Vec<PathBuf>, OutputError> {
     let meta = match fs::symlink_metadata(target) {
         Ok(meta) => meta,
@@ -372,6 +479,7 @@ fn check_replaceable(target: &Path, force: bool) -> Result<Vec<PathBuf>, OutputE
     if !meta.is_dir() {
         return Err(OutputError::NotAFolder(target.to_path_buf()));
     }
+    refuse_read_only(target)?;
     let foreign = foreign_files(target)?;
     if foreign.is_empty() || force {
         Ok(foreign)
@@ -584,5 +692,39 @@ mod tests {
         write_file_atomically(&path, b"later").unwrap();
         assert_eq!(names_in(dir.path()), ["j.xml"]);
         assert_eq!(fs::read_to_string(&path).unwrap(), "later");
+    }
+
+    /// Issue 35 item 10: `.` and `..` are taken out once, links followed.
+    #[test]
+    fn out_is_resolved_without_dots() {
+        let dir = tempfile::tempdir().unwrap();
+        let root = fs::canonicalize(dir.path()).unwrap();
+        fs::create_dir(root.join("out")).unwrap();
+        for spelled in ["out/../out", "out/.", "./out", "missing/../out", "out/missing/.."] {
+            assert_eq!(resolve(&root.join(spelled)).unwrap(), root.join("out"), "{spelled}");
+        }
+        assert_eq!(resolve(&root.join("a/b/../c/.")).unwrap(), root.join("a/c"));
+        #[cfg(unix)]
+        {
+            std::os::unix::fs::symlink(root.join("out"), root.join("link")).unwrap();
+            assert_eq!(resolve(&root.join("link/.")).unwrap(), root.join("out"));
+            std::os::unix::fs::symlink(root.join("nowhere"), root.join("dangling")).unwrap();
+            assert!(resolve(&root.join("dangling")).is_err());
+        }
+    }
+
+    /// Issue 35 item 12: an earlier output with a read-only folder is refused, left as it was.
+    #[cfg(unix)]
+    #[test]
+    fn a_read_only_output_is_refused() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join("out");
+        staged_run(&out, false, &[("report.json", "{}")]).unwrap();
+        fs::set_permissions(&out, fs::Permissions::from_mode(0o555)).unwrap();
+        let refused = staged_run(&out, false, &[("report.json", "{}")]);
+        fs::set_permissions(&out, fs::Permissions::from_mode(0o755)).unwrap();
+        assert!(matches!(refused, Err(OutputError::ReadOnly { .. })), "{refused:?}");
+        assert_eq!(names_in(dir.path()), ["out"]);
     }
 }

@@ -119,20 +119,16 @@ fn leftovers_of_killed_runs_never_block_a_later_run_and_are_cleaned() {
     assert!(run_flapwright(dir.path(), &["design", &scene, "--out", "out"])
         .status
         .success());
-    // What a run killed between its renames, or during its work, left behind (the fixed
-    // names of earlier versions too); pid 0 is never a user process.
-    for leftover in [".out.old", ".out.partial-0", ".out.old-0-1", ".out.partial-0-2"] {
-        fs::create_dir(dir.path().join(leftover)).unwrap();
-        fs::write(dir.path().join(leftover).join("report.json"), "{}").unwrap();
+    // Runs killed during their work (a staging folder left), and after their renames (the
+    // earlier output still beside the new one).
+    for point in ["staged", "after-renames", "staged"] {
+        let killed = run_killed_at(dir.path(), point, &["design", &scene, "--out", "out"]);
+        assert!(!killed.status.success(), "the test hook ends the run at {point}");
     }
+    assert!(names_in(dir.path()).len() > 4, "{:?}", names_in(dir.path()));
     let output = run_flapwright(dir.path(), &["design", &scene, "--out", "out"]);
     assert!(output.status.success(), "{}", stderr(&output));
-    let mut left: Vec<String> = fs::read_dir(dir.path())
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    left.sort();
-    assert_eq!(left, ["out", "thesis.toml"]);
+    assert_eq!(names_in(dir.path()), ["out", "thesis.toml"]);
 }
 
 #[cfg(unix)]
@@ -408,4 +404,80 @@ fn a_read_only_earlier_output_is_refused_and_left_whole() {
     let output = run_flapwright(dir.path(), &["design", &scene, "--out", "prev"]);
     assert!(output.status.success(), "{}", stderr(&output));
     assert_eq!(names_in(dir.path()), ["prev", "thesis.toml"]);
+}
+
+/// Runs `flapwright` with `args` in `dir`, the test hook `FLAPWRIGHT_TEST_EXIT_AT` set to
+/// `point`: the run ends there at once, as a `kill -9` would end it (no clean-up).
+fn run_killed_at(dir: &Path, point: &str, args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_flapwright"))
+        .args(args)
+        .env("FLAPWRIGHT_TEST_EXIT_AT", point)
+        .current_dir(dir)
+        .output()
+        .expect("flapwright runs")
+}
+
+/// Issue 35 item 9: a user's folders whose names look like Flapwright's backups (a
+/// hand-made `.results.old`, a dated `.results.old-2024-01-05`, "2024" read as a dead
+/// process) are never removed: only folders with a marker Flapwright can verify are.
+#[test]
+fn hand_made_folders_named_like_backups_are_never_removed() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = thesis_scene(dir.path());
+    assert!(run_flapwright(dir.path(), &["design", &scene, "--out", "results"])
+        .status
+        .success());
+    let mine = [
+        ".results.old",
+        ".results.old-2024-01-05",
+        ".results.old-0-1",
+        ".results.partial-0-2",
+        ".results.partial-0",
+    ];
+    for name in mine {
+        fs::create_dir(dir.path().join(name)).unwrap();
+        fs::write(dir.path().join(name).join("backup.txt"), name).unwrap();
+    }
+    let output = run_flapwright(dir.path(), &["design", &scene, "--out", "results"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    for name in mine {
+        assert_eq!(
+            fs::read_to_string(dir.path().join(name).join("backup.txt")).unwrap(),
+            name,
+            "{name} was the user's"
+        );
+    }
+}
+
+/// Issue 35 item 11: a run killed between the two renames of its commit has moved the
+/// earlier output aside; the next run puts it back (here the next run is killed during its
+/// work, so the earlier output is what `--out` must hold), and a run that completes leaves
+/// nothing hidden.
+#[test]
+fn a_run_killed_between_its_renames_loses_no_earlier_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = thesis_scene(dir.path());
+    assert!(run_flapwright(dir.path(), &["design", &scene, "--out", "out"])
+        .status
+        .success());
+    let earlier = fs::read_to_string(dir.path().join("out/report.json")).unwrap();
+    // A different scene, so the earlier report is told from a later one.
+    let text = fs::read_to_string(dir.path().join(&scene)).unwrap();
+    let renamed = text.replacen("name = \"", "name = \"other-", 1);
+    assert_ne!(renamed, text);
+    fs::write(dir.path().join("other.toml"), renamed).unwrap();
+    let killed = run_killed_at(dir.path(), "between-renames", &["design", "other.toml", "--out", "out"]);
+    assert!(!killed.status.success(), "the test hook ends the run");
+    assert!(!dir.path().join("out").exists(), "killed with --out moved aside");
+    let killed = run_killed_at(dir.path(), "staged", &["design", "other.toml", "--out", "out"]);
+    assert!(!killed.status.success(), "the test hook ends the run");
+    assert_eq!(
+        fs::read_to_string(dir.path().join("out/report.json")).unwrap(),
+        earlier,
+        "the earlier output is put back"
+    );
+    let output = run_flapwright(dir.path(), &["design", "other.toml", "--out", "out"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_ne!(fs::read_to_string(dir.path().join("out/report.json")).unwrap(), earlier);
+    assert_eq!(names_in(dir.path()), ["other.toml", "out", "thesis.toml"]);
 }

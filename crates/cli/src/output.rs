@@ -36,10 +36,12 @@
 //!   is removed; its backup (the earlier output) is put back at `--out` when `--out` is
 //!   missing (a kill between the two renames), and otherwise kept until the new output is
 //!   in place, then removed only when its manifest vouches for every file in it (or the
-//!   killed run had `--force`). A backup that is kept, or cannot be removed, is named in a
-//!   warning ([`Committed::notices`]) at every run until the user deals with it.
-//! - Where process start times cannot be read (no `/proc`), every marked run counts as
-//!   running: its leftovers are kept, never removed.
+//!   killed run had `--force`). A backup that is kept, or cannot be removed, keeps its
+//!   marker and is named in a warning ([`Committed::notices`]) by every later run that
+//!   completes, until the user deals with it; an earlier output put back is named too.
+//! - Without `/proc` (not Linux), every marked run counts as running: its leftovers are
+//!   kept, never removed (nor put back).
+//! - A temporary file that a killed run leaves beside a `--junit` file is not removed.
 //! - A single file (`--junit`) is written to a temporary file beside it and renamed into
 //!   place; the temporary file is removed when any step fails (a full disk).
 //!
@@ -571,7 +573,8 @@ fn owner_is_running(pid: u32, start: Option<u64>) -> bool {
         return true;
     }
     match process_state(pid) {
-        None => false,
+        // A process we cannot read (another user's, behind `hidepid`) may be the one.
+        None => Path::new(&format!("/proc/{pid}")).exists(),
         Some((state, started)) => !matches!(state, 'Z' | 'X') && start.is_none_or(|s| s == started),
     }
 }

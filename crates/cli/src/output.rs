@@ -14,7 +14,9 @@
 //!   the reason (exit 2).
 //! - A run writes into a staging folder beside `--out` (`.<out>.partial-<tag>`) and moves it
 //!   into place only when it succeeds: the earlier output is renamed to `.<out>.old-<tag>`,
-//!   the staging folder to `--out`, and the earlier output is then removed.
+//!   the staging folder to `--out`, and the earlier output is then removed, its manifest
+//!   last: a removal that stops half-way (an immutable file) leaves a folder its manifest
+//!   still vouches for, which a later run removes once it can.
 //! - Every output folder holds a manifest ([`MANIFEST`]): each file written, with its size
 //!   and SHA-256. An existing `--out` is replaced only when it is empty or when every file
 //!   in it is in its manifest, unchanged (checked before any work, and again on the earlier
@@ -456,7 +458,7 @@ impl StagedDir {
             return Err(error.into());
         }
         test_exit_point("after-renames");
-        if let Err(error) = fs::remove_dir_all(&backup) {
+        if let Err(error) = remove_output(&backup) {
             self.notices.push(format!(
                 "the new output is in place, but the earlier one could not be removed ({error}): it is kept as {}; later runs to this --out try again",
                 backup.display()
@@ -489,17 +491,17 @@ impl StagedDir {
                 continue;
             }
             match foreign_files(&paths.backup) {
-                Ok(foreign) if foreign.is_empty() || marker.force => match fs::remove_dir_all(&paths.backup) {
+                Ok(foreign) if foreign.is_empty() || marker.force => match remove_output(&paths.backup) {
                     Ok(()) => {
                         let _ = fs::remove_file(&paths.marker);
                     }
                     Err(error) => self.notices.push(format!(
-                        "could not remove {}, an earlier output an interrupted run moved aside ({error}); later runs try again",
+                        "could not remove {}, an earlier output a run moved aside ({error}); later runs try again",
                         paths.backup.display()
                     )),
                 },
                 Ok(foreign) => self.notices.push(format!(
-                    "kept {}, an earlier output an interrupted run moved aside: it holds {} file(s) Flapwright did not write ({}); move what you need out of it, then delete it",
+                    "kept {}, an earlier output a run moved aside: it holds {} file(s) Flapwright did not write ({}); move what you need out of it, then delete it",
                     paths.backup.display(),
                     foreign.len(),
                     foreign
@@ -510,7 +512,7 @@ impl StagedDir {
                         .join(", ")
                 )),
                 Err(error) => self.notices.push(format!(
-                    "kept {}, an earlier output an interrupted run moved aside: it cannot be read ({error})",
+                    "kept {}, an earlier output a run moved aside: it cannot be read ({error})",
                     paths.backup.display()
                 )),
             }
@@ -530,6 +532,27 @@ impl Drop for StagedDir {
             let _ = fs::remove_file(&self.paths.marker);
         }
     }
+}
+
+/// Removes an earlier output folder, its manifest last: when the removal stops half-way
+/// (an immutable file), what is left is still vouched for, and a later run removes it.
+fn remove_output(folder: &Path) -> io::Result<()> {
+    for entry in fs::read_dir(folder)? {
+        let entry = entry?;
+        if entry.file_name() == MANIFEST {
+            continue;
+        }
+        if entry.file_type()?.is_dir() {
+            fs::remove_dir_all(entry.path())?;
+        } else {
+            fs::remove_file(entry.path())?;
+        }
+    }
+    match fs::remove_file(folder.join(MANIFEST)) {
+        Err(e) if e.kind() != io::ErrorKind::NotFound => return Err(e),
+        _ => {}
+    }
+    fs::remove_dir(folder)
 }
 
 /// The runs to `target` (folder `name` in `parent`) whose markers verify and whose process
@@ -1097,5 +1120,60 @@ mod tests {
         write_file_atomically(&path, b"later").unwrap();
         assert_eq!(names_in(dir.path()), ["j.xml"]);
         assert_eq!(fs::read_to_string(&path).unwrap(), "later");
+    }
+
+    /// An earlier output whose removal stopped half-way (an immutable file, `chattr +i`) is
+    /// still vouched for by its manifest, which goes last, so a later run removes it once it
+    /// can. Runs only where `chattr +i` works (root on ext4).
+    #[cfg(unix)]
+    #[test]
+    fn a_backup_whose_removal_stopped_half_way_is_removed_later() {
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join("out");
+        staged_run(
+            &out,
+            false,
+            &[("a.json", "{}"), ("report.json", "{}"), ("z.json", "{}")],
+        )
+        .unwrap();
+        let chattr = |flag: &str, path: &Path| {
+            std::process::Command::new("chattr")
+                .arg(flag)
+                .arg(path)
+                .output()
+                .is_ok_and(|o| o.status.success())
+        };
+        if !chattr("+i", &out.join("report.json")) {
+            return;
+        }
+        let committed = staged_run(&out, false, &[("report.json", "{}")]);
+        let backups: Vec<PathBuf> = fs::read_dir(dir.path())
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.file_name().unwrap().to_string_lossy().starts_with(".out.old-"))
+            .collect();
+        for backup in &backups {
+            chattr("-i", &backup.join("report.json"));
+        }
+        chattr("-i", &out.join("report.json"));
+        let committed = committed.unwrap();
+        assert_eq!(backups.len(), 1, "{:?}", names_in(dir.path()));
+        assert!(
+            committed.notices.iter().any(|n| n.contains("could not be removed")),
+            "{:?}",
+            committed.notices
+        );
+        // As if the run that left it had ended (this process still runs).
+        for entry in fs::read_dir(dir.path()).unwrap() {
+            let path = entry.unwrap().path();
+            if path.to_string_lossy().ends_with(".json") {
+                let mut marker: RunMarker = serde_json::from_str(&fs::read_to_string(&path).unwrap()).unwrap();
+                marker.pid = u32::MAX;
+                fs::write(&path, serde_json::to_string(&marker).unwrap()).unwrap();
+            }
+        }
+        let committed = staged_run(&out, false, &[("report.json", "{}")]).unwrap();
+        assert!(committed.notices.is_empty(), "{:?}", committed.notices);
+        assert_eq!(names_in(dir.path()), ["out"]);
     }
 }

@@ -119,20 +119,16 @@ fn leftovers_of_killed_runs_never_block_a_later_run_and_are_cleaned() {
     assert!(run_flapwright(dir.path(), &["design", &scene, "--out", "out"])
         .status
         .success());
-    // What a run killed between its renames, or during its work, left behind (the fixed
-    // names of earlier versions too); pid 0 is never a user process.
-    for leftover in [".out.old", ".out.partial-0", ".out.old-0-1", ".out.partial-0-2"] {
-        fs::create_dir(dir.path().join(leftover)).unwrap();
-        fs::write(dir.path().join(leftover).join("report.json"), "{}").unwrap();
+    // Runs killed during their work (a staging folder left), and after their renames (the
+    // earlier output still beside the new one).
+    for point in ["staged", "after-renames", "staged"] {
+        let killed = run_killed_at(dir.path(), point, &["design", &scene, "--out", "out"]);
+        assert!(!killed.status.success(), "the test hook ends the run at {point}");
     }
+    assert!(names_in(dir.path()).len() > 4, "{:?}", names_in(dir.path()));
     let output = run_flapwright(dir.path(), &["design", &scene, "--out", "out"]);
     assert!(output.status.success(), "{}", stderr(&output));
-    let mut left: Vec<String> = fs::read_dir(dir.path())
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    left.sort();
-    assert_eq!(left, ["out", "thesis.toml"]);
+    assert_eq!(names_in(dir.path()), ["out", "thesis.toml"]);
 }
 
 #[cfg(unix)]
@@ -224,4 +220,264 @@ fn json_prints_an_error_object_on_every_failure() {
     assert_eq!(missing.status.code(), Some(2));
     let error: serde_json::Value = serde_json::from_slice(&missing.stdout).expect("JSON");
     assert!(error["error"].as_str().unwrap().contains("missing.toml"));
+}
+
+/// Issue 35 item 13: the scene file is read no further than the size limit: `/dev/zero`
+/// (endless) is refused at once, in little memory (the run gets 1 GB of address space; the
+/// earlier code read on until the allocator gave up).
+#[cfg(target_os = "linux")]
+#[test]
+fn an_endless_scene_file_is_read_no_further_than_the_limit() {
+    use std::io::Read;
+    use wait_timeout::ChildExt;
+    let dir = tempfile::tempdir().unwrap();
+    let mut child = std::process::Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -v 1000000 && exec \"$0\" design /dev/zero --out out")
+        .arg(env!("CARGO_BIN_EXE_flapwright"))
+        .current_dir(dir.path())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let status = match child.wait_timeout(std::time::Duration::from_secs(60)).unwrap() {
+        Some(status) => status,
+        None => {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("reading /dev/zero as a scene ran past 60 s");
+        }
+    };
+    let mut message = String::new();
+    child.stderr.take().unwrap().read_to_string(&mut message).unwrap();
+    assert_eq!(status.code(), Some(2), "{message}");
+    assert!(
+        message.contains("/dev/zero") && message.contains("at most 1048576 bytes"),
+        "{message}"
+    );
+    assert!(!dir.path().join("out").exists());
+}
+
+/// Issue 35 item 20: every subcommand's default output folder is ignored by git, and none
+/// is tracked. The defaults are read from the binary's own `--help`.
+#[test]
+fn default_output_folders_are_ignored_and_not_tracked() {
+    let root = repo_root();
+    let ignore = fs::read_to_string(root.join(".gitignore")).unwrap();
+    let mut defaults = Vec::new();
+    for command in ["design", "export", "study", "check"] {
+        let help = run_flapwright(&root, &[command, "--help"]);
+        let text = String::from_utf8_lossy(&help.stdout).into_owned();
+        let out = text
+            .split("--out <OUT>")
+            .nth(1)
+            .and_then(|rest| rest.split("[default: ").nth(1))
+            .and_then(|rest| rest.split(']').next())
+            .unwrap_or_else(|| panic!("{command} --help names the default --out: {text}"))
+            .to_string();
+        defaults.push(out);
+    }
+    for out in &defaults {
+        assert!(
+            ignore.lines().any(|line| line.trim() == format!("/{out}")),
+            ".gitignore lists /{out}"
+        );
+        // Only where git and the repository's history are at hand (not in a source archive).
+        if let Ok(listed) = std::process::Command::new("git")
+            .args(["ls-files", "--", out])
+            .current_dir(&root)
+            .output()
+        {
+            if listed.status.success() {
+                assert!(
+                    listed.stdout.is_empty(),
+                    "{out} is tracked: {}",
+                    String::from_utf8_lossy(&listed.stdout)
+                );
+            }
+        }
+    }
+}
+
+/// The names in `dir`, sorted.
+fn names_in(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+/// Issue 35 item 10: `--out ./out/../out` names `out`: it is resolved once, before anything
+/// moves, and replaces `out` like `--out out` does.
+#[test]
+fn an_out_spelled_through_dot_dot_is_the_same_folder() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = thesis_scene(dir.path());
+    for out in ["out", "./out/../out", "./out/../out"] {
+        let output = run_flapwright(dir.path(), &["design", &scene, "--out", out]);
+        assert!(output.status.success(), "--out {out}: {}", stderr(&output));
+        assert!(dir.path().join("out/report.json").is_file(), "--out {out}");
+        assert_eq!(names_in(dir.path()), ["out", "thesis.toml"], "--out {out}");
+    }
+}
+
+/// Issue 35 item 12: `--out .` (the folder the run is in) is refused before any work, with
+/// the reason; nothing is written beside it.
+#[test]
+fn the_folder_the_run_is_in_is_refused_up_front() {
+    let dir = tempfile::tempdir().unwrap();
+    thesis_scene(dir.path());
+    fs::create_dir(dir.path().join("empty")).unwrap();
+    let here = dir.path().join("empty");
+    for out in [".", "../empty", "./."] {
+        let output = run_flapwright(&here, &["design", "../thesis.toml", "--out", out]);
+        assert_eq!(output.status.code(), Some(2), "--out {out}: {}", stderr(&output));
+        assert!(
+            stderr(&output).contains("the folder this run is in"),
+            "{}",
+            stderr(&output)
+        );
+        assert!(names_in(&here).is_empty(), "--out {out}");
+        assert_eq!(names_in(dir.path()), ["empty", "thesis.toml"], "--out {out}");
+    }
+}
+
+/// Issue 35 item 12: `--out out/.` is the folder `out`, replaced as `--out out` is.
+#[test]
+fn an_out_ending_in_dot_is_the_folder_itself() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = thesis_scene(dir.path());
+    for out in ["out/.", "out/.", "out"] {
+        let output = run_flapwright(dir.path(), &["design", &scene, "--out", out]);
+        assert!(output.status.success(), "--out {out}: {}", stderr(&output));
+        assert!(dir.path().join("out/report.json").is_file());
+        assert_eq!(names_in(dir.path()), ["out", "thesis.toml"], "--out {out}");
+    }
+}
+
+/// Issue 35 item 12: an earlier output the user made read-only is refused before any work
+/// (exit 2, saying so) and left whole; nothing hidden is left beside it. As root, where
+/// permissions do not stop a removal, one file is also made immutable (`chattr +i`), which
+/// is what stopped the earlier code half-way.
+#[cfg(unix)]
+#[test]
+fn a_read_only_earlier_output_is_refused_and_left_whole() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let scene = thesis_scene(dir.path());
+    assert!(run_flapwright(dir.path(), &["design", &scene, "--out", "prev"])
+        .status
+        .success());
+    let prev = dir.path().join("prev");
+    let before = names_in(&prev);
+    let set_mode = |mode: u32| {
+        for entry in fs::read_dir(&prev).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_file() {
+                fs::set_permissions(&path, fs::Permissions::from_mode(mode & 0o666)).unwrap();
+            }
+        }
+        fs::set_permissions(&prev, fs::Permissions::from_mode(mode)).unwrap();
+    };
+    set_mode(0o555);
+    let immutable = prev.join("report.json");
+    let chattr = |flag: &str| {
+        std::process::Command::new("chattr")
+            .arg(flag)
+            .arg(&immutable)
+            .output()
+            .is_ok_and(|o| o.status.success())
+    };
+    let made_immutable = chattr("+i");
+    let output = run_flapwright(dir.path(), &["design", &scene, "--out", "prev"]);
+    if made_immutable {
+        chattr("-i");
+    }
+    set_mode(0o755);
+    assert_eq!(output.status.code(), Some(2), "{}", stderr(&output));
+    assert!(stderr(&output).contains("read-only"), "{}", stderr(&output));
+    assert_eq!(names_in(&prev), before, "the earlier output is left whole");
+    assert_eq!(names_in(dir.path()), ["prev", "thesis.toml"], "nothing hidden is left");
+    // Writable again, it is replaced.
+    let output = run_flapwright(dir.path(), &["design", &scene, "--out", "prev"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(names_in(dir.path()), ["prev", "thesis.toml"]);
+}
+
+/// Runs `flapwright` with `args` in `dir`, the test hook `FLAPWRIGHT_TEST_EXIT_AT` set to
+/// `point`: the run ends there at once, as a `kill -9` would end it (no clean-up).
+fn run_killed_at(dir: &Path, point: &str, args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_flapwright"))
+        .args(args)
+        .env("FLAPWRIGHT_TEST_EXIT_AT", point)
+        .current_dir(dir)
+        .output()
+        .expect("flapwright runs")
+}
+
+/// Issue 35 item 9: a user's folders whose names look like Flapwright's backups (a
+/// hand-made `.results.old`, a dated `.results.old-2024-01-05`, "2024" read as a dead
+/// process) are never removed: only folders with a marker Flapwright can verify are.
+#[test]
+fn hand_made_folders_named_like_backups_are_never_removed() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = thesis_scene(dir.path());
+    assert!(run_flapwright(dir.path(), &["design", &scene, "--out", "results"])
+        .status
+        .success());
+    let mine = [
+        ".results.old",
+        ".results.old-2024-01-05",
+        ".results.old-0-1",
+        ".results.partial-0-2",
+        ".results.partial-0",
+    ];
+    for name in mine {
+        fs::create_dir(dir.path().join(name)).unwrap();
+        fs::write(dir.path().join(name).join("backup.txt"), name).unwrap();
+    }
+    let output = run_flapwright(dir.path(), &["design", &scene, "--out", "results"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    for name in mine {
+        assert_eq!(
+            fs::read_to_string(dir.path().join(name).join("backup.txt")).unwrap(),
+            name,
+            "{name} was the user's"
+        );
+    }
+}
+
+/// Issue 35 item 11: a run killed between the two renames of its commit has moved the
+/// earlier output aside; the next run puts it back (here the next run is killed during its
+/// work, so the earlier output is what `--out` must hold), and a run that completes leaves
+/// nothing hidden.
+#[test]
+fn a_run_killed_between_its_renames_loses_no_earlier_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = thesis_scene(dir.path());
+    assert!(run_flapwright(dir.path(), &["design", &scene, "--out", "out"])
+        .status
+        .success());
+    let earlier = fs::read_to_string(dir.path().join("out/report.json")).unwrap();
+    // A different scene, so the earlier report is told from a later one.
+    let text = fs::read_to_string(dir.path().join(&scene)).unwrap();
+    let renamed = text.replacen("name = \"", "name = \"other-", 1);
+    assert_ne!(renamed, text);
+    fs::write(dir.path().join("other.toml"), renamed).unwrap();
+    let killed = run_killed_at(dir.path(), "between-renames", &["design", "other.toml", "--out", "out"]);
+    assert!(!killed.status.success(), "the test hook ends the run");
+    assert!(!dir.path().join("out").exists(), "killed with --out moved aside");
+    let killed = run_killed_at(dir.path(), "staged", &["design", "other.toml", "--out", "out"]);
+    assert!(!killed.status.success(), "the test hook ends the run");
+    assert_eq!(
+        fs::read_to_string(dir.path().join("out/report.json")).unwrap(),
+        earlier,
+        "the earlier output is put back"
+    );
+    let output = run_flapwright(dir.path(), &["design", "other.toml", "--out", "out"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_ne!(fs::read_to_string(dir.path().join("out/report.json")).unwrap(), earlier);
+    assert_eq!(names_in(dir.path()), ["other.toml", "out", "thesis.toml"]);
 }

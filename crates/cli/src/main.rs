@@ -216,7 +216,8 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         (outputs.interference, outputs.kinematics) = (outputs.svg, outputs.svg);
         outputs.sizing = false;
     }
-    let staged = StagedDir::create(&out, scene_path.as_deref(), cli.force)?;
+    let mut staged = StagedDir::create(&out, scene_path.as_deref(), cli.force)?;
+    print_notices(cli, &staged.take_notices());
     let mut junit_replaces_foreign = false;
     if let Some(path) = &junit {
         // Never one of the run's inputs, nor inside --out (replaced as a whole).
@@ -230,7 +231,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 .map(|p| (p, "an airfoil file the scene reads".to_string(), false)),
         );
         reserved.push((
-            out.clone(),
+            staged.target().to_path_buf(),
             "inside --out, which each run replaces as a whole".to_string(),
             true,
         ));
@@ -275,9 +276,14 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         },
         Err(error) => Failure::from(error),
     })?;
-    let (written, removed) = staged
+    let output::Committed {
+        folder: written,
+        removed,
+        notices,
+    } = staged
         .commit()
         .with_context(|| format!("moving results into {}", out.display()))?;
+    print_notices(cli, &notices);
     if !removed.is_empty() && !cli.quiet {
         eprintln!(
             "--force: replaced {} file(s) Flapwright had not written: {}",
@@ -389,11 +395,14 @@ fn study(
             MechanismScene::KINDS.join(", ")
         )));
     }
-    let staged = StagedDir::create(out, scene_path, cli.force)?;
+    let mut staged = StagedDir::create(out, scene_path, cli.force)?;
+    print_notices(cli, &staged.take_notices());
     let study = flapwright::study::run(&text, scene_dir.as_deref(), &label, &kinds, stations, &staged)?;
-    let (written, _) = staged
+    let committed = staged
         .commit()
         .with_context(|| format!("moving results into {}", out.display()))?;
+    print_notices(cli, &committed.notices);
+    let written = committed.folder;
     if cli.json {
         println!("{}", serde_json::to_string(&study)?);
     } else if !cli.quiet {
@@ -408,14 +417,27 @@ fn study(
     Ok(())
 }
 
+/// Warnings about the output folder and what earlier runs left beside it (unless
+/// `--quiet`).
+fn print_notices(cli: &Cli, notices: &[String]) {
+    if !cli.quiet {
+        for notice in notices {
+            eprintln!("warning: {notice}");
+        }
+    }
+}
+
 fn read_scene_text(path: Option<&Path>) -> Result<(String, Option<PathBuf>), Failure> {
     match path {
         None => Ok((DEFAULT_SCENE_TOML.to_string(), None)),
         Some(path) => {
-            let bytes = std::fs::read(path).map_err(|e| Failure {
-                code: EXIT_BAD_INPUT,
-                error: anyhow::Error::new(e).context(format!("reading scene file {}", path.display())),
-            })?;
+            // No further than the size limit: an endless file (`/dev/zero`) is refused at once.
+            let bytes = std::fs::File::open(path)
+                .and_then(Scene::read_bytes)
+                .map_err(|e| Failure {
+                    code: EXIT_BAD_INPUT,
+                    error: anyhow::Error::new(e).context(format!("reading scene file {}", path.display())),
+                })?;
             let text = Scene::decode(bytes, &path.display().to_string()).map_err(|e| Failure {
                 code: EXIT_BAD_INPUT,
                 error: anyhow::Error::new(e).context(format!("invalid scene {}", path.display())),

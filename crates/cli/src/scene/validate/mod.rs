@@ -136,8 +136,24 @@ impl Scene {
         Self::from_file_text(text, "scene.toml", scene_dir)
     }
 
-    /// The scene file's bytes as text; invalid UTF-8 is located like any other problem.
+    /// Reads a scene file's bytes from `reader`, no further than [`MAX_SCENE_BYTES`] and one
+    /// byte more: an endless file (`/dev/zero`) costs a megabyte, and [`Scene::decode`] tells
+    /// a file over the limit.
+    pub fn read_bytes(reader: impl std::io::Read) -> std::io::Result<Vec<u8>> {
+        use std::io::Read as _;
+        let mut bytes = Vec::new();
+        reader.take(MAX_SCENE_BYTES as u64 + 1).read_to_end(&mut bytes)?;
+        Ok(bytes)
+    }
+
+    /// The scene file's bytes as text; a file over [`MAX_SCENE_BYTES`] is refused, and
+    /// invalid UTF-8 is located like any other problem.
     pub fn decode(bytes: Vec<u8>, file: &str) -> Result<String, SceneError> {
+        if bytes.len() > MAX_SCENE_BYTES {
+            return Err(SceneError::Parse(format!(
+                "{file}: more than {MAX_SCENE_BYTES} bytes: a scene file may hold at most {MAX_SCENE_BYTES} bytes"
+            )));
+        }
         String::from_utf8(bytes).map_err(|error| {
             let valid = error.utf8_error().valid_up_to();
             let bytes = error.as_bytes();

@@ -6,6 +6,7 @@ mod check;
 mod default_scene;
 mod exports;
 mod fuzz;
+mod messages;
 mod output_safety;
 mod scene_errors;
 mod sizing_figures;

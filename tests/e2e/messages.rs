@@ -1,11 +1,12 @@
 //! What the command line says about a scene (issue 35, items 16 and 17): a misspelt kind
-//! alone, a huge integer named by its key; a scene without loads and a percentage written
-//! as a fraction warned about.
+//! alone, warnings printed by `check`, one JSON line with located problems, viewer exports
+//! of a 2D scene refused, a huge integer named by its key; a scene without loads and a
+//! percentage written as a fraction warned about.
 
 use std::process::Output;
 
 use crate::bad_input::{assert_rejected, default_with};
-use crate::{repo_root, run_flapwright};
+use crate::{repo_root, run_flapwright, tracks_through_the_upper_skin_scene};
 
 fn run_on(scene: &str, args: &[&str]) -> (tempfile::TempDir, Output) {
     let dir = tempfile::tempdir().unwrap();
@@ -32,6 +33,71 @@ fn a_misspelt_kind_is_reported_alone() {
     );
     let (_dir, output) = run_on(&scene, &["design", "scene.toml", "--out", "out"]);
     assert!(!stderr(&output).contains("missing"), "{}", stderr(&output));
+}
+
+/// The warning count of `checked "..." ...: N warning(s)` on stdout.
+fn counted_warnings(output: &Output) -> usize {
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    stdout
+        .split(" warning(s)")
+        .next()
+        .and_then(|head| head.rsplit(' ').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("a warning count: {stdout}"))
+}
+
+#[test]
+fn check_prints_the_warnings_it_counts() {
+    // A failed check (its interference warnings among others) and a passing one whose only
+    // warning is the scene's.
+    let fraction = default_with("landing_deg = 35.0", "landing_deg = 35.0\nlanding_gap_percent = 0.02");
+    for (scene, code) in [(tracks_through_the_upper_skin_scene(), 1), (fraction, 0)] {
+        let (_dir, output) = run_on(&scene, &["check", "scene.toml"]);
+        let text = stderr(&output);
+        assert_eq!(output.status.code(), Some(code), "{text}");
+        let counted = counted_warnings(&output);
+        let printed = text.lines().filter(|l| l.starts_with("warning: ")).count();
+        assert!(counted > 0);
+        assert_eq!(printed, counted, "every counted warning printed:\n{text}");
+    }
+}
+
+#[test]
+fn json_is_one_line_with_problems_as_objects() {
+    // A failed check: one JSON object, not the summary and then the error.
+    let (_dir, output) = run_on(
+        &tracks_through_the_upper_skin_scene(),
+        &["--json", "check", "scene.toml"],
+    );
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert_eq!(stdout.lines().count(), 1, "{stdout}");
+    let error: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
+    assert_eq!(error["exit_code"], 1);
+    // Problems as objects with file, line, col, key and message.
+    let scene = default_with("chord_m = 2.1", "chord_m = -2.1");
+    let (_dir, output) = run_on(&scene, &["--json", "design", "scene.toml"]);
+    assert_eq!(output.status.code(), Some(2));
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert_eq!(stdout.lines().count(), 1, "{stdout}");
+    let error: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
+    let problem = &error["problems"][0];
+    assert_eq!(problem["file"], "scene.toml", "{error}");
+    assert_eq!(problem["line"], 27, "{error}");
+    assert_eq!(problem["col"], 1, "{error}");
+    assert_eq!(problem["key"], "wing.sections[0].chord_m", "{error}");
+    assert!(problem["message"].as_str().unwrap().contains("must be in"), "{error}");
+}
+
+#[test]
+fn viewer_exports_of_a_2d_scene_are_bad_input() {
+    let scene = std::fs::read_to_string(repo_root().join("data/scenes/thesis-case-study.toml")).unwrap();
+    for flag in ["--urdf", "--stl", "--gltf"] {
+        let (dir, output) = run_on(&scene, &["export", "scene.toml", flag, "--out", "out"]);
+        assert_eq!(output.status.code(), Some(2), "{flag}: {}", stderr(&output));
+        assert!(stderr(&output).contains("[wing]"), "{flag}: {}", stderr(&output));
+        assert!(!dir.path().join("out").exists());
+    }
 }
 
 #[test]

@@ -12,6 +12,7 @@ mod scene_errors;
 mod sizing_figures;
 mod stations;
 mod stl_reader;
+mod study;
 mod synthesised_kinds;
 mod two_element;
 mod viewer_exports;

@@ -419,8 +419,8 @@ fn run(cli: &Cli) -> Result<(), Failure> {
     Ok(())
 }
 
-/// `flapwright study`: validates the scene as given, then designs each kind in place of its
-/// stations' mechanisms and prints the comparison.
+/// `flapwright study`: validates the scene as given and the flags, then designs each kind
+/// in place of its stations' mechanisms and prints the comparison.
 fn study(
     cli: &Cli,
     scene_path: Option<&Path>,
@@ -431,21 +431,56 @@ fn study(
     use flapwright::kinds::MechanismScene;
     let (text, scene_dir) = read_scene_text(scene_path)?;
     let label = scene_path.map_or("(embedded default)".into(), |p| p.display().to_string());
-    Scene::from_file_text(&text, &label, scene_dir.as_deref())
+    let scene = Scene::from_file_text(&text, &label, scene_dir.as_deref())
         .map_err(|e| bad_input(anyhow::Error::new(e).context(format!("invalid scene {label}"))))?;
     let kinds: Vec<String> = if kinds.is_empty() {
         flapwright::study::DEFAULT_KINDS.iter().map(|k| k.to_string()).collect()
     } else {
         kinds.to_vec()
     };
-    if let Some(unknown) = kinds.iter().find(|k| !MechanismScene::KINDS.contains(&k.as_str())) {
-        return Err(bad_input(anyhow::anyhow!(
-            "--kinds {unknown}: unknown mechanism kind; one of {}",
-            MechanismScene::KINDS.join(", ")
-        )));
+    let studied = MechanismScene::SYNTHESISED_KINDS.join(", ");
+    for (i, kind) in kinds.iter().enumerate() {
+        if !MechanismScene::KINDS.contains(&kind.as_str()) {
+            return Err(bad_input(anyhow::anyhow!(
+                "--kinds {kind}: unknown mechanism kind; the study compares {studied}"
+            )));
+        }
+        if !MechanismScene::SYNTHESISED_KINDS.contains(&kind.as_str()) {
+            return Err(bad_input(anyhow::anyhow!(
+                "--kinds {kind}: cannot be studied: it is given by its dimensions, and the study puts kinds synthesised from the flap settings in place of the stations' mechanisms: {studied}"
+            )));
+        }
+        if kinds[..i].contains(kind) {
+            return Err(bad_input(anyhow::anyhow!("--kinds {kind}: named twice")));
+        }
     }
+    for (i, name) in stations.iter().enumerate() {
+        if !scene.station.iter().any(|s| &s.name == name) {
+            let names: Vec<&str> = scene.station.iter().map(|s| s.name.as_str()).collect();
+            return Err(bad_input(anyhow::anyhow!(
+                "--station {name}: no such station in \"{}\" (its stations: {})",
+                scene.name,
+                names.join(", ")
+            )));
+        }
+        if stations[..i].contains(name) {
+            return Err(bad_input(anyhow::anyhow!("--station {name}: named twice")));
+        }
+    }
+    flapwright::study::requirements(&scene, &text, &label, stations).map_err(|why| bad_input(anyhow::anyhow!(why)))?;
     let staged = StagedDir::create(out, scene_path, cli.force)?;
-    let study = flapwright::study::run(&text, scene_dir.as_deref(), &label, &kinds, stations, &staged)?;
+    let study = flapwright::study::run(&scene, &text, scene_dir.as_deref(), &label, &kinds, stations, &staged)
+        .map_err(|error| {
+            let code = match error.downcast_ref::<flapwright::study::NoKindDesigned>() {
+                Some(none) if none.input_problem => EXIT_BAD_INPUT,
+                _ => EXIT_FAILED,
+            };
+            Failure {
+                code,
+                error,
+                summary: None,
+            }
+        })?;
     let (written, _) = staged
         .commit()
         .with_context(|| format!("moving results into {}", out.display()))?;

@@ -109,7 +109,9 @@ fn a_huge_integer_is_named_by_its_key_and_line() {
     let lines = scene.lines().count();
     assert_rejected(
         &scene,
-        &[&format!("scene.toml:{lines}:"), "interference.initial_samples"],
+        &[
+            &format!("scene.toml:{lines}:19: interference.initial_samples = 99999999999999999999: a whole number beyond the 64-bit range"),
+        ],
     );
 }
 

@@ -191,13 +191,16 @@ impl Scene {
         let table: toml::Table = toml::from_str(text).map_err(|e| {
             let offset = e.span().map_or(0, |s| s.start);
             let path = SpannedScene::new(text).path_at(offset);
-            let mut message = format!("TOML: {}", e.message().trim_end());
-            if message.contains("integer") {
-                message += &format!(
-                    " (whole numbers are at most {}; write a float, e.g. 1e20, for a larger value)",
+            let literal = e.span().and_then(|s| text.get(s)).unwrap_or_default().trim();
+            let message = if e.message().contains("integer") && !literal.is_empty() {
+                format!(
+                    "= {}: a whole number beyond the 64-bit range (at most {}); write a float (1e20) if so large a value is meant",
+                    literal.chars().take(40).collect::<String>(),
                     i64::MAX
-                );
-            }
+                )
+            } else {
+                format!("TOML: {}", e.message().trim_end())
+            };
             at(offset, path.to_string(), message)
         })?;
         let mut scene = Self::from_table(&table, scene_dir).map_err(located)?;

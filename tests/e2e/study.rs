@@ -128,6 +128,11 @@ fn every_shipped_3d_scene_is_studied_or_says_in_one_line_what_it_lacks() {
     let text = std::fs::read_to_string(repo_root().join("data/scenes/double-slotted-wing.toml")).unwrap();
     let (dir, output) = run_study(&text, &[]);
     assert_refused(dir.path(), &output, "scene.toml:69:7: flap[0].settings");
+    // With --json, the one line of stdout names the problem as an object.
+    let output = run_flapwright(dir.path(), &["--json", "study", "scene.toml", "--out", "out"]);
+    let error: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(error["problems"][0]["key"], "flap[0].settings", "{error}");
+    assert_eq!(error["problems"][0]["line"], 69, "{error}");
     // Given the thesis mechanism's own gap and overlap at its settings, the kinds are
     // designed at both stations.
     let (dir, output) = run_study(

@@ -152,7 +152,13 @@ fn main() -> ExitCode {
 /// (each scene problem as `{file, line, col, key, message}`, when the scene was at fault)
 /// and, for a run that ended in a failed verdict, its `summary`.
 fn json_error(failure: &Failure) -> String {
-    let problems: Vec<serde_json::Value> = match failure.error.downcast_ref::<SceneError>() {
+    let scene_error = failure.error.downcast_ref::<SceneError>().or_else(|| {
+        failure
+            .error
+            .downcast_ref::<flapwright::study::Unstudiable>()
+            .map(|u| &u.0)
+    });
+    let problems: Vec<serde_json::Value> = match scene_error {
         Some(SceneError::Located(problems)) => problems
             .iter()
             .map(|p| {
@@ -467,7 +473,7 @@ fn study(
             return Err(bad_input(anyhow::anyhow!("--station {name}: named twice")));
         }
     }
-    flapwright::study::requirements(&scene, &text, &label, stations).map_err(|why| bad_input(anyhow::anyhow!(why)))?;
+    flapwright::study::requirements(&scene, &text, &label, stations).map_err(|e| bad_input(anyhow::Error::new(e)))?;
     let staged = StagedDir::create(out, scene_path, cli.force)?;
     let study = flapwright::study::run(&scene, &text, scene_dir.as_deref(), &label, &kinds, stations, &staged)
         .map_err(|error| {

@@ -267,15 +267,32 @@ pub fn variant(text: &str, scene: &Scene, kind: &str, stations: &[String]) -> Re
     })
 }
 
-/// What a study needs of its scene before any kind is designed, as one line: a [wing] (the
-/// kinds are synthesised in the stations' sections) and, on every studied station's flap,
-/// the four gap and overlap targets its settings are synthesised to.
-pub fn requirements(scene: &Scene, text: &str, file: &str, stations: &[String]) -> Result<(), String> {
+/// A scene the study cannot compare kinds on: its problems, located in the file, shown on
+/// one line.
+#[derive(Debug)]
+pub struct Unstudiable(pub SceneError);
+
+impl std::fmt::Display for Unstudiable {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.0.lines().join("; "))
+    }
+}
+
+impl std::error::Error for Unstudiable {}
+
+/// What a study needs of its scene before any kind is designed: a `[wing]` (the kinds are
+/// synthesised in the stations' sections) and, on every studied station's flap, the four
+/// gap and overlap targets its settings are synthesised to.
+pub fn requirements(scene: &Scene, text: &str, file: &str, stations: &[String]) -> Result<(), Unstudiable> {
+    let unstudiable = |problem: Problem| Unstudiable(SceneError::Invalid(vec![problem]).locate(text, file));
     if scene.wing.is_none() {
-        return Err(format!(
-            "`study` needs a scene with a [wing]: its kinds are synthesised from the flap settings in each station's sections, and \"{}\" is a 2D station",
-            scene.name
-        ));
+        return Err(unstudiable(Problem::new(
+            "wing",
+            format!(
+                "`study` needs a scene with a [wing]: its kinds are synthesised from the flap settings in each station's sections, and \"{}\" is a 2D station",
+                scene.name
+            ),
+        )));
     }
     let studied = |name: &str| stations.is_empty() || stations.iter().any(|w| w == name);
     for (i, flap) in scene.flap.iter().enumerate() {
@@ -295,14 +312,13 @@ pub fn requirements(scene: &Scene, text: &str, file: &str, stations: &[String]) 
         .map(|(key, _)| *key)
         .collect();
         if carried && !missing.is_empty() {
-            let problem = Problem::new(
+            return Err(unstudiable(Problem::new(
                 format!("flap[{i}].settings"),
                 format!(
                     "the study's kinds are synthesised to the flap's gap and overlap targets: give {} (% of the local chord)",
                     missing.join(", ")
                 ),
-            );
-            return Err(SceneError::Invalid(vec![problem]).locate(text, file).lines().join("; "));
+            )));
         }
     }
     Ok(())

@@ -14,6 +14,8 @@ use flapwright::study::{self, DEFAULT_KINDS};
 fn study_one_station(c: &mut Criterion) {
     let scene_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/scenes");
     let text = std::fs::read_to_string(scene_dir.join("transport-flap.toml")).expect("the transport scene");
+    let scene = flapwright::scene::Scene::from_file_text(&text, "transport-flap.toml", Some(&scene_dir))
+        .expect("the transport scene is valid");
     let kinds: Vec<String> = DEFAULT_KINDS.iter().map(|k| k.to_string()).collect();
     let stations = ["ob-outer".to_string()];
     let dir = tempfile::tempdir().expect("temp dir");
@@ -24,6 +26,7 @@ fn study_one_station(c: &mut Criterion) {
         b.iter(|| {
             let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
             let study = study::run(
+                &scene,
                 &text,
                 Some(&scene_dir),
                 "transport-flap.toml",

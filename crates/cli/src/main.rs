@@ -113,6 +113,9 @@ enum Command {
 struct Failure {
     code: u8,
     error: anyhow::Error,
+    /// The run's summary, when it ran to the end but failed its verdict (`check`): with
+    /// `--json` it goes into the error object, so that stdout holds one line.
+    summary: Option<serde_json::Value>,
 }
 
 impl<E: Into<anyhow::Error>> From<E> for Failure {
@@ -123,7 +126,11 @@ impl<E: Into<anyhow::Error>> From<E> for Failure {
                 .downcast_ref::<OutputError>()
                 .is_some_and(OutputError::is_input_problem);
         let code = if input_problem { EXIT_BAD_INPUT } else { EXIT_FAILED };
-        Self { code, error }
+        Self {
+            code,
+            error,
+            summary: None,
+        }
     }
 }
 
@@ -141,20 +148,61 @@ fn main() -> ExitCode {
     }
 }
 
-/// The failure as one line of JSON: `error` (the whole message), `exit_code`, and
-/// `problems` (each scene problem as a line, when the scene was at fault).
+/// The failure as one line of JSON: `error` (the whole message), `exit_code`, `problems`
+/// (each scene problem as `{file, line, col, key, message}`, when the scene was at fault)
+/// and, for a run that ended in a failed verdict, its `summary`.
 fn json_error(failure: &Failure) -> String {
-    let problems = failure
-        .error
-        .downcast_ref::<SceneError>()
-        .map(SceneError::lines)
-        .unwrap_or_default();
-    serde_json::json!({
+    let scene_error = failure.error.downcast_ref::<SceneError>().or_else(|| {
+        failure
+            .error
+            .downcast_ref::<flapwright::study::Unstudiable>()
+            .map(|u| &u.0)
+    });
+    let problems: Vec<serde_json::Value> = match scene_error {
+        Some(SceneError::Located(problems)) => problems
+            .iter()
+            .map(|p| {
+                serde_json::json!({
+                    "file": p.file,
+                    "line": p.location.line,
+                    "col": p.location.column,
+                    "key": p.problem.path,
+                    "message": p.problem.message,
+                })
+            })
+            .collect(),
+        Some(SceneError::Invalid(problems)) => problems
+            .iter()
+            .map(|p| {
+                serde_json::json!({
+                    "file": null,
+                    "line": null,
+                    "col": null,
+                    "key": p.path,
+                    "message": p.message,
+                })
+            })
+            .collect(),
+        None => Vec::new(),
+    };
+    let mut error = serde_json::json!({
         "error": format!("{:#}", failure.error),
         "exit_code": failure.code,
         "problems": problems,
-    })
-    .to_string()
+    });
+    if let Some(summary) = &failure.summary {
+        error["summary"] = summary.clone();
+    }
+    error.to_string()
+}
+
+/// Bad input (exit 2).
+fn bad_input(error: anyhow::Error) -> Failure {
+    Failure {
+        code: EXIT_BAD_INPUT,
+        error,
+        summary: None,
+    }
 }
 
 fn run(cli: &Cli) -> Result<(), Failure> {
@@ -178,15 +226,8 @@ fn run(cli: &Cli) -> Result<(), Failure> {
     let file_label = scene_path
         .as_deref()
         .map_or("(embedded default)".into(), |p| p.display().to_string());
-    let mut scene = Scene::from_file_text(&text, &file_label, scene_dir.as_deref()).map_err(|e| Failure {
-        code: EXIT_BAD_INPUT,
-        error: anyhow::Error::new(e).context(format!(
-            "invalid scene {}",
-            scene_path
-                .as_deref()
-                .map_or("(embedded default)".into(), |p| p.display().to_string())
-        )),
-    })?;
+    let mut scene = Scene::from_file_text(&text, &file_label, scene_dir.as_deref())
+        .map_err(|e| bad_input(anyhow::Error::new(e).context(format!("invalid scene {file_label}"))))?;
     if let Some(Command::Export {
         urdf,
         stl,
@@ -197,8 +238,21 @@ fn run(cli: &Cli) -> Result<(), Failure> {
     }) = &cli.command
     {
         let all = !(*urdf || *stl || *svg || *gltf);
+        if scene.wing.is_none() {
+            let asked: Vec<&str> = [(*urdf, "--urdf"), (*stl, "--stl"), (*gltf, "--gltf")]
+                .iter()
+                .filter_map(|(on, flag)| on.then_some(*flag))
+                .collect();
+            if !asked.is_empty() {
+                return Err(bad_input(anyhow::anyhow!(
+                    "`export {}` needs a scene with a [wing]: a 2D station has no 3D geometry to export (`--svg` draws it)",
+                    asked.join(" ")
+                )));
+            }
+        }
         if *at != flapwright::scene::StlSetting::Stowed && (all || !*stl || *urdf || *gltf || *svg) {
             return Err(Failure {
+                summary: None,
                 code: EXIT_BAD_INPUT,
                 error: anyhow::anyhow!(
                     "--at {} moves the STL files only: use it with --stl alone (the URDF, the glTF and the drawings start from stowed)",
@@ -211,7 +265,10 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         }
         scene.outputs.stl_setting = *at;
         let outputs = &mut scene.outputs;
-        (outputs.urdf, outputs.stl, outputs.svg, outputs.gltf) = (all || *urdf, all || *stl, all || *svg, all || *gltf);
+        // Without a flag: every file the scene has geometry for (a 2D station: drawings).
+        let solid = all && scene.wing.is_some();
+        (outputs.urdf, outputs.stl, outputs.svg, outputs.gltf) =
+            (solid || *urdf, solid || *stl, all || *svg, solid || *gltf);
         // Only the drawings need the check (failing pairs marked) and the sweeps (plots).
         (outputs.interference, outputs.kinematics) = (outputs.svg, outputs.svg);
         outputs.sizing = false;
@@ -247,10 +304,9 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         wing_cache: None,
     };
     if mode == Mode::Check && scene.wing.is_none() {
-        return Err(Failure {
-            code: EXIT_BAD_INPUT,
-            error: anyhow::anyhow!("`check` needs a scene with a [wing]: there is no 3D geometry to check"),
-        });
+        return Err(bad_input(anyhow::anyhow!(
+            "`check` needs a scene with a [wing]: there is no 3D geometry to check"
+        )));
     }
     // A spinner naming the running stage, only for a person watching a terminal.
     let spinner = (!cli.quiet && !cli.json && std::io::stdout().is_terminal()).then(|| {
@@ -269,11 +325,9 @@ fn run(cli: &Cli) -> Result<(), Failure> {
     }
     // Input problems found by a stage (after validation) are located in the file too.
     let outcome = outcome.map_err(|error| match error.downcast::<SceneError>() {
-        Ok(scene_error) => Failure {
-            code: EXIT_BAD_INPUT,
-            error: anyhow::Error::new(scene_error.locate(&text, &file_label))
-                .context(format!("invalid scene {file_label}")),
-        },
+        Ok(scene_error) => bad_input(
+            anyhow::Error::new(scene_error.locate(&text, &file_label)).context(format!("invalid scene {file_label}")),
+        ),
         Err(error) => Failure::from(error),
     })?;
     let output::Committed {
@@ -302,13 +356,52 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             eprintln!("--force: replaced {}, which Flapwright had not written", path.display());
         }
     }
-    if mode != Mode::Check && !cli.quiet && !cli.json {
+    let check_failed = mode == Mode::Check && outcome.summary.interference_passes == Some(false);
+    if !cli.quiet && !cli.json {
         for warning in &outcome.report.warnings {
             eprintln!("warning: {warning}");
         }
+    } else if !cli.quiet && check_failed {
+        // With --json, stderr still says which pairs failed.
+        for warning in outcome.report.warnings.iter().filter(|w| w.starts_with("interference")) {
+            eprintln!("{warning}");
+        }
     }
+    let verdict_failure = |error: anyhow::Error| -> Result<Failure, Failure> {
+        Ok(Failure {
+            code: EXIT_FAILED,
+            error,
+            summary: Some(serde_json::to_value(&outcome.summary)?),
+        })
+    };
+    let strict = matches!(cli.command, Some(Command::Check { strict: true, .. }));
+    let failure = if check_failed {
+        Some(verdict_failure(anyhow::anyhow!(
+            "interference check failed: see {}",
+            written.join("report.json").display()
+        ))?)
+    } else {
+        match (strict, &outcome.report.interference) {
+            (true, Some(report)) => match report.unchecked_pairs.first() {
+                Some(first) => Some(verdict_failure(anyhow::anyhow!(
+                    "--strict: {} pair(s) were not checked, for example {} vs {} at station {} ({}); see unchecked_pairs in {}",
+                    report.unchecked_pairs.len(),
+                    first.part_a,
+                    first.part_b,
+                    first.station,
+                    first.reason,
+                    written.join("report.json").display()
+                ))?),
+                None => None,
+            },
+            _ => None,
+        }
+    };
     if cli.json {
-        println!("{}", serde_json::to_string(&outcome.summary)?);
+        // One line: the summary, or the error object that carries it.
+        if failure.is_none() {
+            println!("{}", serde_json::to_string(&outcome.summary)?);
+        }
     } else if !cli.quiet {
         let mut verdict = match outcome.summary.interference_passes {
             Some(true) => ", clearances met".to_string(),
@@ -332,42 +425,14 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             written.display()
         );
     }
-    if mode == Mode::Check && outcome.summary.interference_passes == Some(false) {
-        if !cli.quiet {
-            for warning in outcome.report.warnings.iter().filter(|w| w.starts_with("interference")) {
-                eprintln!("{warning}");
-            }
-        }
-        return Err(Failure {
-            code: EXIT_FAILED,
-            error: anyhow::anyhow!(
-                "interference check failed: see {}",
-                written.join("report.json").display()
-            ),
-        });
-    }
-    let strict = matches!(cli.command, Some(Command::Check { strict: true, .. }));
-    if let (true, Some(report)) = (strict, &outcome.report.interference) {
-        if let Some(first) = report.unchecked_pairs.first() {
-            return Err(Failure {
-                code: EXIT_FAILED,
-                error: anyhow::anyhow!(
-                    "--strict: {} pair(s) were not checked, for example {} vs {} at station {} ({}); see unchecked_pairs in {}",
-                    report.unchecked_pairs.len(),
-                    first.part_a,
-                    first.part_b,
-                    first.station,
-                    first.reason,
-                    written.join("report.json").display()
-                ),
-            });
-        }
+    if let Some(failure) = failure {
+        return Err(failure);
     }
     Ok(())
 }
 
-/// `flapwright study`: validates the scene as given, then designs each kind in place of its
-/// stations' mechanisms and prints the comparison.
+/// `flapwright study`: validates the scene as given and the flags, then designs each kind
+/// in place of its stations' mechanisms and prints the comparison.
 fn study(
     cli: &Cli,
     scene_path: Option<&Path>,
@@ -378,26 +443,57 @@ fn study(
     use flapwright::kinds::MechanismScene;
     let (text, scene_dir) = read_scene_text(scene_path)?;
     let label = scene_path.map_or("(embedded default)".into(), |p| p.display().to_string());
-    let bad_input = |error: anyhow::Error| Failure {
-        code: EXIT_BAD_INPUT,
-        error,
-    };
-    Scene::from_file_text(&text, &label, scene_dir.as_deref())
+    let scene = Scene::from_file_text(&text, &label, scene_dir.as_deref())
         .map_err(|e| bad_input(anyhow::Error::new(e).context(format!("invalid scene {label}"))))?;
     let kinds: Vec<String> = if kinds.is_empty() {
         flapwright::study::DEFAULT_KINDS.iter().map(|k| k.to_string()).collect()
     } else {
         kinds.to_vec()
     };
-    if let Some(unknown) = kinds.iter().find(|k| !MechanismScene::KINDS.contains(&k.as_str())) {
-        return Err(bad_input(anyhow::anyhow!(
-            "--kinds {unknown}: unknown mechanism kind; one of {}",
-            MechanismScene::KINDS.join(", ")
-        )));
+    let studied = MechanismScene::SYNTHESISED_KINDS.join(", ");
+    for (i, kind) in kinds.iter().enumerate() {
+        if !MechanismScene::KINDS.contains(&kind.as_str()) {
+            return Err(bad_input(anyhow::anyhow!(
+                "--kinds {kind}: unknown mechanism kind; the study compares {studied}"
+            )));
+        }
+        if !MechanismScene::SYNTHESISED_KINDS.contains(&kind.as_str()) {
+            return Err(bad_input(anyhow::anyhow!(
+                "--kinds {kind}: cannot be studied: it is given by its dimensions, and the study puts kinds synthesised from the flap settings in place of the stations' mechanisms: {studied}"
+            )));
+        }
+        if kinds[..i].contains(kind) {
+            return Err(bad_input(anyhow::anyhow!("--kinds {kind}: named twice")));
+        }
     }
+    for (i, name) in stations.iter().enumerate() {
+        if !scene.station.iter().any(|s| &s.name == name) {
+            let names: Vec<&str> = scene.station.iter().map(|s| s.name.as_str()).collect();
+            return Err(bad_input(anyhow::anyhow!(
+                "--station {name}: no such station in \"{}\" (its stations: {})",
+                scene.name,
+                names.join(", ")
+            )));
+        }
+        if stations[..i].contains(name) {
+            return Err(bad_input(anyhow::anyhow!("--station {name}: named twice")));
+        }
+    }
+    flapwright::study::requirements(&scene, &text, &label, stations).map_err(|e| bad_input(anyhow::Error::new(e)))?;
     let mut staged = StagedDir::create(out, scene_path, cli.force)?;
     print_notices(cli, &staged.take_notices());
-    let study = flapwright::study::run(&text, scene_dir.as_deref(), &label, &kinds, stations, &staged)?;
+    let study = flapwright::study::run(&scene, &text, scene_dir.as_deref(), &label, &kinds, stations, &staged)
+        .map_err(|error| {
+            let code = match error.downcast_ref::<flapwright::study::NoKindDesigned>() {
+                Some(none) if none.input_problem => EXIT_BAD_INPUT,
+                _ => EXIT_FAILED,
+            };
+            Failure {
+                code,
+                error,
+                summary: None,
+            }
+        })?;
     let committed = staged
         .commit()
         .with_context(|| format!("moving results into {}", out.display()))?;
@@ -432,16 +528,11 @@ fn read_scene_text(path: Option<&Path>) -> Result<(String, Option<PathBuf>), Fai
         None => Ok((DEFAULT_SCENE_TOML.to_string(), None)),
         Some(path) => {
             // No further than the size limit: an endless file (`/dev/zero`) is refused at once.
-            let bytes = std::fs::File::open(path)
-                .and_then(Scene::read_bytes)
-                .map_err(|e| Failure {
-                    code: EXIT_BAD_INPUT,
-                    error: anyhow::Error::new(e).context(format!("reading scene file {}", path.display())),
-                })?;
-            let text = Scene::decode(bytes, &path.display().to_string()).map_err(|e| Failure {
-                code: EXIT_BAD_INPUT,
-                error: anyhow::Error::new(e).context(format!("invalid scene {}", path.display())),
+            let bytes = std::fs::File::open(path).and_then(Scene::read_bytes).map_err(|e| {
+                bad_input(anyhow::Error::new(e).context(format!("reading scene file {}", path.display())))
             })?;
+            let text = Scene::decode(bytes, &path.display().to_string())
+                .map_err(|e| bad_input(anyhow::Error::new(e).context(format!("invalid scene {}", path.display()))))?;
             let dir = path.parent().map(Path::to_path_buf);
             Ok((text, dir))
         }

@@ -124,7 +124,8 @@ pub fn design_with_progress(
         on_stage,
     };
     let mut parts: Vec<PartReport> = Vec::new();
-    let mut warnings: Vec<String> = Vec::new();
+    // The file's own warnings first (values that pass but are likely slips), located.
+    let mut warnings: Vec<String> = scene.warnings.clone();
     let mut interference_report = None;
     let mut mechanism_part_reports = Vec::new();
 
@@ -206,6 +207,12 @@ pub fn design_with_progress(
     }
     if full && outputs.kinematics {
         let samples = scene.resolution.deployment_samples;
+        if scene.loads.cases.is_empty() && !records.is_empty() {
+            warnings.push(format!(
+                "loads: the scene gives no [[loads.cases]]: each mechanism is loaded by its flap's weight alone (case \"{}\"); give the air loads as [[loads.cases]] (moments or flight conditions)",
+                mechanisms::weight_only().name
+            ));
+        }
         stages.run("kinematics", || {
             for record in &mut records {
                 let cases = mechanisms::load_cases(scene, record);

@@ -9,7 +9,9 @@
 //! against deflection for every kind and a ranking.
 //!
 //! The study edits the scene as a TOML table and touches only the `kind` key and the
-//! kind-neutral keys above, so it names no kind: a new kind is studied by naming it.
+//! kind-neutral keys above, so it names no kind: a new kind is studied by naming it. The
+//! tables are never written out as text: their problems are located in the user's file,
+//! with the station and flap indices of that file.
 
 use std::path::Path;
 
@@ -22,10 +24,10 @@ use serde_json::Value;
 use crate::output::StagedDir;
 use crate::pipeline::WingCache;
 use crate::pipeline::{self, Inputs, Mode};
-use crate::scene::Scene;
+use crate::scene::{Problem, Scene, SceneError};
 
 /// The kinds studied when none are named: every kind synthesised from the flap settings.
-pub const DEFAULT_KINDS: [&str; 4] = ["dropped-hinge", "four-bar", "link-track", "hooked-track"];
+pub const DEFAULT_KINDS: &[&str] = crate::kinds::MechanismScene::SYNTHESISED_KINDS;
 
 /// Keys of a station's mechanism table every kind synthesised from the settings takes.
 const CARRIED_KEYS: [&str; 3] = ["flap_mass_kg", "flap_centre_of_mass_m", "min_transmission_angle_deg"];
@@ -134,31 +136,73 @@ fn rank(figures: &StationFigures) -> (bool, usize, f64, f64) {
     )
 }
 
-/// The scene text with every studied station's mechanism replaced by `kind` (only the
-/// stations named in `stations`, all when empty; the others and flaps left without
-/// stations are removed so that the study designs only what it compares), and outputs
-/// limited to what the figures need.
-pub fn variant_text(text: &str, kind: &str, stations: &[String]) -> Result<String> {
+/// A studied scene as a table, and where its stations and flaps come from in the user's
+/// file (the study keeps only the studied stations and their flaps).
+#[derive(Debug, Clone)]
+pub struct Variant {
+    /// The scene table with the kind in place of each kept station's mechanism.
+    pub table: toml::Table,
+    /// For each kept station, its index in the user's file.
+    pub station_index: Vec<usize>,
+    /// For each kept flap, its index in the user's file.
+    pub flap_index: Vec<usize>,
+}
+
+impl Variant {
+    /// `path` (`station[0].mechanism`) with the station and flap indices of the user's file.
+    pub fn user_path(&self, path: &str) -> String {
+        for (table, map) in [("station[", &self.station_index), ("flap[", &self.flap_index)] {
+            let Some(rest) = path.strip_prefix(table) else { continue };
+            let Some((index, tail)) = rest.split_once(']') else {
+                continue;
+            };
+            if let Some(original) = index.parse::<usize>().ok().and_then(|i| map.get(i)) {
+                return format!("{table}{original}]{tail}");
+            }
+        }
+        path.to_string()
+    }
+
+    /// Problems by key path, located in the user's file (`text`, named `file`).
+    fn locate(&self, problems: Vec<Problem>, text: &str, file: &str) -> SceneError {
+        let problems = problems
+            .into_iter()
+            .map(|p| Problem::new(self.user_path(&p.path), p.message))
+            .collect();
+        SceneError::Invalid(problems).locate(text, file)
+    }
+}
+
+/// The scene with every studied station's mechanism replaced by `kind` (only the stations
+/// named in `stations`, all when empty; the others and flaps left without stations are
+/// removed so that the study designs only what it compares), and outputs limited to what
+/// the figures need. `scene` is the same file, parsed: it gives the flap mass of a station
+/// whose table names it otherwise (the five-bar's two elements).
+pub fn variant(text: &str, scene: &Scene, kind: &str, stations: &[String]) -> Result<Variant> {
     let mut table: toml::Table = text.parse().context("parsing the scene as TOML")?;
     let list = table
         .get_mut("station")
         .and_then(|v| v.as_array_mut())
         .ok_or_else(|| anyhow!("the scene has no [[station]] to study"))?;
-    if !stations.is_empty() {
-        list.retain(|s| {
-            s.get("name")
-                .and_then(|n| n.as_str())
-                .is_some_and(|n| stations.iter().any(|w| w == n))
-        });
-        if list.is_empty() {
-            return Err(anyhow!("no station named {}", stations.join(", ")));
-        }
-    }
-    let flaps_used: Vec<String> = list
+    let studied = |name: &str| stations.is_empty() || stations.iter().any(|w| w == name);
+    let station_index: Vec<usize> = scene
+        .station
         .iter()
-        .filter_map(|s| s.get("flap").and_then(|f| f.as_str()).map(String::from))
+        .enumerate()
+        .filter(|(_, s)| studied(&s.name))
+        .map(|(i, _)| i)
         .collect();
-    for station in list.iter_mut() {
+    if station_index.is_empty() {
+        return Err(anyhow!("no station named {}", stations.join(", ")));
+    }
+    if list.len() != scene.station.len() {
+        return Err(anyhow!(
+            "the scene's [[station]] tables are not the scene it was parsed into"
+        ));
+    }
+    let kept: Vec<toml::Value> = station_index.iter().map(|&i| list[i].clone()).collect();
+    *list = kept;
+    for (station, &i) in list.iter_mut().zip(&station_index) {
         let Some(mechanism) = station.get_mut("mechanism").and_then(|m| m.as_table_mut()) else {
             continue;
         };
@@ -169,14 +213,26 @@ pub fn variant_text(text: &str, kind: &str, stations: &[String]) -> Result<Strin
                 replaced.insert(key.into(), value.clone());
             }
         }
+        if !replaced.contains_key("flap_mass_kg") {
+            let mass = scene.station[i].mechanism.kind().flap_mass_kg();
+            replaced.insert("flap_mass_kg".into(), toml::Value::Float(mass));
+        }
         *mechanism = replaced;
     }
+    let flaps_used: Vec<&str> = station_index
+        .iter()
+        .filter_map(|&i| scene.station[i].flap.as_deref())
+        .collect();
+    let flap_index: Vec<usize> = scene
+        .flap
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| flaps_used.contains(&f.name.as_str()))
+        .map(|(i, _)| i)
+        .collect();
     if let Some(flaps) = table.get_mut("flap").and_then(|v| v.as_array_mut()) {
-        flaps.retain(|f| {
-            f.get("name")
-                .and_then(|n| n.as_str())
-                .is_some_and(|n| flaps_used.iter().any(|u| u == n))
-        });
+        let kept: Vec<toml::Value> = flap_index.iter().filter_map(|&i| flaps.get(i).cloned()).collect();
+        *flaps = kept;
     }
     let mut outputs = toml::Table::new();
     for (key, on) in [
@@ -204,15 +260,116 @@ pub fn variant_text(text: &str, kind: &str, stations: &[String]) -> Result<Strin
     if let Some(interference) = interference.as_table_mut() {
         interference.insert("stop_at_verdict".into(), toml::Value::Boolean(true));
     }
-    toml::to_string(&table).context("writing the study's scene")
+    Ok(Variant {
+        table,
+        station_index,
+        flap_index,
+    })
 }
 
-/// Runs the study: one design per kind into `out/<kind>/`, then `study.json` and the gap
-/// and overlap charts (`study-<station>.svg`) into `out`.
+/// A scene the study cannot compare kinds on: its problems, located in the file, shown on
+/// one line.
+#[derive(Debug)]
+pub struct Unstudiable(pub SceneError);
+
+impl std::fmt::Display for Unstudiable {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.0.lines().join("; "))
+    }
+}
+
+impl std::error::Error for Unstudiable {}
+
+/// What a study needs of its scene before any kind is designed: a `[wing]` (the kinds are
+/// synthesised in the stations' sections) and, on every studied station's flap, the four
+/// gap and overlap targets its settings are synthesised to.
+pub fn requirements(scene: &Scene, text: &str, file: &str, stations: &[String]) -> Result<(), Unstudiable> {
+    let unstudiable = |problem: Problem| Unstudiable(SceneError::Invalid(vec![problem]).locate(text, file));
+    if scene.wing.is_none() {
+        return Err(unstudiable(Problem::new(
+            "wing",
+            format!(
+                "`study` needs a scene with a [wing]: its kinds are synthesised from the flap settings in each station's sections, and \"{}\" is a 2D station",
+                scene.name
+            ),
+        )));
+    }
+    let studied = |name: &str| stations.is_empty() || stations.iter().any(|w| w == name);
+    for (i, flap) in scene.flap.iter().enumerate() {
+        let carried = scene
+            .station
+            .iter()
+            .any(|s| studied(&s.name) && s.flap.as_deref() == Some(flap.name.as_str()));
+        let settings = &flap.settings;
+        let missing: Vec<&str> = [
+            ("takeoff_gap_percent", settings.takeoff_gap_percent),
+            ("takeoff_overlap_percent", settings.takeoff_overlap_percent),
+            ("landing_gap_percent", settings.landing_gap_percent),
+            ("landing_overlap_percent", settings.landing_overlap_percent),
+        ]
+        .iter()
+        .filter(|(_, value)| value.is_none())
+        .map(|(key, _)| *key)
+        .collect();
+        if carried && !missing.is_empty() {
+            return Err(unstudiable(Problem::new(
+                format!("flap[{i}].settings"),
+                format!(
+                    "the study's kinds are synthesised to the flap's gap and overlap targets: give {} (% of the local chord)",
+                    missing.join(", ")
+                ),
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// No kind could be designed: each kind's reason, on one line.
+#[derive(Debug)]
+pub struct NoKindDesigned {
+    /// The scene's name.
+    pub scene: String,
+    /// Each kind and its reason, as one line.
+    pub reasons: Vec<(String, String)>,
+    /// Every reason is a problem of the input (the scene), not of Flapwright.
+    pub input_problem: bool,
+}
+
+impl std::fmt::Display for NoKindDesigned {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let reasons: Vec<String> = self
+            .reasons
+            .iter()
+            .map(|(kind, why)| format!("{kind}: {why}"))
+            .collect();
+        write!(
+            f,
+            "study of \"{}\": no kind could be designed; {}",
+            self.scene,
+            reasons.join("; ")
+        )
+    }
+}
+
+impl std::error::Error for NoKindDesigned {}
+
+/// A kind's failure as one line: a scene's problems joined, any other error's chain.
+fn one_line(error: &anyhow::Error) -> String {
+    match error.downcast_ref::<SceneError>() {
+        Some(scene_error) => scene_error.lines().join("; "),
+        None => format!("{error:#}").replace('\n', " "),
+    }
+}
+
+/// Runs the study of `scene` (read from `text`, the file named `file`): one design per kind
+/// into `out/<kind>/`, then `study.json` and the gap and overlap charts
+/// (`study-<station>.svg`) into `out`. Every problem a kind meets is located in the user's
+/// file. A study in which no kind designs is an error ([`NoKindDesigned`]).
 pub fn run(
+    scene: &Scene,
     text: &str,
     scene_dir: Option<&Path>,
-    label: &str,
+    file: &str,
     kinds: &[String],
     stations: &[String],
     out: &StagedDir,
@@ -223,36 +380,41 @@ pub fn run(
     // the others' work.
     let variants = kinds
         .iter()
-        .map(|kind| Ok((kind, variant_text(text, kind, stations)?)))
+        .map(|kind| Ok((kind, variant(text, scene, kind, stations)?)))
         .collect::<Result<Vec<_>>>()?;
     // The kinds design the same wing: its meshes, their statistics and their collision
     // shapes are built once for all.
     let cache = WingCache::default();
     let designed: Vec<_> = variants
         .par_iter()
-        .map(|(kind, variant)| {
-            let label = format!("{label} as {kind}");
-            (*kind, design_kind(variant, scene_dir, &label, kind, out, &cache))
-        })
+        .map(|(kind, variant)| (*kind, design_kind(variant, text, scene_dir, file, kind, out, &cache)))
         .collect();
     let mut outcomes = Vec::new();
-    let mut scene_name = String::new();
+    let mut failures = Vec::new();
     for (kind, outcome) in designed {
         match outcome {
-            Ok((name, figures)) => {
-                scene_name = name;
+            Ok(figures) => outcomes.push(KindOutcome {
+                kind: kind.clone(),
+                stations: figures,
+                error: None,
+            }),
+            Err(error) => {
                 outcomes.push(KindOutcome {
                     kind: kind.clone(),
-                    stations: figures,
-                    error: None,
+                    stations: Vec::new(),
+                    error: Some(format!("{error:#}")),
                 });
+                failures.push((kind.clone(), error));
             }
-            Err(error) => outcomes.push(KindOutcome {
-                kind: kind.clone(),
-                stations: Vec::new(),
-                error: Some(format!("{error:#}")),
-            }),
         }
+    }
+    if !kinds.is_empty() && failures.len() == kinds.len() {
+        return Err(NoKindDesigned {
+            scene: scene.name.clone(),
+            input_problem: failures.iter().all(|(_, e)| e.downcast_ref::<SceneError>().is_some()),
+            reasons: failures.iter().map(|(kind, e)| (kind.clone(), one_line(e))).collect(),
+        }
+        .into());
     }
     let mut station_names: Vec<String> = Vec::new();
     for figures in outcomes.iter().flat_map(|o| &o.stations) {
@@ -272,7 +434,7 @@ pub fn run(
         })
         .collect();
     let study = Study {
-        scene: scene_name,
+        scene: scene.name.clone(),
         kinds: outcomes,
         ranking,
         ranking_rule: RANKING_RULE,
@@ -290,34 +452,51 @@ pub fn run(
     Ok(study)
 }
 
-/// Designs one kind's variant into `out/<kind>/` and gathers its stations' figures.
+/// Designs one kind's variant into `out/<kind>/` (no folder when it fails) and gathers its
+/// stations' figures; its problems are located in the user's file.
 fn design_kind(
-    variant: &str,
+    variant: &Variant,
+    text: &str,
     scene_dir: Option<&Path>,
-    label: &str,
+    file: &str,
     kind: &str,
     out: &StagedDir,
     cache: &WingCache,
-) -> Result<(String, Vec<StationFigures>)> {
-    let scene =
-        Scene::from_file_text(variant, label, scene_dir).map_err(|e| anyhow!("{}", e.locate(variant, label)))?;
+) -> Result<Vec<StationFigures>> {
+    let scene = Scene::from_table(&variant.table, scene_dir).map_err(|p| variant.locate(p, text, file))?;
     let folder = out.file(kind);
     std::fs::create_dir_all(&folder).with_context(|| format!("creating {}", folder.display()))?;
-    let staged = StagedDir::create(&folder, None, false)?;
-    let inputs = Inputs {
-        scene: &scene,
-        scene_text: variant,
-        scene_dir,
-        wing_cache: Some(cache),
+    let designed = (|| {
+        let staged = StagedDir::create(&folder, None, false)?;
+        let inputs = Inputs {
+            scene: &scene,
+            scene_text: text,
+            scene_dir,
+            wing_cache: Some(cache),
+        };
+        let outcome =
+            pipeline::design(&inputs, Mode::Design, &staged).map_err(|error| match error.downcast::<SceneError>() {
+                Ok(SceneError::Invalid(problems)) => anyhow::Error::new(variant.locate(problems, text, file)),
+                Ok(other) => anyhow::Error::new(other),
+                Err(error) => error,
+            })?;
+        staged.commit()?;
+        Ok::<_, anyhow::Error>(outcome)
+    })();
+    let outcome = match designed {
+        Ok(outcome) => outcome,
+        Err(error) => {
+            // No empty folder for a kind that could not be designed.
+            let _ = std::fs::remove_dir_all(&folder);
+            return Err(error);
+        }
     };
-    let outcome = pipeline::design(&inputs, Mode::Design, &staged)?;
-    staged.commit()?;
     let report = serde_json::to_value(&outcome.report).context("reading the kind's report")?;
     let figures = report["stations"]
         .as_array()
         .map(|stations| stations.iter().map(|s| station_figures(&report, s)).collect())
         .unwrap_or_default();
-    Ok((scene.name.clone(), figures))
+    Ok(figures)
 }
 
 fn number(value: &Value) -> f64 {
@@ -379,9 +558,9 @@ fn station_figures(report: &Value, station: &Value) -> StationFigures {
                 number(&s["target_gap_percent_chord"]),
                 number(&s["target_overlap_percent_chord"]),
             ],
-            gap_miss_percent_chord: number(&s["gap_percent_chord"]) - number(&s["target_gap_percent_chord"]),
-            overlap_miss_percent_chord: number(&s["overlap_percent_chord"])
-                - number(&s["target_overlap_percent_chord"]),
+            // Against what the setting was built to: a sealed slot's gap against its seal.
+            gap_miss_percent_chord: number(&s["gap_miss_percent_chord"]),
+            overlap_miss_percent_chord: number(&s["overlap_miss_percent_chord"]),
         })
         .collect();
     let prefix = format!("{name}.");
@@ -551,44 +730,42 @@ mod tests {
         assert!(station_figures(&other_flap, &station).clearance_passes);
     }
 
-    const SCENE: &str = r#"
-name = "s"
-[[flap]]
-name = "a"
-[[flap]]
-name = "b"
-[[station]]
-name = "one"
-flap = "a"
-[station.mechanism]
-kind = "four-bar"
-flap_mass_kg = 10.0
-forward_pivot_m = [0.1, 0.2]
-min_transmission_angle_deg = 35.0
-[[station]]
-name = "two"
-flap = "b"
-[station.mechanism]
-kind = "dropped-hinge"
-flap_mass_kg = 12.0
-"#;
+    fn parsed(text: &str) -> Scene {
+        crate::scene::parse::typed(&text.parse().unwrap()).unwrap()
+    }
 
     #[test]
     fn a_variant_keeps_the_kind_neutral_keys_and_the_studied_stations_only() {
-        let text = variant_text(SCENE, "hooked-track", &["one".into()]).unwrap();
-        let table: toml::Table = text.parse().unwrap();
+        let text = crate::scene::DEFAULT_SCENE_TOML;
+        let variant = variant(text, &parsed(text), "hooked-track", &["outer".into()]).unwrap();
+        let table = &variant.table;
         let stations = table["station"].as_array().unwrap();
         assert_eq!(stations.len(), 1);
+        assert_eq!(variant.station_index, [1]);
+        assert_eq!(
+            variant.user_path("station[0].mechanism.kind"),
+            "station[1].mechanism.kind"
+        );
+        assert_eq!(variant.user_path("flap[0].settings"), "flap[0].settings");
         let mechanism = stations[0]["mechanism"].as_table().unwrap();
         assert_eq!(mechanism["kind"].as_str(), Some("hooked-track"));
-        assert_eq!(mechanism["flap_mass_kg"].as_float(), Some(10.0));
-        assert_eq!(mechanism["min_transmission_angle_deg"].as_float(), Some(35.0));
-        assert!(!mechanism.contains_key("forward_pivot_m"));
-        let flaps = table["flap"].as_array().unwrap();
-        assert_eq!(flaps.len(), 1, "the flap without a studied station goes");
+        assert_eq!(mechanism["flap_mass_kg"].as_float(), Some(12.0));
+        assert!(mechanism.contains_key("flap_centre_of_mass_m"));
+        assert!(!mechanism.contains_key("base_distance_m"));
+        assert_eq!(table["flap"].as_array().unwrap().len(), 1);
         assert_eq!(table["outputs"]["urdf"].as_bool(), Some(false));
         assert_eq!(table["interference"]["stop_at_verdict"].as_bool(), Some(true));
-        assert!(variant_text(SCENE, "four-bar", &["none".into()]).is_err());
+        assert!(super::variant(text, &parsed(text), "four-bar", &["none".into()]).is_err());
+    }
+
+    #[test]
+    fn a_variant_carries_the_flap_mass_a_kind_names_otherwise() {
+        let text = include_str!("../../../data/scenes/double-slotted-wing.toml");
+        let variant = variant(text, &parsed(text), "dropped-hinge", &[]).unwrap();
+        for station in variant.table["station"].as_array().unwrap() {
+            // The five-bar's main and secondary flap masses.
+            assert_eq!(station["mechanism"]["flap_mass_kg"].as_float(), Some(70.0));
+        }
     }
 
     fn figures(clears: bool, miss: f64, depth: f64) -> StationFigures {

@@ -1,7 +1,8 @@
 //! Mechanism kinds as the scene file gives them: `[station.mechanism]` picks a kind by its
 //! `kind` key, and each kind's module holds its table, the checks of its keys and its
 //! synthesis into a [`FlapMechanism`] (the seam every other stage uses). Adding a kind adds
-//! a module here, a variant, a `KINDS` name and two match arms in this file, and its mechanism module in
+//! a module here, a variant, a `KINDS` name (and a `SYNTHESISED_KINDS` one if it is synthesised from
+//! the settings) and two match arms in this file, and its mechanism module in
 //! `flapwright-mechanism`: nothing that names another kind.
 
 mod circular_arc_track;
@@ -345,6 +346,11 @@ impl MechanismScene {
         "five-bar",
     ];
 
+    /// The kinds synthesised from the flap settings and the station's sections, every other
+    /// choice defaulted or searched: the ones the trade study (`flapwright study`) can put
+    /// in place of any station's mechanism (the others are given by their dimensions).
+    pub const SYNTHESISED_KINDS: &'static [&'static str] = &["dropped-hinge", "four-bar", "link-track", "hooked-track"];
+
     /// The kind behind the variant: everything else reaches the kind through it.
     pub fn kind(&self) -> &dyn KindScene {
         match self {
@@ -369,12 +375,17 @@ impl<'de> Deserialize<'de> for MechanismScene {
         let kind = match table.remove("kind") {
             Some(toml::Value::String(kind)) => kind,
             Some(other) => {
-                return Err(D::Error::custom(crate::scene::parse::nested_error_at(
+                return Err(D::Error::custom(crate::scene::parse::deciding_error_at(
                     "kind",
                     &format!("= {other}: must be a string, one of {}", Self::KINDS.join(", ")),
                 )))
             }
-            None => return Err(D::Error::missing_field("kind")),
+            None => {
+                return Err(D::Error::custom(crate::scene::parse::deciding_error_at(
+                    "kind",
+                    &format!("missing: this key is required, one of {}", Self::KINDS.join(", ")),
+                )))
+            }
         };
         fn variant<T: serde::de::DeserializeOwned, E: Error>(table: toml::Table) -> Result<T, E> {
             serde_path_to_error::deserialize(toml::Value::Table(table))
@@ -387,7 +398,7 @@ impl<'de> Deserialize<'de> for MechanismScene {
             "link-track" => variant::<_, D::Error>(table).map(Self::LinkTrack),
             "hooked-track" => variant::<_, D::Error>(table).map(Self::HookedTrack),
             "five-bar" => variant::<_, D::Error>(table).map(Self::FiveBar),
-            other => Err(D::Error::custom(crate::scene::parse::nested_error_at(
+            other => Err(D::Error::custom(crate::scene::parse::deciding_error_at(
                 "kind",
                 &format!(
                     "= \"{other}\": unknown mechanism kind; one of {}",

@@ -63,6 +63,18 @@ impl KeyPathBuf {
         Self { steps }
     }
 
+    /// This path without its last step.
+    pub fn parent(&self) -> Self {
+        let mut steps = self.steps.clone();
+        steps.pop();
+        Self { steps }
+    }
+
+    /// True when `prefix`'s steps begin this path.
+    pub fn starts_with(&self, prefix: &Self) -> bool {
+        self.steps.starts_with(&prefix.steps)
+    }
+
     /// Appends another path.
     pub fn extend(&mut self, other: &Self) {
         self.steps.extend(other.steps.iter().cloned());
@@ -141,6 +153,56 @@ impl<'t> SpannedScene<'t> {
     }
 }
 
+impl SpannedScene<'_> {
+    /// The deepest key path whose key or value holds byte `offset` (empty when none does):
+    /// for an error the parser reports by position only (an integer too large).
+    pub fn path_at(&self, offset: usize) -> KeyPathBuf {
+        let mut steps = Vec::new();
+        if let Some(root) = &self.root {
+            path_in_table(root.get_ref(), offset, &mut steps);
+        }
+        KeyPathBuf { steps }
+    }
+}
+
+// A table opened by a header (`[station.mechanism]`) or an array of tables may span its
+// header only: where no entry holds the offset, the one opened last before it does.
+fn path_in_table(table: &DeTable<'_>, offset: usize, steps: &mut Vec<Step>) {
+    let holding = table
+        .iter()
+        .find(|(key, value)| key.span().contains(&offset) || value.span().contains(&offset))
+        .or_else(|| {
+            table
+                .iter()
+                .filter(|(_, value)| {
+                    matches!(value.get_ref(), DeValue::Table(_) | DeValue::Array(_)) && value.span().start <= offset
+                })
+                .max_by_key(|(_, value)| value.span().start)
+        });
+    if let Some((key, value)) = holding {
+        steps.push(Step::Key(key.get_ref().to_string()));
+        path_in_value(value, offset, steps);
+    }
+}
+
+fn path_in_value(value: &Spanned<DeValue<'_>>, offset: usize, steps: &mut Vec<Step>) {
+    match value.get_ref() {
+        DeValue::Table(table) => path_in_table(table, offset, steps),
+        DeValue::Array(array) => {
+            let element = array
+                .iter()
+                .enumerate()
+                .find(|(_, e)| e.span().contains(&offset))
+                .or_else(|| array.iter().enumerate().rev().find(|(_, e)| e.span().start <= offset));
+            if let Some((i, element)) = element {
+                steps.push(Step::Index(i));
+                path_in_value(element, offset, steps);
+            }
+        }
+        _ => {}
+    }
+}
+
 /// Start of the deepest span along `steps` under `table`.
 fn deepest_span(table: &Spanned<DeTable<'_>>, steps: &[Step]) -> usize {
     let mut best = table.span().start;
@@ -201,6 +263,15 @@ mod tests {
         // A missing key points at the table it belongs in.
         assert_eq!(at("station[0].mechanism.flap_mass_kg"), "11:10");
         assert_eq!(at("wing.sections[5].y_m"), "4:1");
+    }
+
+    #[test]
+    fn a_position_is_named_by_the_key_that_holds_it() {
+        let text = "name = \"x\"\n[[station]]\nname = \"s\"\n[station.mechanism]\nkind = \"k\"\nturns = 123\n";
+        let scene = SpannedScene::new(text);
+        let offset = text.find("123").unwrap() + 1;
+        assert_eq!(scene.path_at(offset).to_string(), "station[0].mechanism.turns");
+        assert_eq!(scene.path_at(0).to_string(), "name");
     }
 
     #[test]

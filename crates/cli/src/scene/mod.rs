@@ -21,7 +21,9 @@ pub use key_path::Location;
 pub use settings::{InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene, StlSetting};
 pub use station::{LoadCaseScene, LoadsScene, StationScene};
 pub(crate) use validate::default_tube_end;
-pub use validate::{limits, number, KeyChecker, LocatedProblem, Problem, SceneError, MAX_SCENE_BYTES};
+pub use validate::{
+    limits, number, KeyChecker, LocatedProblem, Problem, SceneError, FRACTION_LIKE_PERCENT, MAX_SCENE_BYTES,
+};
 pub use wing::{
     FlapScene, HingeScene, PanelScene, SettingsScene, SparScene, StructureScene, SweepReferenceScene, TorqueTubeScene,
     WingScene, WingSectionScene,
@@ -72,4 +74,9 @@ pub struct Scene {
     pub materials: Vec<MaterialScene>,
     /// Drive dynamics: a DC motor deploying each station whose kind models its masses.
     pub dynamics: Option<DynamicsScene>,
+    /// Values that pass validation but look like slips (a percentage written as a
+    /// fraction), each located when the file was read (`file:line:col: key = value: why`):
+    /// every run reports them first among its warnings. Not a key of the file.
+    #[serde(skip)]
+    pub warnings: Vec<String>,
 }

@@ -24,6 +24,18 @@ pub const MAX_ROUNDS: usize = 200;
 /// between the first two markers is the inner key path.
 const NESTED_MARK: char = '\u{1}';
 
+/// Starts the text of an error after which the rest of its table is moot (see
+/// [`deciding_error_at`]).
+const DECIDES_MARK: char = '\u{2}';
+
+/// An error message naming the key `key` that decides what the rest of its table means (a
+/// mechanism's `kind`): once it is wrong, the table's other keys are not reported, since
+/// they would be judged against a table the user did not mean (a misspelt kind would
+/// otherwise be followed by every missing key of the stand-in kind).
+pub fn deciding_error_at(key: &str, message: &str) -> String {
+    nested_error_at(key, &format!("{DECIDES_MARK}{message}"))
+}
+
 /// An error message that carries the key path of a nested deserialisation, so that a
 /// custom `Deserialize` (the mechanism kinds) does not hide which key failed.
 pub fn nested_error(inner_path: &KeyPath, message: &str) -> String {
@@ -64,6 +76,8 @@ pub fn typed<T: DeserializeOwned>(table: &Table) -> Result<T, Vec<Problem>> {
     let mut problems: Vec<Problem> = Vec::new();
     // Stand-ins tried so far at each patched path.
     let mut tried: Vec<(KeyPathBuf, usize)> = Vec::new();
+    // Tables whose deciding key is wrong: nothing more is reported under them.
+    let mut moot: Vec<KeyPathBuf> = Vec::new();
     for _ in 0..MAX_ROUNDS {
         let error = match serde_path_to_error::deserialize::<_, T>(work.clone()) {
             Ok(value) if problems.is_empty() => return Ok(value),
@@ -76,6 +90,10 @@ pub fn typed<T: DeserializeOwned>(table: &Table) -> Result<T, Vec<Problem>> {
         if let Some(inner) = inner {
             path.extend(&KeyPathBuf::parse(&inner));
         }
+        let (text, decides) = match text.strip_prefix(DECIDES_MARK) {
+            Some(text) => (text, true),
+            None => (text, false),
+        };
         let fault = Fault::classify(text);
         let (problem_path, patch) = match &fault {
             Fault::Missing(key) => (path.child(key), Patch::StandIn),
@@ -98,10 +116,15 @@ pub fn typed<T: DeserializeOwned>(table: &Table) -> Result<T, Vec<Problem>> {
             }
             None => {
                 tried.push((problem_path.clone(), 0));
-                problems.push(Problem::new(problem_path.to_string(), fault.message()));
+                if !moot.iter().any(|table| problem_path.starts_with(table)) {
+                    problems.push(Problem::new(problem_path.to_string(), fault.message()));
+                }
                 0
             }
         };
+        if decides {
+            moot.push(problem_path.parent());
+        }
         let patched = match patch {
             Patch::Remove => problem_path.remove_from(&mut work),
             Patch::StandIn => match STAND_INS.get(attempt) {

@@ -67,8 +67,6 @@ impl fmt::Display for Problem {
 /// Why a scene could not be read.
 #[derive(Debug)]
 pub enum SceneError {
-    /// The scene file could not be read at all (too large, not UTF-8).
-    Parse(String),
     /// The scene has problems, known by key path only (e.g. found by a stage after
     /// validation); [`SceneError::locate`] adds file, line and column.
     Invalid(Vec<Problem>),
@@ -88,7 +86,6 @@ impl SceneError {
     /// Every problem as a line of text (`file:line:col: path = value: rule`).
     pub fn lines(&self) -> Vec<String> {
         match self {
-            Self::Parse(message) => vec![message.trim_end().to_string()],
             Self::Invalid(problems) => problems.iter().map(ToString::to_string).collect(),
             Self::Located(problems) => problems.iter().map(ToString::to_string).collect(),
         }
@@ -114,7 +111,6 @@ fn locate_all(text: &str, file: &str, problems: Vec<Problem>) -> Vec<LocatedProb
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Self::Parse(message) => write!(f, "{}", message.trim_end()),
             Self::Invalid(_) | Self::Located(_) => {
                 let lines = self.lines();
                 write!(f, "{} problem(s) in the scene:", lines.len())?;
@@ -150,9 +146,14 @@ impl Scene {
     /// invalid UTF-8 is located like any other problem.
     pub fn decode(bytes: Vec<u8>, file: &str) -> Result<String, SceneError> {
         if bytes.len() > MAX_SCENE_BYTES {
-            return Err(SceneError::Parse(format!(
-                "{file}: more than {MAX_SCENE_BYTES} bytes: a scene file may hold at most {MAX_SCENE_BYTES} bytes"
-            )));
+            return Err(SceneError::Located(vec![LocatedProblem {
+                file: file.to_string(),
+                location: Location::of_offset("", 0),
+                problem: Problem::new(
+                    "",
+                    format!("more than {MAX_SCENE_BYTES} bytes: a scene file may hold at most {MAX_SCENE_BYTES} bytes"),
+                ),
+            }]));
         }
         String::from_utf8(bytes).map_err(|error| {
             let valid = error.utf8_error().valid_up_to();
@@ -173,11 +174,22 @@ impl Scene {
     /// (`file:line:col: path = value: rule`).
     pub fn from_file_text(text: &str, file: &str, scene_dir: Option<&Path>) -> Result<Self, SceneError> {
         let located = |problems| SceneError::Invalid(problems).locate(text, file);
+        let at = |offset: usize, path: String, message: String| {
+            SceneError::Located(vec![LocatedProblem {
+                file: file.to_string(),
+                location: Location::of_offset(text, offset),
+                problem: Problem::new(path, message),
+            }])
+        };
         if text.len() > MAX_SCENE_BYTES {
-            return Err(SceneError::Parse(format!(
-                "{file}: {} bytes: a scene file may hold at most {MAX_SCENE_BYTES} bytes",
-                text.len()
-            )));
+            return Err(at(
+                0,
+                String::new(),
+                format!(
+                    "{} bytes: a scene file may hold at most {MAX_SCENE_BYTES} bytes",
+                    text.len()
+                ),
+            ));
         }
         let (_, syntax) = toml::de::DeTable::parse_recoverable(text);
         if !syntax.is_empty() {
@@ -195,14 +207,76 @@ impl Scene {
                     .collect(),
             ));
         }
-        let table: toml::Table = toml::from_str(text).map_err(|e| SceneError::Parse(format!("{file}: {e}")))?;
-        let scene: Scene = super::parse::typed(&table).map_err(located)?;
+        // What the syntax pass lets through but values cannot hold (an integer beyond i64):
+        // named by the key whose value holds the error's position.
+        let table: toml::Table = toml::from_str(text).map_err(|e| {
+            let offset = e.span().map_or(0, |s| s.start);
+            let path = SpannedScene::new(text).path_at(offset);
+            let literal = e.span().and_then(|s| text.get(s)).unwrap_or_default().trim();
+            let message = if e.message().contains("integer") && !literal.is_empty() {
+                format!(
+                    "= {}: a whole number beyond the 64-bit range (at most {}); write a float (1e20) if so large a value is meant",
+                    literal.chars().take(40).collect::<String>(),
+                    i64::MAX
+                )
+            } else {
+                format!("TOML: {}", e.message().trim_end())
+            };
+            at(offset, path.to_string(), message)
+        })?;
+        let mut scene = Self::from_table(&table, scene_dir).map_err(located)?;
+        scene.warnings = locate_all(text, file, scene.value_warnings())
+            .iter()
+            .map(ToString::to_string)
+            .collect();
+        Ok(scene)
+    }
+
+    /// A scene from its TOML table, parsed and validated; problems by key path only (the
+    /// trade study builds its variants as tables and locates their problems in the user's
+    /// file). The scene's `warnings` are left empty.
+    pub fn from_table(table: &toml::Table, scene_dir: Option<&Path>) -> Result<Self, Vec<Problem>> {
+        let scene: Scene = super::parse::typed(table)?;
         let problems = scene.validate(scene_dir);
         if problems.is_empty() {
             Ok(scene)
         } else {
-            Err(located(problems))
+            Err(problems)
         }
+    }
+
+    /// Values that are valid but probably not what was meant, as problems by key path: a
+    /// gap or overlap target (`*_percent`, % of the local chord) of magnitude below
+    /// [`FRACTION_LIKE_PERCENT`], which reads as a fraction written for a percentage
+    /// (`landing_gap_percent = 0.02` for 2 %).
+    pub fn value_warnings(&self) -> Vec<Problem> {
+        let mut warnings = Vec::new();
+        for (i, flap) in self.flap.iter().enumerate() {
+            let settings = &flap.settings;
+            for (key, value) in [
+                ("takeoff_gap_percent", settings.takeoff_gap_percent),
+                ("takeoff_overlap_percent", settings.takeoff_overlap_percent),
+                ("landing_gap_percent", settings.landing_gap_percent),
+                ("landing_overlap_percent", settings.landing_overlap_percent),
+            ] {
+                let Some(value) = value else { continue };
+                if value != 0.0 && value.abs() < FRACTION_LIKE_PERCENT {
+                    // Rounded so that 0.07 reads 7, not 7.000000000000001.
+                    let as_percent = (value * 100.0 * 1e9).round() / 1e9;
+                    warnings.push(Problem::new(
+                        format!("flap[{i}].settings.{key}"),
+                        format!(
+                            "= {}: taken as {} % of the local chord; a fraction written for a percentage? ({} % is written {})",
+                            number(value),
+                            number(value),
+                            number(as_percent),
+                            number(as_percent)
+                        ),
+                    ));
+                }
+            }
+        }
+        warnings
     }
 
     /// All problems of the scene (empty when valid).
@@ -262,6 +336,13 @@ pub fn number(value: f64) -> String {
         format!("{value}")
     }
 }
+
+/// A non-zero gap or overlap target (% of the local chord) smaller than this is warned
+/// about as a fraction written for a percentage. Targets of slotted flaps are 0-3 % of the
+/// chord (`003_...` Fig. 3), so their fractions (0-0.03) all fall below it, while a real
+/// target of 0.1 % is a millimetre on a 1 m chord, below the default 3 mm clearance and
+/// manufacturing tolerance: whoever means so little writes 0 (which is not warned about).
+pub const FRACTION_LIKE_PERCENT: f64 = 0.1;
 
 /// Largest scene file read, bytes: a hand-written whole-wing scene is a few tens of
 /// kilobytes; anything near this is generated by mistake, and parsing it would cost

@@ -246,3 +246,39 @@ fn the_five_bars_aft_element_is_reported_at_every_sample() {
         );
     }
 }
+
+/// Item 15: a positive overlap target with no shroud is refused at its key, proposing a
+/// shroud (the mechanism drove the flap 97 mm into the wing).
+#[test]
+fn a_positive_overlap_without_a_shroud_is_refused_proposing_one() {
+    let scene = transport().replace("shroud_chord_fraction = 0.06\n", "");
+    let (_dir, output) = run_on(&scene, &["check"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("scene.toml:73:"), "{stderr}");
+    assert!(stderr.contains("flap[0].settings.takeoff_overlap_percent"), "{stderr}");
+    assert!(stderr.contains("flap[0].shroud_chord_fraction = 0.06"), "{stderr}");
+}
+
+/// Item 15: on a swept wing the default side gap lets the flaps' sides pass into the wing
+/// as they deploy; the failing check names `side_gap_m` and a value, and that value clears.
+#[test]
+fn a_side_gap_too_small_for_the_flaps_spanwise_motion_names_the_gap_that_clears() {
+    let scene = transport().replace("side_gap_m = 0.40\n", "");
+    let (_dir, output) = run_on(&scene, &["check"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    let mut fixed = scene.clone();
+    for (f, name) in ["inboard", "outboard"].iter().enumerate() {
+        let key = format!("flap[{f}].side_gap_m = ");
+        let at = stderr.find(&key).unwrap_or_else(|| panic!("{key}: {stderr}"));
+        let value: f64 = stderr[at + key.len()..].split_whitespace().next().unwrap().parse().unwrap();
+        fixed = fixed.replacen(
+            &format!("name = \"{name}\"\n"),
+            &format!("name = \"{name}\"\nside_gap_m = {value}\n"),
+            1,
+        );
+    }
+    let (_dir, output) = run_on(&fixed, &["check"]);
+    assert_eq!(output.status.code(), Some(0), "{}", String::from_utf8_lossy(&output.stderr));
+}

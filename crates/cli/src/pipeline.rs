@@ -187,6 +187,9 @@ pub fn design_with_progress(
                     crate::junit::describe_failure(&pair.clearance, pair.required_clearance_m)
                 ));
             }
+            if let Some(model) = &wing_model {
+                warnings.extend(plausibility::side_gap_hints(scene, model, &checked.pairs));
+            }
             for contact in checked.declared_contacts.iter().filter(|c| !c.passes) {
                 warnings.push(format!(
                     "joint: {}",

@@ -224,3 +224,58 @@ mod tests {
         );
     }
 }
+
+/// Where a failing pair is a flap against the wing at one of the flap's sides (the contact
+/// on the wing within the overlap's depth and a centimetre of the flap's cut-out
+/// `y_inboard_m` or `y_outboard_m`): the flap's side moved spanwise past its side gap as it
+/// deployed (a hinge line not square to the streamwise sides, or a conical motion, moves
+/// them). Says which side and the `side_gap_m` that would keep the required clearance
+/// there: the gap now plus the depth plus the clearance, rounded up to the millimetre.
+pub fn side_gap_hints(
+    scene: &Scene,
+    model: &flapwright_geom::parts::WingModel,
+    pairs: &[flapwright_interference::PairResult],
+) -> Vec<String> {
+    let mut hints = Vec::new();
+    for pair in pairs.iter().filter(|p| !p.passes) {
+        let c = &pair.clearance;
+        let (flap_name, wing_point) = match (c.part_a.as_str(), c.part_b.as_str()) {
+            (a, "wing") => (a, c.point_b_ac),
+            ("wing", b) => (b, c.point_a_ac),
+            _ => continue,
+        };
+        let Some((f, flap)) = scene.flap.iter().enumerate().find(|(_, f)| f.name == flap_name) else {
+            continue;
+        };
+        let depth = c.penetration_m.max(0.0) + (pair.required_clearance_m - c.min_clearance_m.max(0.0)).max(0.0);
+        let reach = depth + 0.01;
+        let y = wing_point[1];
+        let side = if (y - flap.y_inboard_m).abs() <= reach {
+            Some(("inboard", flap.y_inboard_m))
+        } else if (y - flap.y_outboard_m).abs() <= reach {
+            Some(("outboard", flap.y_outboard_m))
+        } else {
+            None
+        };
+        let Some((side, cut_y)) = side else {
+            continue;
+        };
+        let gap_now = match flap.side_gap_m {
+            Some(gap) => gap,
+            None => match model.wing().planform_at(cut_y) {
+                Ok((_, chord, _)) => flapwright_geom::flap::SIDE_GAP_CHORD_FRACTION * chord,
+                Err(_) => continue,
+            },
+        };
+        let needed = ((gap_now + depth + pair.required_clearance_m) * 1e3).ceil() / 1e3;
+        hints.push(format!(
+            "flap \"{}\": its {side} side comes {:.1} mm past the required clearance at its cut-out (y = {:.3} m) as it deploys, the side gap of {:.3} m{} being too small for how far the flap moves spanwise; give flap[{f}].side_gap_m = {needed:.3} or more",
+            flap.name,
+            1e3 * depth,
+            cut_y,
+            gap_now,
+            if flap.side_gap_m.is_none() { " (the default, 0.5 % of the local chord)" } else { "" },
+        ));
+    }
+    hints
+}

@@ -8,6 +8,39 @@ use super::Checker;
 use crate::scene::{load_airfoil, AirfoilRef, FlapScene, Scene, WingScene};
 
 impl Checker<'_> {
+    /// A positive overlap target needs the wing's shroud over the flap's nose: without one
+    /// the cove is a wall just ahead of the flap, the lip sits at the flap's nose and a
+    /// mechanism reaching a positive overlap drives the flap into the wing (97 mm on a
+    /// reproducer). The shroud must reach past the largest overlap, with room for the gap:
+    /// the value proposed is the largest overlap plus 3 % of the chord (the shipped
+    /// transport flap reaches its 3 %c take-off overlap under a 6 %c shroud).
+    fn overlap_needs_a_shroud(&mut self, path: &str, flap: &crate::scene::FlapScene) {
+        if flap.shroud_chord_fraction.is_some_and(|s| s > 0.0) {
+            return;
+        }
+        let settings = &flap.settings;
+        let largest = [
+            ("takeoff_overlap_percent", settings.takeoff_overlap_percent),
+            ("landing_overlap_percent", settings.landing_overlap_percent),
+        ]
+        .into_iter()
+        .filter_map(|(key, value)| Some((key, value?)))
+        .filter(|(_, value)| value.is_finite() && *value > 0.0)
+        .max_by(|a, b| a.1.total_cmp(&b.1));
+        if let Some((key, overlap)) = largest {
+            let proposed = ((overlap / 100.0 + 0.03) * 1000.0).ceil() / 1000.0;
+            self.fail(
+                format!("{path}.settings.{key}"),
+                format!(
+                    "= {}: a positive overlap needs the wing's shroud over the flap's nose, and {path}.shroud_chord_fraction is {}: the cove wall stands just ahead of the flap, so the flap would be driven into the wing; give {path}.shroud_chord_fraction = {} (the overlap and 3 % of the chord), or an overlap of 0 or less",
+                    super::number(overlap),
+                    if flap.shroud_chord_fraction.is_some() { "0" } else { "not given" },
+                    super::number(proposed),
+                ),
+            );
+        }
+    }
+
     fn airfoil(&mut self, path: &str, text: &str) {
         match AirfoilRef::parse(text) {
             Err(message) => self.fail(path, message),
@@ -177,6 +210,7 @@ impl Checker<'_> {
             self.in_range(&format!("{path}.{key}"), value, min, max, false);
         }
         self.shroud(path, flap.shroud_chord_fraction);
+        self.overlap_needs_a_shroud(path, flap);
         if let Some(gap) = flap.side_gap_m {
             let quarter_span = 0.25 * (flap.y_outboard_m - flap.y_inboard_m).abs();
             self.in_range(&format!("{path}.side_gap_m"), gap, 0.0, quarter_span, false);

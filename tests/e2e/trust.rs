@@ -272,7 +272,12 @@ fn a_side_gap_too_small_for_the_flaps_spanwise_motion_names_the_gap_that_clears(
     for (f, name) in ["inboard", "outboard"].iter().enumerate() {
         let key = format!("flap[{f}].side_gap_m = ");
         let at = stderr.find(&key).unwrap_or_else(|| panic!("{key}: {stderr}"));
-        let value: f64 = stderr[at + key.len()..].split_whitespace().next().unwrap().parse().unwrap();
+        let value: f64 = stderr[at + key.len()..]
+            .split_whitespace()
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
         fixed = fixed.replacen(
             &format!("name = \"{name}\"\n"),
             &format!("name = \"{name}\"\nside_gap_m = {value}\n"),
@@ -280,5 +285,10 @@ fn a_side_gap_too_small_for_the_flaps_spanwise_motion_names_the_gap_that_clears(
         );
     }
     let (_dir, output) = run_on(&fixed, &["check"]);
-    assert_eq!(output.status.code(), Some(0), "{}", String::from_utf8_lossy(&output.stderr));
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
 }

@@ -370,4 +370,35 @@ mod tests {
             }
         }
     }
+
+    /// Issue 35 item 7: a toggle inside the rotation is named as a toggle (the message
+    /// said "falls to 47.0 deg (minimum 30.0 deg)", an angle above its minimum); an angle
+    /// below the minimum names both; a drive clear of both has no problem.
+    #[test]
+    fn a_toggle_is_named_as_a_toggle_and_a_low_angle_as_below_its_minimum() {
+        let drive = RockerDrive::try_new(
+            Point2::origin(),
+            Point2::new(1.0, 0.0),
+            Point2::new(0.3, 0.3 * 20f64.to_radians().tan()),
+        )
+        .unwrap();
+        let turn = 30f64.to_radians();
+        let (through, clear) = if drive.clear_of_toggles(turn, 1e-3) {
+            (-turn, turn)
+        } else {
+            (turn, -turn)
+        };
+        let toggle = drive
+            .transmission_problem(through, 5f64.to_radians(), 32, "arm")
+            .unwrap();
+        assert!(toggle.contains("toggle") && !toggle.contains("falls to"), "{toggle}");
+        assert_eq!(drive.transmission_problem(clear, 1f64.to_radians(), 32, "arm"), None);
+        let low = drive
+            .transmission_problem(clear, 89f64.to_radians(), 32, "arm")
+            .unwrap();
+        assert!(
+            low.contains("falls to") && low.contains("below the minimum of 89.0 deg"),
+            "{low}"
+        );
+    }
 }

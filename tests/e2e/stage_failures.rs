@@ -229,3 +229,53 @@ fn a_takeoff_overlap_the_sections_cannot_give() {
         &["smallest gap it reaches", "takeoff_gap_percent"],
     );
 }
+
+/// `actuator_mount_m` given on a four-bar of a scene with a chord-fraction torque tube
+/// (sizing: "motor angles must strictly increase"): at the mount given here (the one the
+/// search picks without a tube) the tube takes the attachment's place, and the attachment
+/// that keeps clear shortens the screw as the flap deploys. Which way the screw runs is
+/// known only after the synthesis, and only the drive line (a torque tube) needs every
+/// actuator to turn one way, so the sizing stage refuses it as an input problem at the
+/// mount's key.
+#[test]
+fn a_given_screw_mount_that_runs_backwards_on_the_drive_line() {
+    let scene = with(
+        &shipped("transport-flap"),
+        "[[station]]\nname = \"ib-inner\"",
+        "[structure.torque_tube]\nchord_fraction = 0.7\ndepth_below_chord_fraction = 0.0\nradius_m = 0.04\n\n\
+         [[station]]\nname = \"ib-inner\"",
+    );
+    let scene = with(
+        &scene,
+        "kind = \"four-bar\"\nflap_mass_kg = 180.0",
+        "kind = \"four-bar\"\nflap_mass_kg = 180.0\nactuator_mount_m = [-0.5048752135793875, -0.5759866287474797]",
+    );
+    assert_refused_at(
+        &scene,
+        &[],
+        "station[0].mechanism.actuator_mount_m",
+        &["runs backwards", "torque tube"],
+    );
+}
+
+/// `relative_tolerance = 1e-13` (dynamics: with `absolute_tolerance = 1e-15` the BDF
+/// integrator of `transport-flap`'s rigid flaps stops with "Exceeded maximum number of
+/// nonlinear solver failures"; the five-bar's with "Step size is too small" at 1e-15).
+/// Measured on `double-slotted-flap`, `double-slotted-wing` and `transport-flap` with a
+/// `[dynamics]` table, absolute tolerance 1e-15: all pass at 1e-10, `transport-flap`
+/// fails at 1e-11 to 1e-13, the five-bars at 1e-15. The range's lower bound is now 1e-10.
+#[test]
+fn a_relative_tolerance_the_integrator_cannot_meet() {
+    let scene = format!(
+        "{}\n[dynamics]\nrelative_tolerance = 1e-13\nabsolute_tolerance = 1e-15\n\
+         motor = {{ resistance_ohm = 0.5, inductance_h = 1e-3, torque_constant_nm_per_a = 0.5 }}\n\
+         supply = {{ volts = 270.0, rise_time_s = 0.05 }}\nmax_steps = 20000\n",
+        shipped("transport-flap")
+    );
+    assert_refused_at(
+        &scene,
+        &[],
+        "dynamics.relative_tolerance",
+        &["1e-13", "[0.0000000001, 0.1]"],
+    );
+}

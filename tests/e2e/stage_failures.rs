@@ -279,3 +279,25 @@ fn a_relative_tolerance_the_integrator_cannot_meet() {
         &["1e-13", "[0.0000000001, 0.1]"],
     );
 }
+
+/// `double-slotted-wing` without gap and overlap settings (as shipped: its
+/// `[flap.settings]` gives only the deflections): not reproduced as a stage failure. Its
+/// five-bars are given by their dimensions, so `design`, `check` and `export` need no
+/// targets and run to the end (exit 0; `design` is run on every shipped scene by other
+/// tests); `study`, whose kinds are synthesised to the targets, refuses the scene at
+/// `flap[0].settings` with exit 2 before any stage, which this row keeps.
+#[test]
+fn a_double_slotted_wing_without_gap_and_overlap_targets_is_refused_by_study() {
+    let scene = shipped("double-slotted-wing");
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("scene.toml"), &scene).unwrap();
+    let output = run_flapwright(dir.path(), &["study", "scene.toml", "--out", "out"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "stderr:\n{stderr}");
+    assert!(
+        stderr.contains("scene.toml:")
+            && stderr.contains(": flap[0].settings: ")
+            && stderr.contains("landing_gap_percent"),
+        "the settings named at file:line:col:\n{stderr}"
+    );
+}

@@ -10,6 +10,7 @@ mod messages;
 mod output_safety;
 mod scene_errors;
 mod sizing_figures;
+mod stage_failures;
 mod stations;
 mod stl_reader;
 mod study;

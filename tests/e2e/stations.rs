@@ -383,16 +383,16 @@ fn dynamics_deploys_any_kind_as_a_rigid_flap() {
 
 /// A rigid flap's moment of inertia comes from its section in the station plane: a 2D
 /// scene without a wing cannot give one, and the error names the station and what is
-/// missing.
+/// missing: at validation, exit 2 (issue 35 item 18; it was the dynamics stage's exit 1).
 #[test]
 fn dynamics_without_a_flap_section_names_the_station() {
     let text = std::fs::read_to_string(repo_root().join("data/scenes/thesis-case-study.toml")).unwrap()
         + "\n[dynamics]\nmotor = { resistance_ohm = 2.0, inductance_h = 1e-3, torque_constant_nm_per_a = 20.0 }\nsupply = { volts = 100.0 }\n";
     let (_dir, output) = crate::synthesised_kinds::design(&text);
-    assert!(!output.status.success());
     let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
     assert!(
-        stderr.contains("station outer (circular-arc-track)") && stderr.contains("flap's section"),
+        stderr.contains("dynamics: station[0] (\"outer\") has no flap section") && stderr.contains("moment of inertia"),
         "{stderr}"
     );
 }

@@ -68,11 +68,16 @@ fn a_study_in_which_no_kind_designs_exits_non_zero_with_one_line() {
     let (dir, output) = run_study(&text, &[]);
     assert_refused(dir.path(), &output, "[wing]");
     // Targets no flap position behind the wing gives (a gap as large as the overlap is
-    // negative): every kind fails; one line, the scene named, nothing written.
+    // negative): every kind fails; one line, the scene named, nothing written. The targets
+    // are an input problem (issue 35 item 18), named at their key: exit 2.
     let text = default_with_targets([6.0, -6.0], [12.0, -12.0]);
     let (dir, output) = run_study(&text, &["--kinds", "dropped-hinge,four-bar"]);
     let message = stderr(&output);
-    assert_eq!(output.status.code(), Some(1), "{message}");
+    assert_eq!(output.status.code(), Some(2), "{message}");
+    assert!(
+        message.contains("flap[0].settings.takeoff_overlap_percent = -6"),
+        "the target named:\n{message}"
+    );
     assert_eq!(message.trim_end().lines().count(), 1, "one line:\n{message}");
     assert!(
         message.contains("study of \"small-aircraft\": no kind could be designed; dropped-hinge: "),

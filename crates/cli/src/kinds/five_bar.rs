@@ -134,7 +134,15 @@ impl FiveBarScene {
     }
 }
 
+/// Least angle between the two links of any dyad over the crank travel, deg: closer to a
+/// toggle the five-bar's rates and loads grow without bound.
+const MIN_TOGGLE_DISTANCE_DEG: f64 = 1.0;
+
 impl KindScene for FiveBarScene {
+    fn models_own_dynamics(&self) -> bool {
+        true
+    }
+
     fn check(&self, checker: &mut dyn KeyChecker, path: &str) {
         let (lo, hi) = MECHANISM_LENGTH_M;
         for (key, value) in [
@@ -241,13 +249,46 @@ impl KindScene for FiveBarScene {
         .map_err(|e| format!("does not assemble: {e}"))?;
         // Every crank angle of the travel must assemble on the same branch.
         let samples = 181;
+        let mut deflections = (0.0, 0.0);
+        let mut nearest_toggle: Option<(f64, f64)> = None;
         for k in 0..samples {
             let fraction = k as f64 / (samples - 1) as f64;
             let alpha =
                 mechanism.stowed_crank_rad + fraction * (mechanism.deployed_crank_rad - mechanism.stowed_crank_rad);
-            mechanism
+            let pose = mechanism
                 .pose(alpha)
                 .map_err(|e| format!("does not reach crank_deployed_deg on its stowed branch: {e}"))?;
+            if k == 0 {
+                deflections.0 = pose.main_deflection.value;
+            }
+            deflections.1 = pose.main_deflection.value;
+            if nearest_toggle.is_none_or(|(sine, _)| pose.toggle_sine < sine) {
+                nearest_toggle = Some((pose.toggle_sine, alpha));
+            }
+        }
+        // A dyad at a toggle has no rate to give: the dynamics' equation of motion is
+        // singular there (the integrator's step shrank to nothing with the rocker pivot at
+        // y = -1), and the statics' loads grow without bound.
+        if let Some((sine, alpha)) = nearest_toggle {
+            let angle_deg = sine.clamp(-1.0, 1.0).abs().asin().to_degrees();
+            if angle_deg < MIN_TOGGLE_DISTANCE_DEG {
+                return Err(format!(
+                    "passes {angle_deg:.2} deg from a toggle (two links of a dyad in line) at crank angle {:.1} deg; keep every dyad at least {MIN_TOGGLE_DISTANCE_DEG} deg from one over the travel: change {}",
+                    alpha.to_degrees(),
+                    self.geometry_keys()
+                ));
+            }
+        }
+        // The crank deploys the main flap: its trailing edge goes down (δ grows). A layout
+        // that turns it up has no deployment (the drawings' and the report's deflection
+        // range runs from 0 to a negative angle: the main hinge at y = 0 did so).
+        let turn_deg = (deflections.1 - deflections.0).to_degrees();
+        if turn_deg.is_nan() || turn_deg <= 0.0 {
+            return Err(format!(
+                "turns the main flap {:.1} deg trailing edge up from crank_stowed_deg to crank_deployed_deg: a deployment turns it down; change {}",
+                -turn_deg,
+                self.geometry_keys()
+            ));
         }
         let actuator = self
             .rotary

@@ -37,6 +37,12 @@ pub struct HookedTrackScene {
 /// Lead-in fractions a scene may give: none up to nine tenths of the stroke.
 const LEAD_FRACTION: (f64, f64) = (0.0, 0.9);
 
+/// Shortest lead-in a scene may give besides none, fraction of the stroke: a lead-in of
+/// 1e-300 of the stroke is a hook segment of no length, whose tube cannot be meshed (the
+/// interference stage failed on it); 1 % (a millimetre on a 0.1 m stroke) meshes, and the
+/// search's shortest is 5 %.
+const MIN_LEAD_FRACTION: f64 = 0.01;
+
 fn point([x, y]: [f64; 2]) -> Point2<f64> {
     Point2::new(x, y)
 }
@@ -61,7 +67,18 @@ impl KindScene for HookedTrackScene {
         }
         if let Some(lead) = self.lead_fraction {
             let (lo, hi) = LEAD_FRACTION;
-            checker.in_range(&format!("{path}.lead_fraction"), lead, lo, hi, false);
+            if checker.in_range(&format!("{path}.lead_fraction"), lead, lo, hi, false)
+                && lead > 0.0
+                && lead < MIN_LEAD_FRACTION
+            {
+                checker.fail(
+                    &format!("{path}.lead_fraction"),
+                    format!(
+                        "= {}: a lead-in this short is a hook segment of no length; give 0 (no lead-in) or at least {MIN_LEAD_FRACTION} of the stroke",
+                        crate::scene::number(lead)
+                    ),
+                );
+            }
         }
     }
 

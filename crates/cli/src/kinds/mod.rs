@@ -315,6 +315,13 @@ pub trait KindScene {
     fn takes_normal_force(&self) -> bool {
         true
     }
+
+    /// True when the kind writes its own equation of motion for `[dynamics]` (its bodies'
+    /// masses and inertias are its keys); false: the dynamics stage takes the flap's moment
+    /// of inertia from its section in the station plane, which a 2D scene has not.
+    fn models_own_dynamics(&self) -> bool {
+        false
+    }
 }
 
 /// `[station.mechanism]`: `kind` picks the variant, the other keys are its dimensions.

@@ -11,7 +11,7 @@ use serde::Serialize;
 use crate::kinds::SynthesisContext;
 use crate::pipeline::mechanisms::StationRecord;
 use crate::pipeline::stations::PlacedStation;
-use crate::scene::FlapScene;
+use crate::scene::{FlapScene, Problem, SceneError};
 
 /// Gap and overlap at one named flap setting.
 #[derive(Debug, Clone, Serialize)]
@@ -337,9 +337,29 @@ pub fn synthesis_context(
         };
         let deflection_rad = deflection_deg.to_radians();
         let (gap_m, _) = structural_gap_m(gap, chord, flap.settings.sealed_gap_m(required_clearance_m));
-        let displacement = measure
-            .displacement_for_setting(deflection_rad, gap_m, overlap * chord / 100.0)
-            .with_context(|| format!("flap {} {name} setting at station {}", flap.name, placed.station.name))?;
+        let displacement = match measure.displacement_for_setting(deflection_rad, gap_m, overlap * chord / 100.0) {
+            // The settings ask for what the sections cannot give: an input problem, which no
+            // rule before the station planes are cut can foresee (it depends on the sections'
+            // shapes), named by the keys to change.
+            Err(flapwright_planes::Error::GapUnreachable { smallest_gap_m, .. }) => {
+                let index = flaps.iter().position(|f| f.name == flap.name).unwrap_or(0);
+                return Err(SceneError::Invalid(vec![Problem::new(
+                    format!("flap[{index}].settings.{name}_overlap_percent"),
+                    format!(
+                        "= {}: at station {} no flap position behind the wing at {name}_deg = {} gives this overlap with a gap of {:.1} mm ({name}_gap_percent = {}, or the sealed gap); the smallest gap it reaches is {:.1} mm: give a larger overlap or a larger {name}_gap_percent",
+                        crate::scene::number(overlap),
+                        placed.station.name,
+                        crate::scene::number(deflection_deg),
+                        gap_m * 1e3,
+                        crate::scene::number(gap),
+                        smallest_gap_m * 1e3,
+                    ),
+                )])
+                .into());
+            }
+            other => other
+                .with_context(|| format!("flap {} {name} setting at station {}", flap.name, placed.station.name))?,
+        };
         Ok(Some(PrecisionPosition {
             name,
             deflection_rad,

@@ -202,6 +202,33 @@ pub fn size_all(
     Ok((SizingReport::assemble(rods, jacks, tubes, drive), notes))
 }
 
+/// A station on the drive line whose actuator input runs backwards over the deployment (a
+/// given screw mount that shortens the screw): the torque tube turns every actuator one
+/// way, so this is an input problem at the key that placed the actuator. Which way the
+/// screw runs is known only once the mechanism is synthesised (the attachment is searched
+/// for the first that keeps clear).
+fn input_runs_backwards(scene: &Scene, record: &StationRecord) -> crate::scene::SceneError {
+    use crate::kinds::MechanismScene;
+    let station = &scene.station[record.index.min(scene.station.len().saturating_sub(1))];
+    let given_mount = match &station.mechanism {
+        MechanismScene::FourBar(m) => m.actuator_mount_m.is_some(),
+        MechanismScene::DroppedHinge(m) => m.actuator_mount_m.is_some(),
+        _ => false,
+    };
+    let key = if given_mount {
+        format!("station[{}].mechanism.actuator_mount_m", record.index)
+    } else {
+        format!("station[{}].mechanism", record.index)
+    };
+    crate::scene::SceneError::Invalid(vec![crate::scene::Problem::new(
+        key,
+        format!(
+            "station {}'s actuator runs backwards as the flap deploys (its screw shortens): the torque tube's drive line turns every actuator one way to deploy; give a mount whose screw lengthens, or leave actuator_mount_m out to have it searched",
+            record.station
+        ),
+    )])
+}
+
 /// Work per deployment for each load case: the raising torque of every station on the
 /// drive line integrated over its drive shaft's rotation (2 pi per lead of nut travel, or
 /// the gear ratio per radian of a rotary actuator's output), divided
@@ -227,6 +254,11 @@ fn deployment_work(
             };
             let actuator = mechanisms[i].mechanism.actuator();
             let per_input = actuator.shaft_angle_per_input();
+            if let (Some(first), Some(last)) = (sweep.samples.first(), sweep.samples.last()) {
+                if per_input * (last.input - first.input) < 0.0 {
+                    return Err(input_runs_backwards(scene, &mechanisms[i]).into());
+                }
+            }
             let angles: Vec<f64> = sweep
                 .samples
                 .iter()

@@ -80,7 +80,13 @@ impl AirfoilRef {
     }
 }
 
-/// Reads an airfoil the scene names and resamples it to the scene's resolution.
+/// Margin of an airfoil file's x about the unit chord (0 to 1); its y stays within half a
+/// chord of the chord line. A coordinate beyond (`1e308`) is a typo, which reached the
+/// mesher as a polygon it could not triangulate.
+pub const AIRFOIL_COORDINATE_MARGIN: f64 = 0.1;
+
+/// Reads an airfoil the scene names and resamples it to the scene's resolution; a file's
+/// coordinates must be of a unit-chord section ([`AIRFOIL_COORDINATE_MARGIN`]).
 pub fn load_airfoil(text: &str, scene_dir: Option<&Path>, points_per_side: usize) -> Result<Airfoil> {
     let airfoil = match AirfoilRef::parse(text).map_err(anyhow::Error::msg)? {
         AirfoilRef::Naca(digits) => Airfoil::naca(&digits, points_per_side, TrailingEdge::Closed)
@@ -95,8 +101,20 @@ pub fn load_airfoil(text: &str, scene_dir: Option<&Path>, points_per_side: usize
                 }
                 AirfoilSource::Bundled(text) => Airfoil::from_dat(text.as_bytes()),
             };
+            let parsed = parsed.with_context(|| format!("reading airfoil file {name}"))?;
+            let (lo, hi) = (-AIRFOIL_COORDINATE_MARGIN, 1.0 + AIRFOIL_COORDINATE_MARGIN);
+            if let Some(p) = parsed
+                .points
+                .iter()
+                .find(|p| !(lo..=hi).contains(&p.x) || !(-0.5..=0.5).contains(&p.y))
+            {
+                anyhow::bail!(
+                    "{name} has the point ({}, {}): an airfoil file holds a unit-chord section, x in [{lo}, {hi}] and y in [-0.5, 0.5]",
+                    crate::scene::number(p.x),
+                    crate::scene::number(p.y)
+                );
+            }
             parsed
-                .with_context(|| format!("reading airfoil file {name}"))?
                 .resampled(points_per_side)
                 .with_context(|| format!("resampling airfoil {name}"))?
         }

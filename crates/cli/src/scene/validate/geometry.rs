@@ -67,8 +67,27 @@ impl Checker<'_> {
     /// The airfoil reads and resamples: a `.dat` file that holds no airfoil, or a NACA code
     /// without thickness (`NACA 0000`), is a problem at its key.
     fn airfoil_loads(&mut self, path: &str, text: &str) {
-        if let Err(error) = load_airfoil(text, self.scene_dir, self.airfoil_points_per_side) {
-            self.fail(path, format!("= \"{text}\": {error:#}"));
+        match load_airfoil(text, self.scene_dir, self.airfoil_points_per_side) {
+            Err(error) => self.fail(path, format!("= \"{text}\": {error:#}")),
+            Ok(airfoil) => {
+                if let Some(reason) = outline_defect(&airfoil.points) {
+                    self.fail(path, format!("= \"{text}\": {reason}"));
+                }
+            }
+        }
+        if let Ok(AirfoilRef::Naca(digits)) = AirfoilRef::parse(text) {
+            let thickness = digits
+                .get(digits.len().saturating_sub(2)..)
+                .and_then(|t| t.parse::<f64>().ok())
+                .unwrap_or(0.0);
+            if thickness > MAX_NACA_THICKNESS_PERCENT {
+                self.fail(
+                    path,
+                    format!(
+                        "= \"{text}\": {thickness} % thick; NACA sections here may be at most {MAX_NACA_THICKNESS_PERCENT} % thick (a thicker flap does not fit in the wing's cove)"
+                    ),
+                );
+            }
         }
     }
 
@@ -378,26 +397,57 @@ impl Checker<'_> {
             }
             let start_ok = self.in_range(&format!("{path}.y_start_m"), spar.y_start_m, root, tip, false);
             let end_ok = self.in_range(&format!("{path}.y_end_m"), spar.y_end_m, root, tip, false);
-            if start_ok && end_ok && spar.y_end_m <= spar.y_start_m {
+            if start_ok && end_ok && spar.y_end_m - spar.y_start_m < MIN_LENGTH_M {
+                // A web shorter than the shortest length meshes into degenerate triangles.
                 self.fail(
                     format!("{path}.y_end_m"),
-                    format!("= {}: must be greater than y_start_m", super::number(spar.y_end_m)),
+                    format!(
+                        "= {}: must be at least {} mm outboard of y_start_m = {}",
+                        super::number(spar.y_end_m),
+                        MIN_LENGTH_M * 1e3,
+                        super::number(spar.y_start_m)
+                    ),
                 );
             }
-            if !(fraction_ok && start_ok && end_ok) {
+            if !(fraction_ok && start_ok && end_ok && thickness_ok) {
                 continue;
             }
             for flap in &scene.flap {
-                let overlaps = spar.y_start_m < flap.y_outboard_m && spar.y_end_m > flap.y_inboard_m;
-                let flap_front = 1.0 - flap.chord_fraction_inboard.max(flap.chord_fraction_outboard);
-                if overlaps && spar.chord_fraction >= flap_front {
-                    self.fail(
-                        format!("{path}.chord_fraction"),
-                        format!(
-                            "= {}: the spar lies in flap \"{}\" (flap starts at chord fraction {flap_front:.3}); must be < {flap_front:.3}",
-                            spar.chord_fraction, flap.name
-                        ),
-                    );
+                // The geometry's rule: at both ends of the spar's stretch under the flap, the
+                // web's aft face stays ahead of the cove wall, which stands
+                // `COVE_GAP_CHORD_FRACTION` ahead of the flap's local chord fraction.
+                let (a, b) = (
+                    spar.y_start_m.max(flap.y_inboard_m),
+                    spar.y_end_m.min(flap.y_outboard_m),
+                );
+                if a > b || flap.y_outboard_m.partial_cmp(&flap.y_inboard_m) != Some(std::cmp::Ordering::Greater) {
+                    continue;
+                }
+                let mut tightest: Option<(f64, f64)> = None;
+                for y in [a, b] {
+                    let t = ((y - flap.y_inboard_m) / (flap.y_outboard_m - flap.y_inboard_m)).clamp(0.0, 1.0);
+                    let fraction =
+                        flap.chord_fraction_inboard + (flap.chord_fraction_outboard - flap.chord_fraction_inboard) * t;
+                    let cove = 1.0 - fraction - flapwright_geom::flap::COVE_GAP_CHORD_FRACTION;
+                    let Some(chord) = chord_at(wing, y).filter(|c| *c > 0.0) else {
+                        continue;
+                    };
+                    let limit = cove - 0.5 * spar.thickness_m / chord;
+                    if tightest.is_none_or(|(l, _)| limit < l) {
+                        tightest = Some((limit, cove));
+                    }
+                }
+                if let Some((limit, cove)) = tightest {
+                    if spar.chord_fraction >= limit {
+                        self.fail(
+                            format!("{path}.chord_fraction"),
+                            format!(
+                                "= {}: the spar's web reaches into the cove of flap \"{}\" (cove wall at chord fraction {cove:.4}); must be < {limit:.4}",
+                                super::number(spar.chord_fraction),
+                                flap.name
+                            ),
+                        );
+                    }
                 }
             }
         }
@@ -476,6 +526,28 @@ impl Checker<'_> {
                 );
             }
         }
+        // The mesher mitres each bend: a bend beyond the geometry's limit folds the tube.
+        let direction = |a: &[f64; 3], b: &[f64; 3]| {
+            let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+            let n = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+            (n.is_finite() && n >= MIN_LENGTH_M).then(|| [d[0] / n, d[1] / n, d[2] / n])
+        };
+        let max_bend = flapwright_geom::structure::MAX_TUBE_BEND_DEG;
+        for (i, triple) in points.windows(3).enumerate() {
+            let (Some(u), Some(v)) = (direction(&triple[0], &triple[1]), direction(&triple[1], &triple[2])) else {
+                continue;
+            };
+            let bend = (u[0] * v[0] + u[1] * v[1] + u[2] * v[2])
+                .clamp(-1.0, 1.0)
+                .acos()
+                .to_degrees();
+            if bend > max_bend {
+                self.fail(
+                    format!("{path}.path_m[{}]", i + 1),
+                    format!("bends the tube by {bend:.1} deg: at most {max_bend} deg at a point"),
+                );
+            }
+        }
     }
 }
 
@@ -488,6 +560,66 @@ pub(crate) fn default_tube_end(scene: &Scene, wing: &WingScene) -> f64 {
         .map(|f| f.y_outboard_m)
         .fold(None, |end: Option<f64>, y| Some(end.map_or(y, |e| e.max(y))))
         .unwrap_or_else(|| span_of(wing).1)
+}
+
+/// The wing's chord at `y_m`, interpolated between its sections as the geometry does; none
+/// outside the span.
+fn chord_at(wing: &WingScene, y_m: f64) -> Option<f64> {
+    wing.sections.windows(2).find_map(|pair| {
+        let (a, b) = (&pair[0], &pair[1]);
+        (a.y_m <= y_m && y_m <= b.y_m && b.y_m > a.y_m).then(|| {
+            let t = (y_m - a.y_m) / (b.y_m - a.y_m);
+            a.chord_m + (b.chord_m - a.chord_m) * t
+        })
+    })
+}
+
+/// Thickest NACA section accepted, % of the chord: the thickest sections flown are about
+/// 21 % (NACA 0021), and a section past 40 % is no longer a wing or flap the geometry can
+/// nest (`NACA 9999` as a flap cut a wing skin that could not be meshed).
+pub const MAX_NACA_THICKNESS_PERCENT: f64 = 40.0;
+
+/// Why an airfoil's outline (unit chord, Selig order) cannot be meshed, if it cannot: two
+/// edges that cross (a self-crossing polygon has no triangulation).
+fn outline_defect(points: &[nalgebra::Point2<f64>]) -> Option<String> {
+    let n = points.len();
+    // The outline closes from the last point back to the first unless they coincide.
+    let closed = n > 1 && points[0] == points[n - 1];
+    let edges: Vec<(usize, usize)> = (0..n.saturating_sub(1))
+        .map(|i| (i, i + 1))
+        .chain((!closed && n > 2).then_some((n - 1, 0)))
+        .collect();
+    for (a, &(i0, i1)) in edges.iter().enumerate() {
+        for &(j0, j1) in &edges[a + 1..] {
+            let shares = |k: usize| points[k] == points[i0] || points[k] == points[i1];
+            if shares(j0) || shares(j1) {
+                continue;
+            }
+            if segments_cross(points[i0], points[i1], points[j0], points[j1]) {
+                return Some(format!(
+                    "the outline crosses itself (the edge from point {} to {} crosses the edge from point {} to {}, resampled): an airfoil must be a simple closed outline",
+                    i0 + 1,
+                    i1 + 1,
+                    j0 + 1,
+                    j1 + 1
+                ));
+            }
+        }
+    }
+    None
+}
+
+/// Whether segments ab and cd cross (each one's ends strictly on both sides of the other).
+fn segments_cross(
+    a: nalgebra::Point2<f64>,
+    b: nalgebra::Point2<f64>,
+    c: nalgebra::Point2<f64>,
+    d: nalgebra::Point2<f64>,
+) -> bool {
+    let orient = |p: nalgebra::Point2<f64>, q: nalgebra::Point2<f64>, r: nalgebra::Point2<f64>| (q - p).perp(&(r - p));
+    let (d1, d2) = (orient(c, d, a), orient(c, d, b));
+    let (d3, d4) = (orient(a, b, c), orient(a, b, d));
+    (d1 * d2 < 0.0) && (d3 * d4 < 0.0)
 }
 
 pub(crate) fn span_of(wing: &WingScene) -> (f64, f64) {

@@ -317,6 +317,20 @@ impl Scene {
         check.interference(self);
         if let Some(dynamics) = &self.dynamics {
             dynamics.check(&mut check);
+            if self.wing.is_none() {
+                // Without a wing there is no flap section to take a moment of inertia from.
+                for (i, station) in self.station.iter().enumerate() {
+                    if !station.mechanism.kind().models_own_dynamics() {
+                        check.fail(
+                            "dynamics",
+                            format!(
+                                "station[{i}] (\"{}\") has no flap section in a 2D scene (no [wing]) to take the flap's moment of inertia from: [dynamics] runs a 2D scene's stations only if their kind models its own masses (five-bar); give the scene a [wing] or remove [dynamics]",
+                                station.name
+                            ),
+                        );
+                    }
+                }
+            }
         }
         check.resolution(self);
         if check.problems.is_empty() {

@@ -358,6 +358,14 @@ impl MechanismScene {
     /// in place of any station's mechanism (the others are given by their dimensions).
     pub const SYNTHESISED_KINDS: &'static [&'static str] = &["dropped-hinge", "four-bar", "link-track", "hooked-track"];
 
+    /// True for a kind synthesised from the flap settings ([`Self::SYNTHESISED_KINDS`]).
+    pub fn is_synthesised(&self) -> bool {
+        matches!(
+            self,
+            Self::DroppedHinge(_) | Self::FourBar(_) | Self::LinkTrack(_) | Self::HookedTrack(_)
+        )
+    }
+
     /// The kind behind the variant: everything else reaches the kind through it.
     pub fn kind(&self) -> &dyn KindScene {
         match self {

@@ -8,13 +8,14 @@ use super::Checker;
 use crate::scene::{load_airfoil, AirfoilRef, FlapScene, Scene, WingScene};
 
 impl Checker<'_> {
-    /// A positive overlap target needs the wing's shroud over the flap's nose: without one
+    /// A positive overlap target of a flap whose stations are synthesised from its settings
+    /// needs the wing's shroud over the flap's nose: without one
     /// the cove is a wall just ahead of the flap, the lip sits at the flap's nose and a
     /// mechanism reaching a positive overlap drives the flap into the wing (97 mm on a
     /// reproducer). The shroud must reach past the largest overlap, with room for the gap:
     /// the value proposed is the largest overlap plus 3 % of the chord (the shipped
     /// transport flap reaches its 3 %c take-off overlap under a 6 %c shroud).
-    fn overlap_needs_a_shroud(&mut self, path: &str, flap: &crate::scene::FlapScene) {
+    pub(super) fn overlap_needs_a_shroud(&mut self, path: &str, flap: &crate::scene::FlapScene) {
         if flap.shroud_chord_fraction.is_some_and(|s| s > 0.0) {
             return;
         }
@@ -229,7 +230,6 @@ impl Checker<'_> {
             self.in_range(&format!("{path}.{key}"), value, min, max, false);
         }
         self.shroud(path, flap.shroud_chord_fraction);
-        self.overlap_needs_a_shroud(path, flap);
         if let Some(gap) = flap.side_gap_m {
             let quarter_span = 0.25 * (flap.y_outboard_m - flap.y_inboard_m).abs();
             self.in_range(&format!("{path}.side_gap_m"), gap, 0.0, quarter_span, false);

@@ -305,6 +305,15 @@ impl Scene {
             check.wing(wing);
             for (i, flap) in self.flap.iter().enumerate() {
                 check.flap(&format!("flap[{i}]"), flap, wing);
+                // Only a kind synthesised from the settings drives the flap to them; a kind
+                // given by its dimensions reports how far it misses them.
+                let synthesised = self
+                    .station
+                    .iter()
+                    .any(|s| s.flap.as_deref() == Some(flap.name.as_str()) && s.mechanism.is_synthesised());
+                if synthesised {
+                    check.overlap_needs_a_shroud(&format!("flap[{i}]"), flap);
+                }
             }
             check.unique_names("flap", self.flap.iter().map(|f| f.name.as_str()));
             check.structure(self, wing);

@@ -154,6 +154,9 @@ fn many_stations_are_refused_by_the_budget() {
         );
     }
     scene.push_str(&text[end..]);
+    // Counting only the pairs of stations near each other (issue 35 item 19), 30 stations
+    // fit at the default evaluations; at the largest allowed they do not.
+    scene.push_str("\n[interference]\nmax_evaluations = 100000\n");
     assert_rejected(
         &scene,
         &["interference.max_evaluations", "30 stations", "use fewer stations"],
@@ -198,4 +201,10 @@ fn the_hang_reproducers_are_refused_by_key() {
     ] {
         assert_rejected(&scene, &[key]);
     }
+}
+
+/// Issue 35 item 19: a scene holding only a name designed nothing and exited 0.
+#[test]
+fn a_scene_with_only_a_name_is_refused_saying_what_it_lacks() {
+    assert_rejected("name = \"x\"\n", &["[[station]]", "[wing]", "nothing to design"]);
 }

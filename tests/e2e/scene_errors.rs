@@ -122,13 +122,13 @@ fn work_beyond_the_budget_is_refused_naming_the_knobs() {
         &["interference.max_evaluations", "over the budget"],
     );
     assert_rejected(
-        &with("[resolution]\nairfoil_points_per_side = 2000\ndeployment_samples = 100001"),
+        &with("[resolution]\nairfoil_points_per_side = 2000\ndeployment_samples = 100000"),
         &["resolution.deployment_samples", "over the budget"],
     );
     // Out of range outright (the old limits let these through).
     assert_rejected(
         &with("[resolution]\ndeployment_samples = 1000000"),
-        &["resolution.deployment_samples = 1000000: must be in [2, 100001]"],
+        &["resolution.deployment_samples = 1000000: must be in [2, 100000]"],
     );
 }
 

@@ -122,13 +122,13 @@ fn work_beyond_the_budget_is_refused_naming_the_knobs() {
         &["interference.max_evaluations", "over the budget"],
     );
     assert_rejected(
-        &with("[resolution]\nairfoil_points_per_side = 2000\ndeployment_samples = 100001"),
+        &with("[resolution]\nairfoil_points_per_side = 2000\ndeployment_samples = 100000"),
         &["resolution.deployment_samples", "over the budget"],
     );
     // Out of range outright (the old limits let these through).
     assert_rejected(
         &with("[resolution]\ndeployment_samples = 1000000"),
-        &["resolution.deployment_samples = 1000000: must be in [2, 100001]"],
+        &["resolution.deployment_samples = 1000000: must be in [2, 100000]"],
     );
 }
 
@@ -154,6 +154,9 @@ fn many_stations_are_refused_by_the_budget() {
         );
     }
     scene.push_str(&text[end..]);
+    // Counting only the pairs of stations near each other (issue 35 item 19), 30 stations
+    // fit at the default evaluations; at the largest allowed they do not.
+    scene.push_str("\n[interference]\nmax_evaluations = 100000\n");
     assert_rejected(
         &scene,
         &["interference.max_evaluations", "30 stations", "use fewer stations"],
@@ -198,4 +201,51 @@ fn the_hang_reproducers_are_refused_by_key() {
     ] {
         assert_rejected(&scene, &[key]);
     }
+}
+
+/// Issue 35 item 19: a scene holding only a name designed nothing and exited 0.
+#[test]
+fn a_scene_with_only_a_name_is_refused_saying_what_it_lacks() {
+    assert_rejected("name = \"x\"\n", &["[[station]]", "[wing]", "nothing to design"]);
+}
+
+/// Issue 35 item 19: `transport-flap` with 32 stations (16 dropped hinges a flap, 0.33 m
+/// and 0.53 m apart along the hinge axes) was refused at its own `max_evaluations = 1200`,
+/// the estimate counting every cross-station pair (29,816). Counting the stations near each
+/// other, it passes the budget and `check` gives its verdict (the neighbours at 0.33 m do
+/// interfere: exit 1), the broad phase certifying most pairs.
+#[test]
+fn a_whole_transport_wing_of_32_stations_is_checked() {
+    let text = std::fs::read_to_string(crate::repo_root().join("data/scenes/transport-flap.toml")).unwrap();
+    let start = text.find("[[station]]").unwrap();
+    let end = text.find("[loads]").unwrap();
+    let mut scene = text[..start].to_string();
+    for (flap, mass, first, last) in [("inboard", 180.0, 0.6, 5.6), ("outboard", 150.0, 0.6, 8.6)] {
+        for i in 0..16 {
+            let offset = first + (last - first) * f64::from(i) / 15.0;
+            scene.push_str(&format!(
+                "[[station]]\nname = \"{flap}-{i}\"\nflap = \"{flap}\"\naxis_offset_m = {offset:.3}\n\
+                 [station.mechanism]\nkind = \"dropped-hinge\"\nflap_mass_kg = {mass}\n\n"
+            ));
+        }
+    }
+    scene.push_str(&text[end..]);
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("scene.toml"), scene).unwrap();
+    let output = crate::run_flapwright(dir.path(), &["check", "scene.toml", "--out", "out", "--quiet"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        matches!(output.status.code(), Some(0 | 1)),
+        "a verdict, not bad input:\n{stderr}"
+    );
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("out/report.json")).unwrap()).unwrap();
+    let interference = &report["interference"];
+    let swept = interference["pairs"].as_array().unwrap().len();
+    let apart = interference["certified_apart"].as_array().unwrap().len();
+    assert!(
+        swept > 0 && apart > 10 * swept,
+        "{swept} swept, {apart} certified apart"
+    );
+    assert_eq!(report["stations"].as_array().unwrap().len(), 32);
 }

@@ -24,5 +24,7 @@ pub mod required;
 
 pub use drive::{DcMotor, Drive, Gearbox, SmoothStart, SupplyVoltage};
 pub use error::{Error, Result};
-pub use ode::{integrate, DynamicsRun, DynamicsSample, EnergyBalance, Integration, Method, SolverCounts};
+pub use ode::{
+    integrate, DynamicsRun, DynamicsSample, EnergyBalance, Integration, Method, SolverCounts, MAX_TIME_HISTORY_SAMPLES,
+};
 pub use required::{required_drive, RequiredSample};

@@ -20,7 +20,7 @@
 //! torque exceeds the loads holding it there, n η K i + Q(q₀) > 0 (breakaway); the run
 //! ends when q reaches the deployed stop.
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 
 use diffsol::{NalgebraLU, NalgebraMat, OdeBuilder, OdeEquations, OdeSolverMethod, OdeSolverStopReason, Op, Vector};
 use flapwright_mechanism::{Generalised, OneInputDynamics};
@@ -55,6 +55,12 @@ impl Method {
         }
     }
 }
+
+/// The most samples a run's time history keeps: past it, the history is thinned to every
+/// other step (and then every fourth, ...), so that `max_steps` = 1e7 on a stiff motor
+/// gives a report of a few megabytes, not gigabytes (at about 300 bytes of JSON a sample,
+/// 1.2 MB a run). Peaks, counts and the energy balance still take every step.
+pub const MAX_TIME_HISTORY_SAMPLES: usize = 4_000;
 
 /// Integration settings.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -150,7 +156,8 @@ pub struct DynamicsRun {
     pub method: Method,
     /// Tolerances.
     pub relative_tolerance: f64,
-    /// Every accepted step (and the two events).
+    /// Accepted steps (and the two events): every one up to [`MAX_TIME_HISTORY_SAMPLES`],
+    /// then evenly thinned (every 2nd, 4th, ... step) to at most that many.
     pub samples: Vec<DynamicsSample>,
     /// When the drive overcame the loads at the stowed stop (s).
     pub breakaway_time_s: f64,
@@ -174,6 +181,10 @@ struct Deployment<'a> {
     drive: Drive,
     supply: SupplyVoltage,
     failure: RefCell<Option<Error>>,
+    /// Every `stride`-th ordinary step is kept in the time history (doubled each time it
+    /// fills up, see [`MAX_TIME_HISTORY_SAMPLES`]); `since_kept` steps since the last kept.
+    stride: Cell<usize>,
+    since_kept: Cell<usize>,
 }
 
 impl Deployment<'_> {
@@ -262,6 +273,8 @@ pub fn integrate(
         drive: *drive,
         supply: *supply,
         failure: RefCell::new(None),
+        stride: Cell::new(1),
+        since_kept: Cell::new(0),
     };
     let (stowed, deployed) = system.input_travel();
     let at_stop = system
@@ -391,7 +404,7 @@ where
     let start = solver.state().t;
     let stop = settings.max_time_s.max(start * (1.0 + 1e-12) + 1e-12);
     solver.set_stop_time(stop).map_err(|e| solver_error(method, start, e))?;
-    record(deployment, run, start, &read(solver.state().y));
+    record(deployment, run, start, &read(solver.state().y), true);
     let mut steps = 0;
     let outcome = loop {
         if steps >= settings.max_steps {
@@ -411,12 +424,12 @@ where
         match reason.map_err(|e| solver_error(method, solver.state().t, e))? {
             OdeSolverStopReason::InternalTimestep => {
                 let state = solver.state();
-                record(deployment, run, state.t, &read(state.y));
+                record(deployment, run, state.t, &read(state.y), false);
             }
             OdeSolverStopReason::RootFound(time, _) => {
                 let y = solver.interpolate(time).map_err(|e| solver_error(method, time, e))?;
                 let state = read(&y);
-                record(deployment, run, time, &state);
+                record(deployment, run, time, &state, true);
                 break Phase {
                     state,
                     time,
@@ -430,7 +443,7 @@ where
                     time: state.t,
                     event: false,
                 };
-                record(deployment, run, phase.time, &phase.state);
+                record(deployment, run, phase.time, &phase.state, true);
                 break phase;
             }
         }
@@ -445,10 +458,33 @@ where
     Ok(outcome)
 }
 
-fn record(deployment: &Deployment, run: &mut DynamicsRun, time_s: f64, state: &[f64; STATES]) {
+/// Takes a step's state into the peaks, and into the time history when it is an event
+/// (`always`: a phase's start, its event or its end) or the `stride`-th ordinary step. When
+/// the history reaches [`MAX_TIME_HISTORY_SAMPLES`], every other ordinary sample is dropped
+/// (the first and the last kept) and the stride doubles: the history stays evenly
+/// decimated in steps and bounded whatever `max_steps` allows.
+fn record(deployment: &Deployment, run: &mut DynamicsRun, time_s: f64, state: &[f64; STATES], always: bool) {
     let torque = deployment.drive.motor.torque_constant_nm_per_a * state[2];
     run.peak_current_a = run.peak_current_a.max(state[2].abs());
     run.peak_motor_torque_nm = run.peak_motor_torque_nm.max(torque.abs());
+    if !always {
+        let since = deployment.since_kept.get() + 1;
+        if since < deployment.stride.get() {
+            deployment.since_kept.set(since);
+            return;
+        }
+    }
+    deployment.since_kept.set(0);
+    if run.samples.len() >= MAX_TIME_HISTORY_SAMPLES {
+        let last = run.samples.len() - 1;
+        let mut index = 0;
+        run.samples.retain(|_| {
+            let keep = index == 0 || index == last || index % 2 == 0;
+            index += 1;
+            keep
+        });
+        deployment.stride.set(deployment.stride.get().saturating_mul(2));
+    }
     run.samples.push(DynamicsSample {
         time_s,
         input: state[0],

@@ -4,6 +4,7 @@
 
 use flapwright_dynamics::{
     integrate, required_drive, Drive, DynamicsRun, Error, Integration, Method, SmoothStart, SupplyVoltage,
+    MAX_TIME_HISTORY_SAMPLES,
 };
 use flapwright_mechanism::LoadedFiveBar;
 
@@ -262,5 +263,41 @@ fn agrees_with_an_independent_recomputation() {
     assert!(
         (end.rate - 1.92862).abs() < 1e-4 && (end.current_a - 151.966).abs() < 2e-3,
         "{end:?}"
+    );
+}
+
+/// Issue 35 item 19: a stiff motor on the explicit method at a large `max_steps` took
+/// every accepted step into the report (3.2 GB at 1e7 steps). The time history is thinned
+/// to at most `MAX_TIME_HISTORY_SAMPLES`, evenly in steps, from the start to the last step;
+/// the peaks still see every step.
+#[test]
+fn the_time_history_is_bounded_whatever_the_step_limit() {
+    let system = five_bar();
+    let settings = |max_steps: usize| Integration {
+        method: Method::Tsit45,
+        max_steps,
+        ..Integration::default()
+    };
+    let long = run(&system, 1e-7, settings(3 * MAX_TIME_HISTORY_SAMPLES));
+    assert!(long.hit_step_limit);
+    assert!(long.counts.steps >= 3 * MAX_TIME_HISTORY_SAMPLES, "{:?}", long.counts);
+    let samples = &long.samples;
+    assert!(
+        samples.len() <= MAX_TIME_HISTORY_SAMPLES && samples.len() > MAX_TIME_HISTORY_SAMPLES / 4,
+        "{} samples",
+        samples.len()
+    );
+    assert_eq!(samples.first().map(|s| s.time_s), Some(0.0));
+    assert!(samples.windows(2).all(|w| w[0].time_s <= w[1].time_s));
+    // The peak over every step is at least the history's largest.
+    let largest = samples.iter().map(|s| s.current_a.abs()).fold(0.0, f64::max);
+    assert!(long.peak_current_a >= largest);
+    // A short run keeps every step.
+    let short = run(&system, 1e-3, Integration::default());
+    assert!(
+        short.samples.len() >= short.counts.steps,
+        "{} {:?}",
+        short.samples.len(),
+        short.counts
     );
 }

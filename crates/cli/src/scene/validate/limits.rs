@@ -39,7 +39,7 @@ pub const GEARBOX_EFFICIENCY: (f64, f64) = (0.05, 1.0);
 /// Airfoil points per side (resampling).
 pub const AIRFOIL_POINTS_PER_SIDE: (usize, usize) = (8, 2000);
 /// Deployment samples per load case.
-pub const DEPLOYMENT_SAMPLES: (usize, usize) = (2, 100_001);
+pub const DEPLOYMENT_SAMPLES: (usize, usize) = (2, 100_000);
 /// Fairing samples over the deployment.
 pub const FAIRING_SAMPLES: (usize, usize) = (2, 10_001);
 /// Fairing points per capsule outline.

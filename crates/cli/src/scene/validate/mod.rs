@@ -291,6 +291,13 @@ impl Scene {
             check.fail("name", "\"\": must not be empty");
         }
         check.file_safe_name("name", &self.name);
+        if self.wing.is_none() && self.station.is_empty() {
+            check.fail(
+                "station",
+                "none: the scene has neither a [wing] nor a [[station]], so there is nothing to design; add a \
+                 [[station]] with its [station.mechanism] (a 2D scene), or a [wing] with [[flap]] and stations on them",
+            );
+        }
         for (i, flap) in self.flap.iter().enumerate() {
             check.file_safe_name(&format!("flap[{i}].name"), &flap.name);
         }

@@ -351,6 +351,12 @@ impl MechanismScene {
     /// in place of any station's mechanism (the others are given by their dimensions).
     pub const SYNTHESISED_KINDS: &'static [&'static str] = &["dropped-hinge", "four-bar", "link-track", "hooked-track"];
 
+    /// True for a kind given by its dimensions (not synthesised from the flap settings):
+    /// its deflection range is its own, and may fall short of the flap's landing setting.
+    pub fn given_by_dimensions(&self) -> bool {
+        matches!(self, Self::CircularArcTrack(_) | Self::FiveBar(_))
+    }
+
     /// The kind behind the variant: everything else reaches the kind through it.
     pub fn kind(&self) -> &dyn KindScene {
         match self {

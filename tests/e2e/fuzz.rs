@@ -4,9 +4,17 @@
 //! located as `file:line:col`), never panic, never run past the bound, never print or
 //! write NaN or infinity.
 //!
-//! CI runs [`CI_CASES`] cases; `FLAPWRIGHT_FUZZ_CASES=2000 cargo test -p flapwright --test
-//! e2e fuzz -- --ignored` runs the long suite; `FLAPWRIGHT_FUZZ_DUMP=DIR` keeps the scene of
-//! every failing case there as `case-N.toml`.
+//! The key fuzzer (issue 35) does the same to the keys of every mechanism kind and of
+//! `[dynamics]`, one base scene per kind, through `design` or `check` and, on every
+//! [`KEY_SAMPLE`]-th mutant, `study` and `export --urdf --gltf`: no panic, no run past the
+//! bound, and every exit 2 located and naming the mutated key (or its table). A failure
+//! prints the base, the mutations, the command and the whole mutated scene.
+//!
+//! CI runs [`CI_CASES`] and [`KEY_CI_CASES`] cases; `FLAPWRIGHT_FUZZ_CASES=2000
+//! FLAPWRIGHT_FUZZ_KEY_CASES=800 cargo test -p flapwright --test e2e fuzz -- --ignored` runs
+//! the long suites (the key one first checks that every base designs); the seed is
+//! `FLAPWRIGHT_FUZZ_SEED` (13); `FLAPWRIGHT_FUZZ_DUMP=DIR` keeps the scene of every failing
+//! case there as `case-N.toml` (`key-case-N-<command>.toml`).
 
 use std::io::Read;
 use std::path::Path;

@@ -741,9 +741,10 @@ fn key_mutate(text: &str, base: &KeyBase, mutations: &[KeyMutation]) -> (String,
             KeyMutation::Scale { site: n, factor } => {
                 let s = site(*n);
                 lines[s.line] = edit_site(&lines[s.line], s.member, |k, v| {
+                    // A number only (`nan` scaled would print as `NaN`, no TOML).
                     Some(match v.parse::<f64>() {
-                        Ok(x) => format!("{k} = {:?}", x * factor),
-                        Err(_) => format!("{k} = {v}"),
+                        Ok(x) if x.is_finite() => format!("{k} = {:?}", x * factor),
+                        _ => format!("{k} = {v}"),
                     })
                 });
                 touched.push(s.path);

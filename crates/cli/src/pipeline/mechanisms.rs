@@ -154,6 +154,13 @@ pub fn synthesise_all(scene: &Scene, placed: Vec<PlacedStation>) -> Result<Vec<S
                     }
                 }
                 problems.extend(degeneracies(mechanism.as_ref(), &path, kind.geometry_keys()));
+                problems.extend(short_of_landing(
+                    scene,
+                    i,
+                    mechanism.as_ref(),
+                    &path,
+                    kind.geometry_keys(),
+                ));
                 built.push(StationRecord {
                     station: station.name.clone(),
                     index: i,
@@ -179,6 +186,36 @@ pub fn synthesise_all(scene: &Scene, placed: Vec<PlacedStation>) -> Result<Vec<S
     } else {
         Err(SceneError::Invalid(problems).into())
     }
+}
+
+/// A kind given by its dimensions (the five-bar: its range is known once it is assembled)
+/// that cannot turn its flap to the flap's landing setting, as a problem naming the
+/// station's mechanism and the setting (the gap-overlap stage poses the flap there).
+fn short_of_landing(
+    scene: &Scene,
+    i: usize,
+    mechanism: &dyn FlapMechanism,
+    path: &str,
+    geometry_keys: &str,
+) -> Option<Problem> {
+    let station = &scene.station[i];
+    if station.mechanism.is_synthesised() {
+        return None;
+    }
+    let name = station.flap.as_ref()?;
+    let (f, flap) = scene.flap.iter().enumerate().find(|(_, f)| &f.name == name)?;
+    let range_deg = mechanism.deflection_range_rad().to_degrees();
+    let landing_deg = flap.settings.landing_deg;
+    (range_deg + 1e-9 < landing_deg).then(|| {
+        Problem::new(
+            path.to_string(),
+            format!(
+                "turns the flap through {} deg at most, short of its landing setting flap[{f}].settings.landing_deg = {}: change {geometry_keys}, or the setting",
+                crate::scene::number(range_deg),
+                crate::scene::number(landing_deg)
+            ),
+        )
+    })
 }
 
 /// Largest Jacobian condition number accepted at the stroke ends: beyond it a

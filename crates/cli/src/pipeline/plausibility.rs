@@ -196,35 +196,6 @@ pub fn gap_overlap_warnings(
     warnings
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use flapwright_interference::FairingDepth;
-
-    fn fairing(depth_percent_flap_chord: f64) -> FairingDepth {
-        FairingDepth {
-            depth_m: 0.005 * depth_percent_flap_chord,
-            depth_percent_flap_chord,
-            part: Some("inner.screw".into()),
-            at_parameter: 0.5,
-            point_st: [0.0, -0.1],
-            length_m: 0.6,
-            length_percent_flap_chord: 120.0,
-        }
-    }
-
-    #[test]
-    fn a_fairing_deeper_than_half_the_flap_chord_is_warned_about_with_its_numbers() {
-        assert_eq!(fairing_warning("inner", &fairing(49.9)), None);
-        let warning = fairing_warning("inner", &fairing(110.0)).unwrap();
-        assert!(
-            warning.contains("station inner: fairing 550 mm deep (110 % of the flap chord")
-                && warning.contains("inner.screw at 50.0 % of the deployment"),
-            "{warning}"
-        );
-    }
-}
-
 /// Where a failing pair is a flap against the wing at one of the flap's sides (the contact
 /// on the wing within the overlap's depth and a centimetre of the flap's cut-out
 /// `y_inboard_m` or `y_outboard_m`): the flap's side moved spanwise past its side gap as it
@@ -278,4 +249,33 @@ pub fn side_gap_hints(
         ));
     }
     hints
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use flapwright_interference::FairingDepth;
+
+    fn fairing(depth_percent_flap_chord: f64) -> FairingDepth {
+        FairingDepth {
+            depth_m: 0.005 * depth_percent_flap_chord,
+            depth_percent_flap_chord,
+            part: Some("inner.screw".into()),
+            at_parameter: 0.5,
+            point_st: [0.0, -0.1],
+            length_m: 0.6,
+            length_percent_flap_chord: 120.0,
+        }
+    }
+
+    #[test]
+    fn a_fairing_deeper_than_half_the_flap_chord_is_warned_about_with_its_numbers() {
+        assert_eq!(fairing_warning("inner", &fairing(49.9)), None);
+        let warning = fairing_warning("inner", &fairing(110.0)).unwrap();
+        assert!(
+            warning.contains("station inner: fairing 550 mm deep (110 % of the flap chord")
+                && warning.contains("inner.screw at 50.0 % of the deployment"),
+            "{warning}"
+        );
+    }
 }

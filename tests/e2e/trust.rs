@@ -292,3 +292,21 @@ fn a_side_gap_too_small_for_the_flaps_spanwise_motion_names_the_gap_that_clears(
         String::from_utf8_lossy(&output.stderr)
     );
 }
+
+/// A command that needs a wing, on a 2D scene, is bad input located like every scene
+/// problem (`file:line:col: wing`), found by the key fuzzer.
+#[test]
+fn a_2d_scene_refused_by_check_and_the_viewer_exports_is_located() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = repo_root().join("data/scenes/double-slotted-flap.toml");
+    let scene = scene.to_str().unwrap();
+    for args in [vec!["check", scene], vec!["export", scene, "--urdf"]] {
+        let output = crate::run_flapwright(dir.path(), &args);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.contains("double-slotted-flap.toml:1:1: wing"),
+            "{args:?}: {stderr}"
+        );
+    }
+}

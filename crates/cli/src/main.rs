@@ -197,6 +197,13 @@ fn json_error(failure: &Failure) -> String {
 }
 
 /// Bad input (exit 2).
+/// A command that needs a `[wing]` on a 2D scene: bad input, located at the scene's `wing`
+/// key path (where it is missing: the file's start), as every other scene problem is.
+fn no_wing(text: &str, file: &str, message: String) -> Failure {
+    let located = SceneError::Invalid(vec![flapwright::scene::Problem::new("wing", message)]).locate(text, file);
+    bad_input(anyhow::Error::new(located).context(format!("invalid scene {file}")))
+}
+
 fn bad_input(error: anyhow::Error) -> Failure {
     Failure {
         code: EXIT_BAD_INPUT,
@@ -244,10 +251,14 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 .filter_map(|(on, flag)| on.then_some(*flag))
                 .collect();
             if !asked.is_empty() {
-                return Err(bad_input(anyhow::anyhow!(
-                    "`export {}` needs a scene with a [wing]: a 2D station has no 3D geometry to export (`--svg` draws it)",
-                    asked.join(" ")
-                )));
+                return Err(no_wing(
+                    &text,
+                    &file_label,
+                    format!(
+                        "`export {}` needs a scene with a [wing]: a 2D station has no 3D geometry to export (`--svg` draws it)",
+                        asked.join(" ")
+                    ),
+                ));
             }
         }
         if *at != flapwright::scene::StlSetting::Stowed && (all || !*stl || *urdf || *gltf || *svg) {
@@ -304,9 +315,11 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         wing_cache: None,
     };
     if mode == Mode::Check && scene.wing.is_none() {
-        return Err(bad_input(anyhow::anyhow!(
-            "`check` needs a scene with a [wing]: there is no 3D geometry to check"
-        )));
+        return Err(no_wing(
+            &text,
+            &file_label,
+            "`check` needs a scene with a [wing]: there is no 3D geometry to check".into(),
+        ));
     }
     // A spinner naming the running stage, only for a person watching a terminal.
     let spinner = (!cli.quiet && !cli.json && std::io::stdout().is_terminal()).then(|| {

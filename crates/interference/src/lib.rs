@@ -67,7 +67,9 @@ pub use flap_motion::{fit_points, FittedFlapMotion, FlapCarrier, FIT_POINTS_PER_
 pub use opening::{cut_opening, station_opening, OpenedSurface, Opening, OPENING_SAMPLES, UPWARD_FACE_COS};
 pub use part::{Fixed, Motion, Part};
 pub use slabbed::SLABS_WORTH_IT;
-pub use station::{flap_part, planar_parts, station_parts, DeclaredContact, FlapElement, StationPart, StationParts};
+pub use station::{
+    flap_part, joined_solids, planar_parts, station_parts, DeclaredContact, FlapElement, StationPart, StationParts,
+};
 pub use sweep::{
     sweep_contact, sweep_pair, sweep_pair_for_verdict, JointSeparation, PairClearance, SweepSettings,
     JOINT_PENETRATION_GRID_M,

@@ -86,7 +86,8 @@ impl AirfoilRef {
 pub const AIRFOIL_COORDINATE_MARGIN: f64 = 0.1;
 
 /// Reads an airfoil the scene names and resamples it to the scene's resolution; a file's
-/// coordinates must be of a unit-chord section ([`AIRFOIL_COORDINATE_MARGIN`]).
+/// coordinates must be of a unit-chord section: x within `AIRFOIL_COORDINATE_MARGIN` (0.1) of [0, 1], y in
+/// [-0.5, 0.5].
 pub fn load_airfoil(text: &str, scene_dir: Option<&Path>, points_per_side: usize) -> Result<Airfoil> {
     let airfoil = match AirfoilRef::parse(text).map_err(anyhow::Error::msg)? {
         AirfoilRef::Naca(digits) => Airfoil::naca(&digits, points_per_side, TrailingEdge::Closed)

@@ -291,14 +291,12 @@ fn fuzz(cases: u32, seed: u64) {
         .iter()
         .map(|name| std::fs::read_to_string(repo_root().join("data/scenes").join(name)).expect("shipped scene"))
         .collect();
-    let mut seed_bytes = [0u8; 32];
-    seed_bytes[..8].copy_from_slice(&seed.to_le_bytes());
-    let rng = TestRng::from_seed(RngAlgorithm::ChaCha, &seed_bytes);
-    let mut runner = TestRunner::new_with_rng(Config::default(), rng);
-    let strategy = (0..scenes.len(), prop::collection::vec(mutation(), 1..4));
-    let inputs: Vec<(usize, Vec<Mutation>)> = (0..cases)
-        .map(|_| strategy.new_tree(&mut runner).expect("strategy").current())
-        .collect();
+    let inputs: Vec<(usize, Vec<Mutation>)> = draw(
+        (0..scenes.len(), prop::collection::vec(mutation(), 1..4)),
+        cases,
+        seed,
+        0,
+    );
     let next = AtomicUsize::new(0);
     let failures = Mutex::new(Vec::new());
     let tally = Mutex::new(std::collections::BTreeMap::<String, usize>::new());
@@ -847,15 +845,12 @@ const KNOWN_DEFECTS: &[(&str, &str, &str, &str)] = &[];
 /// [`KEY_SAMPLE`]-th also through `study` and `export`; panics with the first failures.
 fn fuzz_keys(cases: u32, seed: u64) {
     let bases = key_bases();
-    let mut seed_bytes = [0u8; 32];
-    seed_bytes[..8].copy_from_slice(&seed.to_le_bytes());
-    seed_bytes[8] = 0x4b;
-    let rng = TestRng::from_seed(RngAlgorithm::ChaCha, &seed_bytes);
-    let mut runner = TestRunner::new_with_rng(Config::default(), rng);
-    let strategy = (0..bases.len(), prop::collection::vec(key_mutation(), 1..3));
-    let inputs: Vec<(usize, Vec<KeyMutation>)> = (0..cases)
-        .map(|_| strategy.new_tree(&mut runner).expect("strategy").current())
-        .collect();
+    let inputs: Vec<(usize, Vec<KeyMutation>)> = draw(
+        (0..bases.len(), prop::collection::vec(key_mutation(), 1..3)),
+        cases,
+        seed,
+        0x4b,
+    );
     let next = AtomicUsize::new(0);
     let failures = Mutex::new(Vec::new());
     let known = Mutex::new(Vec::new());
@@ -988,4 +983,17 @@ fn a_five_bar_short_of_the_landing_setting_is_a_located_scene_problem() {
         "{}",
         run.stderr
     );
+}
+
+/// `cases` values of `strategy`, drawn reproducibly from `seed` (ChaCha; `salt` keeps two
+/// fuzzers with the same seed apart).
+fn draw<S: Strategy>(strategy: S, cases: u32, seed: u64, salt: u8) -> Vec<S::Value> {
+    let mut seed_bytes = [0u8; 32];
+    seed_bytes[..8].copy_from_slice(&seed.to_le_bytes());
+    seed_bytes[8] = salt;
+    let rng = TestRng::from_seed(RngAlgorithm::ChaCha, &seed_bytes);
+    let mut runner = TestRunner::new_with_rng(Config::default(), rng);
+    (0..cases)
+        .map(|_| strategy.new_tree(&mut runner).expect("strategy").current())
+        .collect()
 }

@@ -53,7 +53,7 @@
 
 use std::fs;
 use std::io::{self, Write};
-use std::path::{Component, Path, PathBuf};
+use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::{SystemTime, UNIX_EPOCH};
 
@@ -68,6 +68,12 @@ pub const TEST_EXIT_AT: &str = "FLAPWRIGHT_TEST_EXIT_AT";
 
 /// What a run's marker and a manifest say wrote them.
 const WRITTEN_BY: &str = "flapwright";
+
+mod paths;
+#[cfg(test)]
+use paths::resolve;
+pub use paths::resolve_out;
+use paths::{absolute, folder_name, parent_of, refuse_read_only, refuse_scene_folder, refuse_working_folder};
 
 /// Why an output folder cannot be used. Every variant is a problem with the user's
 /// choice of `--out` (exit 2), except [`OutputError::Io`].
@@ -613,89 +619,6 @@ fn process_state(pid: u32) -> Option<(char, u64)> {
     Some((state, start))
 }
 
-/// `--out` resolved once: absolute, `.` and `..` taken out, symbolic links followed (as far
-/// as the path exists; below that, `..` drops the name before it).
-pub fn resolve_out(path: &Path) -> Result<PathBuf, OutputError> {
-    resolve(path).map_err(|e| OutputError::Unwritable {
-        path: path.to_path_buf(),
-        reason: e.to_string(),
-    })
-}
-
-fn resolve(path: &Path) -> io::Result<PathBuf> {
-    let absolute = std::env::current_dir()?.join(path);
-    let mut resolved = PathBuf::new();
-    // `resolved` exists and is canonical (no links, no `..`).
-    let mut on_disk = true;
-    for component in absolute.components() {
-        match component {
-            Component::Prefix(_) | Component::RootDir => resolved.push(component.as_os_str()),
-            Component::CurDir => {}
-            Component::ParentDir => {
-                resolved.pop();
-                on_disk = exists(&resolved);
-            }
-            Component::Normal(name) => {
-                resolved.push(name);
-                if !on_disk {
-                    continue;
-                }
-                match fs::symlink_metadata(&resolved) {
-                    Ok(meta) => {
-                        resolved = fs::canonicalize(&resolved).map_err(|e| {
-                            if meta.file_type().is_symlink() {
-                                io::Error::new(e.kind(), format!("a link that leads nowhere ({e})"))
-                            } else {
-                                e
-                            }
-                        })?;
-                    }
-                    Err(e) if e.kind() == io::ErrorKind::NotFound => on_disk = false,
-                    Err(e) => return Err(e),
-                }
-            }
-        }
-    }
-    Ok(resolved)
-}
-
-/// Refuses an output folder that is the folder the run is in or above it.
-fn refuse_working_folder(target: &Path) -> Result<(), OutputError> {
-    let Ok(here) = std::env::current_dir().and_then(fs::canonicalize) else {
-        return Ok(());
-    };
-    if here.starts_with(target) {
-        return Err(OutputError::ContainsWorkingFolder {
-            folder: target.to_path_buf(),
-        });
-    }
-    Ok(())
-}
-
-/// Refuses an earlier output with a read-only folder in it.
-fn refuse_read_only(target: &Path) -> Result<(), OutputError> {
-    match read_only_folder(target)? {
-        Some(read_only) => Err(OutputError::ReadOnly {
-            folder: target.to_path_buf(),
-            read_only,
-        }),
-        None => Ok(()),
-    }
-}
-
-/// The first folder in `folder` (itself included) that no one may write to.
-fn read_only_folder(folder: &Path) -> io::Result<Option<PathBuf>> {
-    if fs::metadata(folder)?.permissions().readonly() {
-        return Ok(Some(folder.to_path_buf()));
-    }
-    let mut entries = Vec::new();
-    list_entries(folder, Path::new(""), &mut entries)?;
-    Ok(entries
-        .into_iter()
-        .find(|(_, meta)| meta.is_dir() && meta.permissions().readonly())
-        .map(|(relative, _)| folder.join(relative)))
-}
-
 /// Checks that a file may be written at `path` outside any output folder (a JUnit file
 /// named by `option`): it is none of the `reserved` paths (the run's input files, and
 /// folders whose contents it must not land in, flagged `true`), its folder exists and
@@ -767,39 +690,6 @@ fn write_atomically_with(path: &Path, write: impl FnOnce(&mut fs::File) -> io::R
         let _ = fs::remove_file(&temporary);
     }
     result
-}
-
-/// Refuses an output folder that is the scene's folder or above it.
-fn refuse_scene_folder(target: &Path, scene: &Path) -> Result<(), OutputError> {
-    let Ok(scene_abs) = fs::canonicalize(scene) else {
-        return Ok(());
-    };
-    let target_abs = absolute(target);
-    if scene_abs.starts_with(&target_abs) {
-        return Err(OutputError::ContainsScene {
-            folder: target.to_path_buf(),
-            scene: scene.to_path_buf(),
-        });
-    }
-    Ok(())
-}
-
-/// `path` made absolute with symbolic links resolved as far as it exists.
-fn absolute(path: &Path) -> PathBuf {
-    resolve(path).unwrap_or_else(|_| path.to_path_buf())
-}
-
-fn parent_of(path: &Path) -> PathBuf {
-    match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => PathBuf::from("."),
-    }
-}
-
-fn folder_name(path: &Path) -> String {
-    path.file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "flapwright-out".into())
 }
 
 /// Checks that `target` may be replaced: absent, empty, or every file in it recorded in

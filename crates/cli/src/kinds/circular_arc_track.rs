@@ -238,6 +238,11 @@ impl KindScene for CircularArcTrackScene {
         7
     }
 
+    /// Dimensioned by hand: nothing is searched.
+    fn synthesis_cost_s(&self, _airfoil_points_per_side: usize) -> f64 {
+        0.0
+    }
+
     /// From the table alone: the thesis kind is dimensioned by hand.
     fn synthesise(&self, _context: &SynthesisContext) -> Result<Arc<dyn FlapMechanism>, String> {
         match self.track() {

@@ -124,6 +124,11 @@ impl KindScene for DroppedHingeScene {
         7
     }
 
+    /// Measured on `transport-flap`'s stations (0.03 s, 0.43 s and 0.87 s a station at 60, 1000 and 2000 points).
+    fn synthesis_cost_s(&self, airfoil_points_per_side: usize) -> f64 {
+        0.01 + 0.45e-3 * airfoil_points_per_side as f64
+    }
+
     fn synthesise(&self, context: &SynthesisContext) -> Result<Arc<dyn FlapMechanism>, String> {
         let flap = context.station_flap(self.flap_mass_kg, self.flap_centre_of_mass_m)?;
         let attachment = |fraction: f64| {

@@ -232,6 +232,11 @@ impl KindScene for FiveBarScene {
         7
     }
 
+    /// Dimensioned by hand: nothing is searched.
+    fn synthesis_cost_s(&self, _airfoil_points_per_side: usize) -> f64 {
+        0.0
+    }
+
     fn flap_mass_kg(&self) -> f64 {
         self.main_flap_mass_kg + self.secondary_flap_mass_kg
     }

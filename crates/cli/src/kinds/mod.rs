@@ -292,6 +292,14 @@ pub trait KindScene {
     /// work estimate).
     fn moving_parts(&self) -> usize;
 
+    /// Upper bound of the seconds one station's synthesis takes on the project's 2-core
+    /// machine with `airfoil_points_per_side` points on each side of its sections (the
+    /// searches ask the section outline, whose queries are linear in its points), for the
+    /// pre-flight time budget (`scene::validate::budget`). Measured, not derived: re-measure
+    /// when a search changes (`data/validation/work-budget.md`). 0 for a kind dimensioned
+    /// by hand.
+    fn synthesis_cost_s(&self, airfoil_points_per_side: usize) -> f64;
+
     /// The flap mass this station carries (kg): the flap's URDF and glTF mass is the sum
     /// over its stations.
     fn flap_mass_kg(&self) -> f64;

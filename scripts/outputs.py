@@ -7,8 +7,10 @@
 
 Made for moves that must not change outputs (issue 36: the library split): take a snapshot
 with the binary before the change, another after, and compare. JSON files are compared
-with their `timings` keys (at any depth) removed and everything else byte for byte; every
-other file byte for byte. Exit status 1 when any file differs or is missing on one side.
+with their `timings` keys (at any depth) removed and everything else byte for byte; in a
+manifest (`.flapwright-manifest.json`), the size and hash of a JSON file that holds timings
+(`report.json`, `study.json`, a nested manifest) are left out, its name kept; every other file
+byte for byte. Exit status 1 when any file differs or is missing on one side.
 """
 import json
 import pathlib
@@ -40,6 +42,10 @@ def snapshot(binary: str, out: pathlib.Path) -> None:
             )
 
 
+MANIFEST = ".flapwright-manifest.json"
+TIMED = ("report.json", "study.json", MANIFEST)
+
+
 def without_timings(value):
     if isinstance(value, dict):
         return {k: without_timings(v) for k, v in value.items() if k != "timings"}
@@ -48,15 +54,26 @@ def without_timings(value):
     return value
 
 
+def without_timed_hashes(manifest):
+    for entry in manifest.get("files", []):
+        if entry.get("path", "").rsplit("/", 1)[-1] in TIMED:
+            entry.pop("sha256", None)
+            entry.pop("bytes", None)
+    return manifest
+
+
 def same(a: pathlib.Path, b: pathlib.Path) -> bool:
     left, right = a.read_bytes(), b.read_bytes()
     if left == right:
         return True
     if a.suffix == ".json":
         try:
-            return without_timings(json.loads(left)) == without_timings(json.loads(right))
+            left, right = without_timings(json.loads(left)), without_timings(json.loads(right))
         except ValueError:
             return False
+        if a.name == MANIFEST:
+            left, right = without_timed_hashes(left), without_timed_hashes(right)
+        return left == right
     return False
 
 

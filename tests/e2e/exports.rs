@@ -111,7 +111,7 @@ fn export_flags_select_the_files() {
     assert!(
         names
             .iter()
-            .all(|n| n.ends_with(".svg") || n == "report.json" || n == flapwright::output::MANIFEST),
+            .all(|n| n.ends_with(".svg") || n == "report.json" || n == flapwright_cli::output::MANIFEST),
         "{names:?}"
     );
 }

@@ -11,7 +11,7 @@
 //! prints the base, the mutations, the command and the whole mutated scene.
 //!
 //! CI runs [`CI_CASES`] and [`KEY_CI_CASES`] cases; `FLAPWRIGHT_FUZZ_CASES=2000
-//! FLAPWRIGHT_FUZZ_KEY_CASES=800 cargo test -p flapwright --test e2e fuzz -- --ignored` runs
+//! FLAPWRIGHT_FUZZ_KEY_CASES=800 cargo test -p flapwright-cli --test e2e fuzz -- --ignored` runs
 //! the long suites (the key one first checks that every base designs); the seed is
 //! `FLAPWRIGHT_FUZZ_SEED` (13); `FLAPWRIGHT_FUZZ_DUMP=DIR` keeps the scene of every failing
 //! case there as `case-N.toml` (`key-case-N-<command>.toml`).
@@ -356,7 +356,7 @@ fn mutated_scenes_never_panic_hang_or_print_nan() {
 }
 
 #[test]
-#[ignore = "long run: FLAPWRIGHT_FUZZ_CASES=2000 cargo test -p flapwright --test e2e fuzz -- --ignored"]
+#[ignore = "long run: FLAPWRIGHT_FUZZ_CASES=2000 cargo test -p flapwright-cli --test e2e fuzz -- --ignored"]
 fn mutated_scenes_long_run() {
     let cases = std::env::var("FLAPWRIGHT_FUZZ_CASES")
         .ok()
@@ -939,7 +939,7 @@ fn mutated_kind_and_dynamics_keys_are_refused_located_and_named() {
 }
 
 #[test]
-#[ignore = "long run: FLAPWRIGHT_FUZZ_KEY_CASES=600 cargo test -p flapwright --test e2e fuzz -- --ignored"]
+#[ignore = "long run: FLAPWRIGHT_FUZZ_KEY_CASES=600 cargo test -p flapwright-cli --test e2e fuzz -- --ignored"]
 fn mutated_kind_and_dynamics_keys_long_run() {
     let cases = std::env::var("FLAPWRIGHT_FUZZ_KEY_CASES")
         .ok()

@@ -258,7 +258,7 @@ fn the_same_scene_gives_the_same_files() {
     assert!(files.len() > 20);
     for file in files {
         let [a, b] = ["first", "second"].map(|out| std::fs::read(dir.path().join(out).join(&file)).unwrap());
-        if file == "report.json" || file == flapwright::output::MANIFEST {
+        if file == "report.json" || file == flapwright_cli::output::MANIFEST {
             // Apart from the timings (and the manifest's record of the report).
             let strip = |bytes: &[u8]| {
                 let mut v: serde_json::Value = serde_json::from_slice(bytes).unwrap();

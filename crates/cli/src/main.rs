@@ -6,9 +6,9 @@ use std::process::ExitCode;
 
 use anyhow::Context;
 use clap::{Parser, Subcommand};
-use flapwright::output::{self, OutputError, StagedDir};
+use flapwright_cli::output::{self, OutputError, StagedDir};
 use flapwright::pipeline::{self, Inputs, Mode};
-use flapwright::scene::{Scene, SceneError, DEFAULT_SCENE_TOML};
+use flapwright::scene::{Scene, SceneError, StlSetting, DEFAULT_SCENE_TOML};
 
 /// Exit code for bad input (scene file, flags).
 const EXIT_BAD_INPUT: u8 = 2;
@@ -34,6 +34,27 @@ struct Cli {
     /// not write; the files removed are listed.
     #[arg(long, global = true)]
     force: bool,
+}
+
+/// `export --at`: the flap setting the STL files show.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum At {
+    /// Flaps stowed (the URDF's and glTF's rest pose).
+    Stowed,
+    /// Each flap at its take-off deflection.
+    Takeoff,
+    /// Each flap at its landing deflection.
+    Landing,
+}
+
+impl From<At> for StlSetting {
+    fn from(at: At) -> Self {
+        match at {
+            At::Stowed => Self::Stowed,
+            At::Takeoff => Self::Takeoff,
+            At::Landing => Self::Landing,
+        }
+    }
 }
 
 #[derive(Subcommand, Debug)]
@@ -72,7 +93,7 @@ enum Command {
         /// take-off or landing deflection (with `--stl` alone: the URDF, glTF and drawings
         /// start from stowed).
         #[arg(long, value_enum, default_value = "stowed")]
-        at: flapwright::scene::StlSetting,
+        at: At,
     },
     /// Compare mechanism kinds at the scene's stations (`003_...` Table 1, Fig. 17): each
     /// kind designed in place of the stations' mechanisms, its figures in study.json, gap
@@ -261,20 +282,20 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 ));
             }
         }
-        if *at != flapwright::scene::StlSetting::Stowed && (all || !*stl || *urdf || *gltf || *svg) {
+        if *at != At::Stowed && (all || !*stl || *urdf || *gltf || *svg) {
             return Err(Failure {
                 summary: None,
                 code: EXIT_BAD_INPUT,
                 error: anyhow::anyhow!(
                     "--at {} moves the STL files only: use it with --stl alone (the URDF, the glTF and the drawings start from stowed)",
                     match at {
-                        flapwright::scene::StlSetting::Takeoff => "takeoff",
+                        At::Takeoff => "takeoff",
                         _ => "landing",
                     }
                 ),
             });
         }
-        scene.outputs.stl_setting = *at;
+        scene.outputs.stl_setting = StlSetting::from(*at);
         let outputs = &mut scene.outputs;
         // Without a flag: every file the scene has geometry for (a 2D station: drawings).
         let solid = all && scene.wing.is_some();

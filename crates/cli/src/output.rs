@@ -526,6 +526,38 @@ impl StagedDir {
     }
 }
 
+/// A plain file name: no folders, not `.` or `..` (the library names every file it writes).
+fn plain_name(name: &str) -> io::Result<&str> {
+    if name.is_empty() || name == "." || name == ".." || name.contains(['/', '\\']) {
+        return Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!("{name:?} is not a plain file name"),
+        ));
+    }
+    Ok(name)
+}
+
+impl flapwright::Sink for StagedDir {
+    fn write(&self, name: &str, bytes: &[u8]) -> io::Result<()> {
+        fs::write(self.file(plain_name(name)?), bytes)
+    }
+
+    /// The folder and its manifest, or nothing when a write fails.
+    fn write_folder(&self, name: &str, files: &flapwright::MemorySink) -> io::Result<()> {
+        let folder = self.file(plain_name(name)?);
+        fs::create_dir(&folder)?;
+        let written = files
+            .files()
+            .iter()
+            .try_for_each(|(file, bytes)| fs::write(folder.join(plain_name(file)?), bytes))
+            .and_then(|()| write_manifest(&folder));
+        if written.is_err() {
+            let _ = fs::remove_dir_all(&folder);
+        }
+        written
+    }
+}
+
 impl Drop for StagedDir {
     fn drop(&mut self) {
         // Reached with the staging folder still present only when the run failed.

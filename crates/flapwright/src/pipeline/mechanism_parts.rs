@@ -18,7 +18,7 @@ use flapwright_mechanism::seam::BodyRole;
 use flapwright_mechanism::urdf::RigidInertia;
 use serde::Serialize;
 
-use crate::output::StagedDir;
+use crate::sink::Sink;
 use crate::pipeline::mechanisms::StationRecord;
 use crate::scene::{Scene, StlSetting};
 
@@ -171,7 +171,7 @@ pub fn build(
 }
 
 /// Writes `<station>.<solid>.stl` per solid when `write_stl`; returns the report's records.
-pub fn write_stl(solids: &[MechanismSolid], write_stl: bool, out: &StagedDir) -> Result<Vec<MechanismPartReport>> {
+pub fn write_stl(solids: &[MechanismSolid], write_stl: bool, out: &dyn Sink) -> Result<Vec<MechanismPartReport>> {
     solids
         .iter()
         .map(|solid| {
@@ -207,7 +207,7 @@ pub fn move_flap_files(
     records: &[StationRecord],
     fractions: &[f64],
     parts: &mut [crate::report::PartReport],
-    out: &StagedDir,
+    out: &dyn Sink,
 ) -> Result<()> {
     for (part, flap) in meshed.iter().filter_map(|p| Some((p, p.flap_element()?.0))) {
         let Some(first) = records.iter().position(|r| r.flap.as_deref() == Some(flap)) else {

@@ -15,7 +15,7 @@ use flapwright_mechanism::RigidFlapDynamics;
 use nalgebra::Point2;
 use serde::Serialize;
 
-use crate::output::StagedDir;
+use crate::sink::Sink;
 use crate::pipeline::mechanisms::{load_cases, weight_only, StationRecord};
 use crate::scene::{DynamicsScene, Scene};
 
@@ -140,7 +140,7 @@ fn polar_radius_of_gyration_squared(polygons: &[Vec<Point2<f64>>]) -> Option<f64
 }
 
 /// Writes `dynamics-<station>.svg` for each run; returns the file names.
-pub fn write_plots(scene_name: &str, runs: &[(String, DynamicsReport)], out: &StagedDir) -> Result<Vec<String>> {
+pub fn write_plots(scene_name: &str, runs: &[(String, DynamicsReport)], out: &dyn Sink) -> Result<Vec<String>> {
     let mut files = Vec::new();
     for (station, report) in runs {
         let samples = &report.run.samples;
@@ -168,7 +168,7 @@ pub fn write_plots(scene_name: &str, runs: &[(String, DynamicsReport)], out: &St
         )
         .with_context(|| format!("drawing the dynamics plots of {station}"))?;
         let name = format!("dynamics-{station}.svg");
-        std::fs::write(out.file(&name), svg).with_context(|| format!("writing {name}"))?;
+        out.write(&name, svg.as_bytes()).with_context(|| format!("writing {name}"))?;
         files.push(name);
     }
     Ok(files)

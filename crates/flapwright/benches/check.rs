@@ -4,13 +4,12 @@
 //! spread along its flap, for how the check scales.
 
 use criterion::{criterion_main, Criterion};
-use flapwright::output::StagedDir;
+use flapwright::MemorySink;
 use flapwright::pipeline::{design, Inputs, Mode};
 use flapwright::scene::{Scene, DEFAULT_SCENE_TOML};
 
 fn default_scene_check(c: &mut Criterion) {
     let scene = Scene::from_toml(DEFAULT_SCENE_TOML, None).expect("default scene");
-    let dir = tempfile::tempdir().expect("temp dir");
     let inputs = Inputs {
         scene: &scene,
         scene_text: DEFAULT_SCENE_TOML,
@@ -21,13 +20,13 @@ fn default_scene_check(c: &mut Criterion) {
     group.sample_size(10);
     group.bench_function("default scene", |b| {
         b.iter(|| {
-            let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
+            let staged = MemorySink::new();
             design(&inputs, Mode::Check, &staged).expect("check runs")
         })
     });
     group.bench_function("default scene, full design", |b| {
         b.iter(|| {
-            let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
+            let staged = MemorySink::new();
             design(&inputs, Mode::Design, &staged).expect("design runs")
         })
     });
@@ -48,7 +47,7 @@ fn default_scene_check(c: &mut Criterion) {
     };
     group.bench_function("default scene, export --stl", |b| {
         b.iter(|| {
-            let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
+            let staged = MemorySink::new();
             design(&stl_inputs, Mode::Export, &staged).expect("export runs")
         })
     });
@@ -75,7 +74,6 @@ fn with_stations(count: usize) -> String {
 }
 
 fn stations_scaling(c: &mut Criterion) {
-    let dir = tempfile::tempdir().expect("temp dir");
     let mut group = c.benchmark_group("check stations");
     group.sample_size(10);
     for count in [2, 16] {
@@ -90,7 +88,7 @@ fn stations_scaling(c: &mut Criterion) {
         };
         group.bench_function(format!("{count} stations"), |b| {
             b.iter(|| {
-                let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
+                let staged = MemorySink::new();
                 design(&inputs, Mode::Check, &staged).expect("check runs")
             })
         });

@@ -21,7 +21,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 use serde_json::Value;
 
-use crate::output::StagedDir;
+use crate::sink::{MemorySink, Sink};
 use crate::pipeline::WingCache;
 use crate::pipeline::{self, Inputs, Mode};
 use crate::scene::{Problem, Scene, SceneError};
@@ -372,7 +372,7 @@ pub fn run(
     file: &str,
     kinds: &[String],
     stations: &[String],
-    out: &StagedDir,
+    out: &dyn Sink,
 ) -> Result<Study> {
     // The kinds are independent designs into their own folders: in parallel (rayon), in
     // the order asked. Each design also runs its pairs in parallel; running the kinds side by
@@ -445,10 +445,10 @@ pub fn run(
             &charts(&study, station),
         )
         .with_context(|| format!("drawing the study charts of {station}"))?;
-        std::fs::write(out.file(&format!("study-{station}.svg")), svg).context("writing the study charts")?;
+        out.write(&format!("study-{station}.svg"), svg.as_bytes()).context("writing the study charts")?;
     }
     let json = serde_json::to_string_pretty(&study).context("serialising the study")?;
-    std::fs::write(out.file("study.json"), json + "\n").context("writing study.json")?;
+    out.write("study.json", (json + "\n").as_bytes()).context("writing study.json")?;
     Ok(study)
 }
 
@@ -460,37 +460,25 @@ fn design_kind(
     scene_dir: Option<&Path>,
     file: &str,
     kind: &str,
-    out: &StagedDir,
+    out: &dyn Sink,
     cache: &WingCache,
 ) -> Result<Vec<StationFigures>> {
     let scene = Scene::from_table(&variant.table, scene_dir).map_err(|p| variant.locate(p, text, file))?;
-    let folder = out.file(kind);
-    std::fs::create_dir_all(&folder).with_context(|| format!("creating {}", folder.display()))?;
-    let designed = (|| {
-        let staged = StagedDir::create(&folder, None, false)?;
-        let inputs = Inputs {
-            scene: &scene,
-            scene_text: text,
-            scene_dir,
-            wing_cache: Some(cache),
-        };
-        let outcome =
-            pipeline::design(&inputs, Mode::Design, &staged).map_err(|error| match error.downcast::<SceneError>() {
-                Ok(SceneError::Invalid(problems)) => anyhow::Error::new(variant.locate(problems, text, file)),
-                Ok(other) => anyhow::Error::new(other),
-                Err(error) => error,
-            })?;
-        staged.commit()?;
-        Ok::<_, anyhow::Error>(outcome)
-    })();
-    let outcome = match designed {
-        Ok(outcome) => outcome,
-        Err(error) => {
-            // No empty folder for a kind that could not be designed.
-            let _ = std::fs::remove_dir_all(&folder);
-            return Err(error);
-        }
+    // Designed in memory, written as one folder only when the whole design succeeded (no
+    // folder for a kind that could not be designed).
+    let files = MemorySink::new();
+    let inputs = Inputs {
+        scene: &scene,
+        scene_text: text,
+        scene_dir,
+        wing_cache: Some(cache),
     };
+    let outcome = pipeline::design(&inputs, Mode::Design, &files).map_err(|error| match error.downcast::<SceneError>() {
+        Ok(SceneError::Invalid(problems)) => anyhow::Error::new(variant.locate(problems, text, file)),
+        Ok(other) => anyhow::Error::new(other),
+        Err(error) => error,
+    })?;
+    out.write_folder(kind, &files).with_context(|| format!("writing the {kind} folder"))?;
     let report = serde_json::to_value(&outcome.report).context("reading the kind's report")?;
     let figures = report["stations"]
         .as_array()

@@ -17,7 +17,7 @@ use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
 use serde::Serialize;
 
-use crate::output::StagedDir;
+use crate::sink::Sink;
 use crate::pipeline::mechanism_parts::MechanismSolid;
 use crate::pipeline::mechanisms::StationRecord;
 use crate::pipeline::plots::{station_plots, SettingTarget};
@@ -44,7 +44,7 @@ pub fn write_urdf(
     meshed: &[flapwright_geom::parts::Part],
     solids: &[MechanismSolid],
     records: &[StationRecord],
-    out: &StagedDir,
+    out: &dyn Sink,
 ) -> Result<UrdfExport> {
     let flap_names: Vec<String> = scene.flap.iter().flat_map(|f| f.part_names()).collect();
     let mesh = |p: &PartReport| {
@@ -115,13 +115,13 @@ pub fn write_urdf(
         .replace(|c: char| !c.is_ascii_alphanumeric() && c != '_', "_");
     let model = build_robot(&robot_name, &base, &stations)?;
     let file = format!("{}.urdf", scene.name);
-    std::fs::write(out.file(&file), to_xml(&model)?).with_context(|| format!("writing {file}"))?;
+    out.write(&file, to_xml(&model)?.as_bytes()).with_context(|| format!("writing {file}"))?;
     // The report's deployment samples, so each trajectory sample is a report sample.
     let trajectory = trajectory(&stations, scene.resolution.deployment_samples)?;
     let trajectory_file = "trajectory.json".to_string();
-    std::fs::write(
-        out.file(&trajectory_file),
-        serde_json::to_string_pretty(&trajectory)? + "\n",
+    out.write(
+        &trajectory_file,
+        (serde_json::to_string_pretty(&trajectory)? + "\n").as_bytes(),
     )
     .context("writing trajectory.json")?;
     Ok(UrdfExport {
@@ -292,7 +292,7 @@ pub fn write_svgs(
     scene: &Scene,
     records: &[StationRecord],
     interference: Option<&InterferenceReport>,
-    out: &StagedDir,
+    out: &dyn Sink,
 ) -> Result<Vec<String>> {
     let flap_names: Vec<String> = scene.flap.iter().flat_map(|f| f.part_names()).collect();
     let mut files = Vec::new();
@@ -479,7 +479,7 @@ pub fn write_svgs(
         };
         let name = format!("station-{}.svg", record.station);
         let svg = render_station_svg(&drawing).with_context(|| format!("drawing station {}", record.station))?;
-        std::fs::write(out.file(&name), svg).with_context(|| format!("writing {name}"))?;
+        out.write(&name, svg.as_bytes()).with_context(|| format!("writing {name}"))?;
         files.push(name);
         if let Some(cases) = record.kinematics.as_ref().map(|k| k.load_cases.as_slice()) {
             let name = format!("plots-{}.svg", record.station);
@@ -514,7 +514,7 @@ pub fn write_svgs(
             if !plots.is_empty() {
                 let svg = render_plots_svg(&format!("{}: station {}", scene.name, record.station), &plots)
                     .with_context(|| format!("plotting station {}", record.station))?;
-                std::fs::write(out.file(&name), svg).with_context(|| format!("writing {name}"))?;
+                out.write(&name, svg.as_bytes()).with_context(|| format!("writing {name}"))?;
                 files.push(name);
             }
         }

@@ -9,7 +9,7 @@ use flapwright_geom::structure::{SparSpec, TorqueTubeSpec};
 use flapwright_geom::wing::{PanelSpec, SweepReference, WingSectionSpec, WingSpec};
 use nalgebra::Point3;
 
-use crate::output::StagedDir;
+use crate::sink::Sink;
 use crate::report::PartReport;
 use crate::scene::{ResolutionScene, Scene, SweepReferenceScene, WingScene};
 
@@ -171,7 +171,7 @@ pub fn mesh_parts(model: &WingModel, resolution: &ResolutionScene) -> Result<Vec
 }
 
 /// Writes one binary STL per part (when asked) and returns the parts' report entries.
-pub fn write_parts(parts: &[Part], write_stl: bool, out: &StagedDir) -> Result<Vec<PartReport>> {
+pub fn write_parts(parts: &[Part], write_stl: bool, out: &dyn Sink) -> Result<Vec<PartReport>> {
     parts
         .iter()
         .map(|part| {
@@ -210,11 +210,11 @@ fn part_report(part: &Part) -> PartReport {
 
 /// Writes `mesh` as the binary STL `<name>.stl` (the solid named `name`); returns the
 /// file name.
-pub(crate) fn write_stl_file(mesh: &flapwright_geom::TriMesh, name: &str, out: &StagedDir) -> Result<String> {
+pub(crate) fn write_stl_file(mesh: &flapwright_geom::TriMesh, name: &str, out: &dyn Sink) -> Result<String> {
     let file_name = format!("{name}.stl");
-    let file = std::fs::File::create(out.file(&file_name)).with_context(|| format!("creating {file_name}"))?;
-    let mut writer = std::io::BufWriter::new(file);
-    flapwright_geom::io::stl::write_binary(mesh, name, &mut writer).with_context(|| format!("writing {file_name}"))?;
+    let mut bytes = Vec::new();
+    flapwright_geom::io::stl::write_binary(mesh, name, &mut bytes).with_context(|| format!("writing {file_name}"))?;
+    out.write(&file_name, &bytes).with_context(|| format!("writing {file_name}"))?;
     Ok(file_name)
 }
 

@@ -8,7 +8,7 @@
 use std::path::Path;
 
 use criterion::{criterion_main, Criterion};
-use flapwright::output::StagedDir;
+use flapwright::MemorySink;
 use flapwright::study::{self, DEFAULT_KINDS};
 
 fn study_one_station(c: &mut Criterion) {
@@ -18,13 +18,12 @@ fn study_one_station(c: &mut Criterion) {
         .expect("the transport scene is valid");
     let kinds: Vec<String> = DEFAULT_KINDS.iter().map(|k| k.to_string()).collect();
     let stations = ["ob-outer".to_string()];
-    let dir = tempfile::tempdir().expect("temp dir");
     let mut group = c.benchmark_group("study");
     // Seconds an iteration: criterion's smallest sample.
     group.sample_size(10);
     group.bench_function("four kinds at ob-outer of transport-flap", |b| {
         b.iter(|| {
-            let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
+            let staged = MemorySink::new();
             let study = study::run(
                 &scene,
                 &text,
@@ -35,7 +34,6 @@ fn study_one_station(c: &mut Criterion) {
                 &staged,
             )
             .expect("the study runs");
-            staged.commit().expect("commit");
             study
         })
     });

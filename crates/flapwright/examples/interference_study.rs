@@ -10,7 +10,7 @@
 
 use std::time::Instant;
 
-use flapwright::output::StagedDir;
+use flapwright::MemorySink;
 use flapwright::pipeline::{design, Inputs, Mode};
 use flapwright::scene::{Scene, DEFAULT_SCENE_TOML};
 
@@ -37,8 +37,7 @@ fn run(configure: impl FnOnce(&mut Scene)) -> Run {
     let mut scene = Scene::from_toml(DEFAULT_SCENE_TOML, None).expect("default scene");
     scene.interference.max_evaluations = 100_000;
     configure(&mut scene);
-    let dir = tempfile::tempdir().expect("temp dir");
-    let staged = StagedDir::create(&dir.path().join("out"), None, false).expect("staging");
+    let staged = MemorySink::new();
     let inputs = Inputs {
         scene: &scene,
         scene_text: DEFAULT_SCENE_TOML,

@@ -13,7 +13,7 @@ use flapwright_mechanism::seam::BodyRole;
 use nalgebra::Isometry3;
 use serde::Serialize;
 
-use crate::output::StagedDir;
+use crate::sink::Sink;
 use crate::pipeline::mechanism_parts::MechanismSolid;
 use crate::pipeline::mechanisms::StationRecord;
 use crate::scene::Scene;
@@ -122,7 +122,7 @@ pub fn write_gltf(
     meshed: &[MeshPart],
     solids: &[MechanismSolid],
     records: &[StationRecord],
-    out: &StagedDir,
+    out: &dyn Sink,
 ) -> Result<GltfExport> {
     let samples = scene.resolution.deployment_samples;
     let fractions: Vec<f64> = (0..samples).map(|k| k as f64 / (samples - 1) as f64).collect();
@@ -173,7 +173,7 @@ pub fn write_gltf(
     let nodes = model.bodies.len();
     let glb = to_glb(&model)?;
     let file = format!("{}.glb", scene.name);
-    std::fs::write(out.file(&file), glb).with_context(|| format!("writing {file}"))?;
+    out.write(&file, &glb).with_context(|| format!("writing {file}"))?;
     Ok(GltfExport {
         file,
         nodes,

@@ -7,7 +7,7 @@ use anyhow::{Context, Result};
 use serde::Serialize;
 use sha2::{Digest, Sha256};
 
-use crate::output::StagedDir;
+use crate::sink::Sink;
 use crate::report::{Exports, PartReport, Report, SceneInfo, StageTiming, StationReport, SCHEMA_VERSION};
 use crate::scene::Scene;
 
@@ -103,7 +103,7 @@ pub enum Mode {
 }
 
 /// Designs the scene and writes `report.json` and the requested files into `out`.
-pub fn design(inputs: &Inputs<'_>, mode: Mode, out: &StagedDir) -> Result<Outcome> {
+pub fn design(inputs: &Inputs<'_>, mode: Mode, out: &dyn Sink) -> Result<Outcome> {
     design_with_progress(inputs, mode, out, &|_| {})
 }
 
@@ -112,7 +112,7 @@ pub fn design(inputs: &Inputs<'_>, mode: Mode, out: &StagedDir) -> Result<Outcom
 pub fn design_with_progress(
     inputs: &Inputs<'_>,
     mode: Mode,
-    out: &StagedDir,
+    out: &dyn Sink,
     on_stage: &dyn Fn(&str),
 ) -> Result<Outcome> {
     let scene = inputs.scene;
@@ -322,7 +322,7 @@ pub fn design_with_progress(
         timings: stages.timings,
     };
     let json = serde_json::to_string_pretty(&report).context("serialising the report")?;
-    std::fs::write(out.file("report.json"), json + "\n").context("writing report.json")?;
+    out.write("report.json", (json + "\n").as_bytes()).context("writing report.json")?;
     let summary = Summary {
         scene: scene.name.clone(),
         parts: report.parts.len(),

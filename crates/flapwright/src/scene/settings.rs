@@ -198,7 +198,7 @@ pub struct OutputsScene {
 }
 
 /// The flap setting the STL files show (`flapwright export --stl --at SETTING`).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum StlSetting {
     /// Flaps stowed (the URDF's and glTF's rest pose).

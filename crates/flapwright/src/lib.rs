@@ -1,0 +1,29 @@
+//! Flapwright, the library: designs the support and drive mechanisms of a wing's
+//! trailing-edge flaps from a scene, in memory. The command line (`flapwright-cli`, binary
+//! `flapwright`) reads files, writes output folders and decides exit codes; this crate
+//! computes and renders bytes.
+//!
+//! # Overview
+//! - [`scene`]: the TOML scene format, parsed with serde and validated with paths
+//!   (`file:line:col` problems).
+//! - [`kinds`]: each mechanism kind's scene table, its checks and its synthesis into the
+//!   mechanism seam (`flapwright_mechanism::seam::FlapMechanism`).
+//! - [`pipeline`]: runs the stages (geometry, planes, mechanisms, interference, sizing,
+//!   ...) a scene's outputs need, times them, and hands the rendered files to a [`Sink`].
+//! - [`sink`]: where files go ([`Sink`]; [`MemorySink`] keeps them in memory).
+//! - [`report`]: the `report.json` schema (documented in the README).
+//! - [`junit`]: JUnit XML of the interference check, for CI.
+//! - [`study`]: the trade study of mechanism kinds at the scene's stations.
+//!
+//! Libraries below return typed errors; the command line alone decides wording and exit
+//! codes.
+
+pub mod junit;
+pub mod kinds;
+pub mod pipeline;
+pub mod report;
+pub mod scene;
+pub mod sink;
+pub mod study;
+
+pub use sink::{MemorySink, Sink};

@@ -6,9 +6,9 @@ use std::process::ExitCode;
 
 use anyhow::Context;
 use clap::{Parser, Subcommand};
-use flapwright_cli::output::{self, OutputError, StagedDir};
 use flapwright::pipeline::{self, Inputs, Mode};
 use flapwright::scene::{Scene, SceneError, StlSetting, DEFAULT_SCENE_TOML};
+use flapwright_cli::output::{self, OutputError, StagedDir};
 
 /// Exit code for bad input (scene file, flags).
 const EXIT_BAD_INPUT: u8 = 2;

@@ -4,9 +4,9 @@
 //! spread along its flap, for how the check scales.
 
 use criterion::{criterion_main, Criterion};
-use flapwright::MemorySink;
 use flapwright::pipeline::{design, Inputs, Mode};
 use flapwright::scene::{Scene, DEFAULT_SCENE_TOML};
+use flapwright::MemorySink;
 
 fn default_scene_check(c: &mut Criterion) {
     let scene = Scene::from_toml(DEFAULT_SCENE_TOML, None).expect("default scene");

@@ -8,8 +8,8 @@
 use std::path::Path;
 
 use criterion::{criterion_main, Criterion};
-use flapwright::MemorySink;
 use flapwright::study::{self, DEFAULT_KINDS};
+use flapwright::MemorySink;
 
 fn study_one_station(c: &mut Criterion) {
     let scene_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/scenes");
@@ -23,18 +23,17 @@ fn study_one_station(c: &mut Criterion) {
     group.sample_size(10);
     group.bench_function("four kinds at ob-outer of transport-flap", |b| {
         b.iter(|| {
-            let staged = MemorySink::new();
-            let study = study::run(
+            let files = MemorySink::new();
+            study::run(
                 &scene,
                 &text,
                 Some(&scene_dir),
                 "transport-flap.toml",
                 &kinds,
                 &stations,
-                &staged,
+                &files,
             )
-            .expect("the study runs");
-            study
+            .expect("the study runs")
         })
     });
     group.finish();

@@ -10,9 +10,9 @@
 
 use std::time::Instant;
 
-use flapwright::MemorySink;
 use flapwright::pipeline::{design, Inputs, Mode};
 use flapwright::scene::{Scene, DEFAULT_SCENE_TOML};
+use flapwright::MemorySink;
 
 /// Pairs closer than this (m) are the ones whose clearance can decide the check: 30 times
 /// the default required clearance.

@@ -7,9 +7,9 @@ use anyhow::{Context, Result};
 use serde::Serialize;
 use sha2::{Digest, Sha256};
 
-use crate::sink::Sink;
 use crate::report::{Exports, PartReport, Report, SceneInfo, StageTiming, StationReport, SCHEMA_VERSION};
 use crate::scene::Scene;
+use crate::sink::Sink;
 
 pub mod animation;
 pub mod dynamics;
@@ -322,7 +322,8 @@ pub fn design_with_progress(
         timings: stages.timings,
     };
     let json = serde_json::to_string_pretty(&report).context("serialising the report")?;
-    out.write("report.json", (json + "\n").as_bytes()).context("writing report.json")?;
+    out.write("report.json", (json + "\n").as_bytes())
+        .context("writing report.json")?;
     let summary = Summary {
         scene: scene.name.clone(),
         parts: report.parts.len(),

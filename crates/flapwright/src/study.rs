@@ -21,10 +21,10 @@ use rayon::prelude::*;
 use serde::Serialize;
 use serde_json::Value;
 
-use crate::sink::{MemorySink, Sink};
 use crate::pipeline::WingCache;
 use crate::pipeline::{self, Inputs, Mode};
 use crate::scene::{Problem, Scene, SceneError};
+use crate::sink::{MemorySink, Sink};
 
 /// The kinds studied when none are named: every kind synthesised from the flap settings.
 pub const DEFAULT_KINDS: &[&str] = crate::kinds::MechanismScene::SYNTHESISED_KINDS;
@@ -445,10 +445,12 @@ pub fn run(
             &charts(&study, station),
         )
         .with_context(|| format!("drawing the study charts of {station}"))?;
-        out.write(&format!("study-{station}.svg"), svg.as_bytes()).context("writing the study charts")?;
+        out.write(&format!("study-{station}.svg"), svg.as_bytes())
+            .context("writing the study charts")?;
     }
     let json = serde_json::to_string_pretty(&study).context("serialising the study")?;
-    out.write("study.json", (json + "\n").as_bytes()).context("writing study.json")?;
+    out.write("study.json", (json + "\n").as_bytes())
+        .context("writing study.json")?;
     Ok(study)
 }
 
@@ -473,12 +475,14 @@ fn design_kind(
         scene_dir,
         wing_cache: Some(cache),
     };
-    let outcome = pipeline::design(&inputs, Mode::Design, &files).map_err(|error| match error.downcast::<SceneError>() {
-        Ok(SceneError::Invalid(problems)) => anyhow::Error::new(variant.locate(problems, text, file)),
-        Ok(other) => anyhow::Error::new(other),
-        Err(error) => error,
-    })?;
-    out.write_folder(kind, &files).with_context(|| format!("writing the {kind} folder"))?;
+    let outcome =
+        pipeline::design(&inputs, Mode::Design, &files).map_err(|error| match error.downcast::<SceneError>() {
+            Ok(SceneError::Invalid(problems)) => anyhow::Error::new(variant.locate(problems, text, file)),
+            Ok(other) => anyhow::Error::new(other),
+            Err(error) => error,
+        })?;
+    out.write_folder(kind, &files)
+        .with_context(|| format!("writing the {kind} folder"))?;
     let report = serde_json::to_value(&outcome.report).context("reading the kind's report")?;
     let figures = report["stations"]
         .as_array()

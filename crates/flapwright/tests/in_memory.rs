@@ -21,7 +21,9 @@ fn the_default_scene_is_designed_in_memory() {
     let report: serde_json::Value = serde_json::from_slice(&files["report.json"]).expect("report.json is JSON");
     let mut named = vec![
         report["files"]["urdf"]["file"].as_str().expect("a URDF"),
-        report["files"]["urdf"]["trajectory_file"].as_str().expect("a trajectory"),
+        report["files"]["urdf"]["trajectory_file"]
+            .as_str()
+            .expect("a trajectory"),
     ];
     let parts = report["parts"].as_array().expect("parts");
     named.extend(parts.iter().map(|p| p["stl_file"].as_str().expect("an STL per part")));

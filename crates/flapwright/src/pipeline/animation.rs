@@ -13,10 +13,10 @@ use flapwright_mechanism::seam::BodyRole;
 use nalgebra::Isometry3;
 use serde::Serialize;
 
-use crate::sink::Sink;
 use crate::pipeline::mechanism_parts::MechanismSolid;
 use crate::pipeline::mechanisms::StationRecord;
 use crate::scene::Scene;
+use crate::sink::Sink;
 
 /// Seconds the animation takes from stowed to deployed (its clock is the drive fraction
 /// times this; the real deployment time is the actuator's).

@@ -15,9 +15,9 @@ use flapwright_mechanism::RigidFlapDynamics;
 use nalgebra::Point2;
 use serde::Serialize;
 
-use crate::sink::Sink;
 use crate::pipeline::mechanisms::{load_cases, weight_only, StationRecord};
 use crate::scene::{DynamicsScene, Scene};
+use crate::sink::Sink;
 
 /// A station's deployment under the motor.
 #[derive(Debug, Clone, Serialize)]
@@ -168,7 +168,8 @@ pub fn write_plots(scene_name: &str, runs: &[(String, DynamicsReport)], out: &dy
         )
         .with_context(|| format!("drawing the dynamics plots of {station}"))?;
         let name = format!("dynamics-{station}.svg");
-        out.write(&name, svg.as_bytes()).with_context(|| format!("writing {name}"))?;
+        out.write(&name, svg.as_bytes())
+            .with_context(|| format!("writing {name}"))?;
         files.push(name);
     }
     Ok(files)

@@ -17,12 +17,12 @@ use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
 use serde::Serialize;
 
-use crate::sink::Sink;
 use crate::pipeline::mechanism_parts::MechanismSolid;
 use crate::pipeline::mechanisms::StationRecord;
 use crate::pipeline::plots::{station_plots, SettingTarget};
 use crate::report::PartReport;
 use crate::scene::Scene;
+use crate::sink::Sink;
 
 /// What the URDF export wrote.
 #[derive(Debug, Clone, Serialize)]
@@ -115,7 +115,8 @@ pub fn write_urdf(
         .replace(|c: char| !c.is_ascii_alphanumeric() && c != '_', "_");
     let model = build_robot(&robot_name, &base, &stations)?;
     let file = format!("{}.urdf", scene.name);
-    out.write(&file, to_xml(&model)?.as_bytes()).with_context(|| format!("writing {file}"))?;
+    out.write(&file, to_xml(&model)?.as_bytes())
+        .with_context(|| format!("writing {file}"))?;
     // The report's deployment samples, so each trajectory sample is a report sample.
     let trajectory = trajectory(&stations, scene.resolution.deployment_samples)?;
     let trajectory_file = "trajectory.json".to_string();
@@ -479,7 +480,8 @@ pub fn write_svgs(
         };
         let name = format!("station-{}.svg", record.station);
         let svg = render_station_svg(&drawing).with_context(|| format!("drawing station {}", record.station))?;
-        out.write(&name, svg.as_bytes()).with_context(|| format!("writing {name}"))?;
+        out.write(&name, svg.as_bytes())
+            .with_context(|| format!("writing {name}"))?;
         files.push(name);
         if let Some(cases) = record.kinematics.as_ref().map(|k| k.load_cases.as_slice()) {
             let name = format!("plots-{}.svg", record.station);
@@ -514,7 +516,8 @@ pub fn write_svgs(
             if !plots.is_empty() {
                 let svg = render_plots_svg(&format!("{}: station {}", scene.name, record.station), &plots)
                     .with_context(|| format!("plotting station {}", record.station))?;
-                out.write(&name, svg.as_bytes()).with_context(|| format!("writing {name}"))?;
+                out.write(&name, svg.as_bytes())
+                    .with_context(|| format!("writing {name}"))?;
                 files.push(name);
             }
         }

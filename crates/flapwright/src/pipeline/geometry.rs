@@ -9,9 +9,9 @@ use flapwright_geom::structure::{SparSpec, TorqueTubeSpec};
 use flapwright_geom::wing::{PanelSpec, SweepReference, WingSectionSpec, WingSpec};
 use nalgebra::Point3;
 
-use crate::sink::Sink;
 use crate::report::PartReport;
 use crate::scene::{ResolutionScene, Scene, SweepReferenceScene, WingScene};
+use crate::sink::Sink;
 
 fn point(p: [f64; 3]) -> Point3<f64> {
     Point3::new(p[0], p[1], p[2])
@@ -214,7 +214,8 @@ pub(crate) fn write_stl_file(mesh: &flapwright_geom::TriMesh, name: &str, out: &
     let file_name = format!("{name}.stl");
     let mut bytes = Vec::new();
     flapwright_geom::io::stl::write_binary(mesh, name, &mut bytes).with_context(|| format!("writing {file_name}"))?;
-    out.write(&file_name, &bytes).with_context(|| format!("writing {file_name}"))?;
+    out.write(&file_name, &bytes)
+        .with_context(|| format!("writing {file_name}"))?;
     Ok(file_name)
 }
 

@@ -18,9 +18,9 @@ use flapwright_mechanism::seam::BodyRole;
 use flapwright_mechanism::urdf::RigidInertia;
 use serde::Serialize;
 
-use crate::sink::Sink;
 use crate::pipeline::mechanisms::StationRecord;
 use crate::scene::{Scene, StlSetting};
+use crate::sink::Sink;
 
 /// Where a solid's mass comes from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]

@@ -431,7 +431,10 @@ mod tests {
         let scene = transport_with_stations(8).replace("max_evaluations = 1200", "max_evaluations = 40");
         assert_eq!(problems(&scene), "");
         let found = problems(&format!("{scene}\n[resolution]\nairfoil_points_per_side = 700\n"));
-        assert!(found.contains("MB of memory") && !found.contains("s of work"), "{found}");
+        assert!(
+            found.contains("MB of memory") && !found.contains("s of work"),
+            "{found}"
+        );
     }
 
     /// Every shipped scene passes the budget.

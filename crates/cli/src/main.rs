@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use anyhow::Context;
 use clap::{Parser, Subcommand};
 use flapwright::pipeline::{self, Inputs, Mode};
-use flapwright::scene::{Scene, SceneError, StlSetting, DEFAULT_SCENE_TOML};
+use flapwright::scene::{FileSource, Folder, NoFiles, Scene, SceneError, StlSetting, DEFAULT_SCENE_TOML};
 use flapwright_cli::output::{self, OutputError, StagedDir};
 
 /// Exit code for bad input (scene file, flags).
@@ -250,11 +250,11 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         Some(Command::Export { scene, out, .. }) => (scene.clone(), out.clone(), Mode::Export, None),
         Some(Command::Study { .. }) => unreachable!("handled above"),
     };
-    let (text, scene_dir) = read_scene_text(scene_path.as_deref())?;
+    let (text, files) = read_scene_text(scene_path.as_deref())?;
     let file_label = scene_path
         .as_deref()
         .map_or("(embedded default)".into(), |p| p.display().to_string());
-    let mut scene = Scene::from_file_text(&text, &file_label, scene_dir.as_deref())
+    let mut scene = Scene::from_file_text(&text, &file_label, files.as_ref())
         .map_err(|e| bad_input(anyhow::Error::new(e).context(format!("invalid scene {file_label}"))))?;
     if let Some(Command::Export {
         urdf,
@@ -315,7 +315,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             .map(|p| (p.clone(), "the scene file".to_string(), false))
             .collect();
         reserved.extend(
-            scene_inputs(&scene, scene_dir.as_deref())
+            scene_inputs(&scene, files.as_ref())
                 .into_iter()
                 .map(|p| (p, "an airfoil file the scene reads".to_string(), false)),
         );
@@ -332,7 +332,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
     let inputs = Inputs {
         scene: &scene,
         scene_text: &text,
-        scene_dir: scene_dir.as_deref(),
+        files: files.as_ref(),
         wing_cache: None,
     };
     if mode == Mode::Check && scene.wing.is_none() {
@@ -475,9 +475,9 @@ fn study(
     stations: &[String],
 ) -> Result<(), Failure> {
     use flapwright::kinds::MechanismScene;
-    let (text, scene_dir) = read_scene_text(scene_path)?;
+    let (text, files) = read_scene_text(scene_path)?;
     let label = scene_path.map_or("(embedded default)".into(), |p| p.display().to_string());
-    let scene = Scene::from_file_text(&text, &label, scene_dir.as_deref())
+    let scene = Scene::from_file_text(&text, &label, files.as_ref())
         .map_err(|e| bad_input(anyhow::Error::new(e).context(format!("invalid scene {label}"))))?;
     let kinds: Vec<String> = if kinds.is_empty() {
         flapwright::study::DEFAULT_KINDS.iter().map(|k| k.to_string()).collect()
@@ -516,8 +516,8 @@ fn study(
     flapwright::study::requirements(&scene, &text, &label, stations).map_err(|e| bad_input(anyhow::Error::new(e)))?;
     let mut staged = StagedDir::create(out, scene_path, cli.force)?;
     print_notices(cli, &staged.take_notices());
-    let study = flapwright::study::run(&scene, &text, scene_dir.as_deref(), &label, &kinds, stations, &staged)
-        .map_err(|error| {
+    let study =
+        flapwright::study::run(&scene, &text, files.as_ref(), &label, &kinds, stations, &staged).map_err(|error| {
             let code = match error.downcast_ref::<flapwright::study::NoKindDesigned>() {
                 Some(none) if none.input_problem => EXIT_BAD_INPUT,
                 _ => EXIT_FAILED,
@@ -557,9 +557,10 @@ fn print_notices(cli: &Cli, notices: &[String]) {
     }
 }
 
-fn read_scene_text(path: Option<&Path>) -> Result<(String, Option<PathBuf>), Failure> {
+/// The scene's text and the files it may name (its folder's; none for the embedded scene).
+fn read_scene_text(path: Option<&Path>) -> Result<(String, Box<dyn FileSource>), Failure> {
     match path {
-        None => Ok((DEFAULT_SCENE_TOML.to_string(), None)),
+        None => Ok((DEFAULT_SCENE_TOML.to_string(), Box::new(NoFiles))),
         Some(path) => {
             // No further than the size limit: an endless file (`/dev/zero`) is refused at once.
             let bytes = std::fs::File::open(path).and_then(Scene::read_bytes).map_err(|e| {
@@ -567,15 +568,18 @@ fn read_scene_text(path: Option<&Path>) -> Result<(String, Option<PathBuf>), Fai
             })?;
             let text = Scene::decode(bytes, &path.display().to_string())
                 .map_err(|e| bad_input(anyhow::Error::new(e).context(format!("invalid scene {}", path.display()))))?;
-            let dir = path.parent().map(Path::to_path_buf);
-            Ok((text, dir))
+            let files: Box<dyn FileSource> = match path.parent() {
+                Some(folder) => Box::new(Folder::new(folder)),
+                None => Box::new(NoFiles),
+            };
+            Ok((text, files))
         }
     }
 }
 
 /// The files on disk a scene reads besides itself: its airfoil files found next to it.
-fn scene_inputs(scene: &flapwright::scene::Scene, scene_dir: Option<&Path>) -> Vec<PathBuf> {
-    use flapwright::scene::{AirfoilRef, AirfoilSource};
+fn scene_inputs(scene: &flapwright::scene::Scene, files: &dyn FileSource) -> Vec<PathBuf> {
+    use flapwright::scene::AirfoilRef;
     let names = scene
         .wing
         .iter()
@@ -583,10 +587,7 @@ fn scene_inputs(scene: &flapwright::scene::Scene, scene_dir: Option<&Path>) -> V
         .chain(scene.flap.iter().filter_map(|f| f.airfoil.as_deref()));
     names
         .filter_map(|text| match AirfoilRef::parse(text) {
-            Ok(AirfoilRef::File(name)) => match AirfoilRef::locate(&name, scene_dir) {
-                Some(AirfoilSource::Disk(path)) => Some(path),
-                _ => None,
-            },
+            Ok(AirfoilRef::File(name)) => files.path_of(&name),
             _ => None,
         })
         .collect()

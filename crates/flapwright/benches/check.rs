@@ -9,11 +9,11 @@ use flapwright::scene::{Scene, DEFAULT_SCENE_TOML};
 use flapwright::MemorySink;
 
 fn default_scene_check(c: &mut Criterion) {
-    let scene = Scene::from_toml(DEFAULT_SCENE_TOML, None).expect("default scene");
+    let scene = Scene::from_toml(DEFAULT_SCENE_TOML, &flapwright::scene::NoFiles).expect("default scene");
     let inputs = Inputs {
         scene: &scene,
         scene_text: DEFAULT_SCENE_TOML,
-        scene_dir: None,
+        files: &flapwright::scene::NoFiles,
         wing_cache: None,
     };
     let mut group = c.benchmark_group("check");
@@ -78,12 +78,12 @@ fn stations_scaling(c: &mut Criterion) {
     group.sample_size(10);
     for count in [2, 16] {
         let text = with_stations(count);
-        let scene = Scene::from_toml(&text, None).expect("scene with stations");
+        let scene = Scene::from_toml(&text, &flapwright::scene::NoFiles).expect("scene with stations");
         assert_eq!(scene.station.len(), count);
         let inputs = Inputs {
             scene: &scene,
             scene_text: &text,
-            scene_dir: None,
+            files: &flapwright::scene::NoFiles,
             wing_cache: None,
         };
         group.bench_function(format!("{count} stations"), |b| {

@@ -14,7 +14,8 @@ use flapwright::MemorySink;
 fn study_one_station(c: &mut Criterion) {
     let scene_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/scenes");
     let text = std::fs::read_to_string(scene_dir.join("transport-flap.toml")).expect("the transport scene");
-    let scene = flapwright::scene::Scene::from_file_text(&text, "transport-flap.toml", Some(&scene_dir))
+    let files = flapwright::scene::Folder::new(&scene_dir);
+    let scene = flapwright::scene::Scene::from_file_text(&text, "transport-flap.toml", &files)
         .expect("the transport scene is valid");
     let kinds: Vec<String> = DEFAULT_KINDS.iter().map(|k| k.to_string()).collect();
     let stations = ["ob-outer".to_string()];
@@ -23,15 +24,15 @@ fn study_one_station(c: &mut Criterion) {
     group.sample_size(10);
     group.bench_function("four kinds at ob-outer of transport-flap", |b| {
         b.iter(|| {
-            let files = MemorySink::new();
+            let written = MemorySink::new();
             study::run(
                 &scene,
                 &text,
-                Some(&scene_dir),
+                &files,
                 "transport-flap.toml",
                 &kinds,
                 &stations,
-                &files,
+                &written,
             )
             .expect("the study runs")
         })

@@ -34,14 +34,14 @@ struct Run {
 
 /// Runs `flapwright check` on the default scene as `configure` changes it.
 fn run(configure: impl FnOnce(&mut Scene)) -> Run {
-    let mut scene = Scene::from_toml(DEFAULT_SCENE_TOML, None).expect("default scene");
+    let mut scene = Scene::from_toml(DEFAULT_SCENE_TOML, &flapwright::scene::NoFiles).expect("default scene");
     scene.interference.max_evaluations = 100_000;
     configure(&mut scene);
     let staged = MemorySink::new();
     let inputs = Inputs {
         scene: &scene,
         scene_text: DEFAULT_SCENE_TOML,
-        scene_dir: None,
+        files: &flapwright::scene::NoFiles,
         wing_cache: None,
     };
     let start = Instant::now();

@@ -1,6 +1,5 @@
 //! Runs the stages a scene's outputs need, times them, and writes the files.
 
-use std::path::Path;
 use std::time::Instant;
 
 use anyhow::{Context, Result};
@@ -8,7 +7,7 @@ use serde::Serialize;
 use sha2::{Digest, Sha256};
 
 use crate::report::{Exports, PartReport, Report, SceneInfo, StageTiming, StationReport, SCHEMA_VERSION};
-use crate::scene::Scene;
+use crate::scene::{FileSource, Scene};
 use crate::sink::Sink;
 
 pub mod animation;
@@ -35,8 +34,8 @@ pub struct Inputs<'a> {
     pub scene: &'a Scene,
     /// The scene file's text (hashed into the report).
     pub scene_text: &'a str,
-    /// Folder of the scene file, for relative airfoil files.
-    pub scene_dir: Option<&'a Path>,
+    /// The airfoil files the scene names (the scene file's folder, or files in memory).
+    pub files: &'a dyn FileSource,
     /// Meshes, statistics and collision shapes shared with other designs of the same wing
     /// (the study's kinds); `None`: this design's own.
     pub wing_cache: Option<&'a WingCache>,
@@ -134,7 +133,7 @@ pub fn design_with_progress(
     let mut placed = Vec::new();
     let mut wing_model = None;
     if let Some(wing) = &scene.wing {
-        let model = stages.run("geometry", || geometry::build_model(scene, wing, inputs.scene_dir))?;
+        let model = stages.run("geometry", || geometry::build_model(scene, wing, inputs.files))?;
         tube_path_ac = model.torque_tube().map(|t| t.path_ac.clone()).unwrap_or_default();
         meshed = stages.run("meshing", || match inputs.wing_cache {
             Some(cache) => cache.meshes_of(&model, &scene.resolution),

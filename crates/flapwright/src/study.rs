@@ -13,8 +13,6 @@
 //! tables are never written out as text: their problems are located in the user's file,
 //! with the station and flap indices of that file.
 
-use std::path::Path;
-
 use anyhow::{anyhow, Context, Result};
 use flapwright_drawing::{Plot, Series};
 use rayon::prelude::*;
@@ -23,7 +21,7 @@ use serde_json::Value;
 
 use crate::pipeline::WingCache;
 use crate::pipeline::{self, Inputs, Mode};
-use crate::scene::{Problem, Scene, SceneError};
+use crate::scene::{FileSource, Problem, Scene, SceneError};
 use crate::sink::{MemorySink, Sink};
 
 /// The kinds studied when none are named: every kind synthesised from the flap settings.
@@ -368,7 +366,7 @@ fn one_line(error: &anyhow::Error) -> String {
 pub fn run(
     scene: &Scene,
     text: &str,
-    scene_dir: Option<&Path>,
+    files: &dyn FileSource,
     file: &str,
     kinds: &[String],
     stations: &[String],
@@ -387,7 +385,7 @@ pub fn run(
     let cache = WingCache::default();
     let designed: Vec<_> = variants
         .par_iter()
-        .map(|(kind, variant)| (*kind, design_kind(variant, text, scene_dir, file, kind, out, &cache)))
+        .map(|(kind, variant)| (*kind, design_kind(variant, text, files, file, kind, out, &cache)))
         .collect();
     let mut outcomes = Vec::new();
     let mut failures = Vec::new();
@@ -459,29 +457,29 @@ pub fn run(
 fn design_kind(
     variant: &Variant,
     text: &str,
-    scene_dir: Option<&Path>,
+    files: &dyn FileSource,
     file: &str,
     kind: &str,
     out: &dyn Sink,
     cache: &WingCache,
 ) -> Result<Vec<StationFigures>> {
-    let scene = Scene::from_table(&variant.table, scene_dir).map_err(|p| variant.locate(p, text, file))?;
+    let scene = Scene::from_table(&variant.table, files).map_err(|p| variant.locate(p, text, file))?;
     // Designed in memory, written as one folder only when the whole design succeeded (no
     // folder for a kind that could not be designed).
-    let files = MemorySink::new();
+    let written = MemorySink::new();
     let inputs = Inputs {
         scene: &scene,
         scene_text: text,
-        scene_dir,
+        files,
         wing_cache: Some(cache),
     };
     let outcome =
-        pipeline::design(&inputs, Mode::Design, &files).map_err(|error| match error.downcast::<SceneError>() {
+        pipeline::design(&inputs, Mode::Design, &written).map_err(|error| match error.downcast::<SceneError>() {
             Ok(SceneError::Invalid(problems)) => anyhow::Error::new(variant.locate(problems, text, file)),
             Ok(other) => anyhow::Error::new(other),
             Err(error) => error,
         })?;
-    out.write_folder(kind, &files)
+    out.write_folder(kind, &written)
         .with_context(|| format!("writing the {kind} folder"))?;
     let report = serde_json::to_value(&outcome.report).context("reading the kind's report")?;
     let figures = report["stations"]

@@ -2,16 +2,16 @@
 //! folder is made (issue 36).
 
 use flapwright::pipeline::{design, Inputs, Mode};
-use flapwright::scene::{Scene, DEFAULT_SCENE_TOML};
+use flapwright::scene::{FileSource, MemoryFiles, NoFiles, Scene, DEFAULT_SCENE_TOML};
 use flapwright::MemorySink;
 
 #[test]
 fn the_default_scene_is_designed_in_memory() {
-    let scene = Scene::from_toml(DEFAULT_SCENE_TOML, None).expect("the default scene is valid");
+    let scene = Scene::from_toml(DEFAULT_SCENE_TOML, &flapwright::scene::NoFiles).expect("the default scene is valid");
     let inputs = Inputs {
         scene: &scene,
         scene_text: DEFAULT_SCENE_TOML,
-        scene_dir: None,
+        files: &NoFiles,
         wing_cache: None,
     };
     let files = MemorySink::new();
@@ -32,4 +32,39 @@ fn the_default_scene_is_designed_in_memory() {
     }
     assert_eq!(outcome.report.stations.len(), 2);
     assert_eq!(outcome.summary.interference_passes, Some(true));
+}
+
+/// A scene naming its own airfoil file reads it through the `FileSource` it is given: held
+/// in memory here, where the command line reads the scene's folder. The design equals the
+/// one on the bundled copy of that section.
+#[test]
+fn an_airfoil_file_given_in_memory_is_read_from_memory() {
+    let bundled = flapwright::scene::AirfoilRef::locate("n63212.dat", &NoFiles).expect("bundled");
+    let flapwright::scene::AirfoilSource::Bundled(section) = bundled else {
+        panic!("n63212.dat is bundled");
+    };
+    let text = DEFAULT_SCENE_TOML.replace("airfoil = \"n63212.dat\"", "airfoil = \"my-flap.dat\"");
+    assert_ne!(text, DEFAULT_SCENE_TOML, "the default scene names n63212.dat");
+    let refused = Scene::from_toml(&text, &NoFiles).expect_err("no file given");
+    assert!(refused.to_string().contains("my-flap.dat"), "{refused}");
+
+    let given = MemoryFiles::new().with("my-flap.dat", section);
+    let scene = Scene::from_toml(&text, &given).expect("the file is given");
+    let design_with = |scene: &Scene, text: &str, files: &dyn FileSource| {
+        let inputs = Inputs {
+            scene,
+            scene_text: text,
+            files,
+            wing_cache: None,
+        };
+        design(&inputs, Mode::Check, &MemorySink::new()).expect("designs")
+    };
+    let from_memory = design_with(&scene, &text, &given);
+    let default = Scene::from_toml(DEFAULT_SCENE_TOML, &NoFiles).expect("default scene");
+    let from_bundle = design_with(&default, DEFAULT_SCENE_TOML, &NoFiles);
+    let clearances = |outcome: &flapwright::pipeline::Outcome| -> Vec<f64> {
+        let report = outcome.report.interference.as_ref().expect("checked");
+        report.pairs.iter().map(|p| p.clearance.min_clearance_m).collect()
+    };
+    assert_eq!(clearances(&from_memory), clearances(&from_bundle));
 }

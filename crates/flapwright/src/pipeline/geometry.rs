@@ -1,7 +1,5 @@
 //! Geometry stages: scene -> `flapwright_geom` model -> meshes -> STL files.
 
-use std::path::Path;
-
 use anyhow::{Context, Result};
 use flapwright_geom::flap::{AftElementSpec, FlapSectionSpec, FlapSpec, HingeSpec};
 use flapwright_geom::parts::{MeshResolution, Part, PartKind, WingModel};
@@ -10,7 +8,7 @@ use flapwright_geom::wing::{PanelSpec, SweepReference, WingSectionSpec, WingSpec
 use nalgebra::Point3;
 
 use crate::report::PartReport;
-use crate::scene::{ResolutionScene, Scene, SweepReferenceScene, WingScene};
+use crate::scene::{FileSource, ResolutionScene, Scene, SweepReferenceScene, WingScene};
 use crate::sink::Sink;
 
 fn point(p: [f64; 3]) -> Point3<f64> {
@@ -18,7 +16,7 @@ fn point(p: [f64; 3]) -> Point3<f64> {
 }
 
 /// Builds the 3D wing model (wing, flaps, spars, torque tube) from a validated scene.
-pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) -> Result<WingModel> {
+pub fn build_model(scene: &Scene, wing: &WingScene, files: &dyn FileSource) -> Result<WingModel> {
     let pps = scene.resolution.airfoil_points_per_side;
     let sections = wing
         .sections
@@ -29,7 +27,7 @@ pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) ->
                 y_m: s.y_m,
                 chord_m: s.chord_m,
                 twist_deg: s.twist_deg,
-                airfoil: crate::scene::load_airfoil(&s.airfoil, scene_dir, pps)
+                airfoil: crate::scene::load_airfoil(&s.airfoil, files, pps)
                     .with_context(|| format!("wing.sections[{i}].airfoil"))?,
             })
         })
@@ -74,14 +72,14 @@ pub fn build_model(scene: &Scene, wing: &WingScene, scene_dir: Option<&Path>) ->
             let section = match &f.airfoil {
                 None => FlapSectionSpec::CutOut,
                 Some(text) => FlapSectionSpec::OwnSection {
-                    airfoil: crate::scene::load_airfoil(text, scene_dir, pps)
+                    airfoil: crate::scene::load_airfoil(text, files, pps)
                         .with_context(|| format!("flap[{i}].airfoil"))?,
                 },
             };
             let aft_element = match &f.aft_element {
                 None => None,
                 Some(aft) => Some(AftElementSpec {
-                    airfoil: crate::scene::load_airfoil(&aft.airfoil, scene_dir, pps)
+                    airfoil: crate::scene::load_airfoil(&aft.airfoil, files, pps)
                         .with_context(|| format!("flap[{i}].aft_element.airfoil"))?,
                     chord_fraction: aft.chord_fraction,
                     shroud_chord_fraction: aft.shroud_chord_fraction.unwrap_or(0.0),

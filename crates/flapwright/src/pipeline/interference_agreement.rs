@@ -145,9 +145,9 @@ fn exact_distance(solid: &Posed, sheet: &[[Point3<f64>; 3]]) -> f64 {
 
 /// The scene's stations up to synthesis, as `design` runs them.
 fn synthesised(text: &str, dir: &Path) -> (Scene, Vec<MeshPart>, Vec<StationRecord>) {
-    let scene = Scene::from_file_text(text, "test scene", Some(dir)).expect("valid scene");
+    let scene = Scene::from_file_text(text, "test scene", &crate::scene::Folder::new(dir)).expect("valid scene");
     let wing = scene.wing.as_ref().expect("a wing");
-    let model = geometry::build_model(&scene, wing, Some(dir)).expect("model");
+    let model = geometry::build_model(&scene, wing, &crate::scene::Folder::new(dir)).expect("model");
     let meshed = geometry::mesh_parts(&model, &scene.resolution).expect("meshes");
     let placed = stations::place_all(&scene, &model, &meshed).expect("planes");
     let placed = stations::apply_flap_motion(&scene, &model, &meshed, placed).expect("flap motion");

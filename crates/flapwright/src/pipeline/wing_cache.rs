@@ -145,13 +145,16 @@ mod tests {
     fn a_wing_is_meshed_once_and_only_an_equal_model_reuses_its_meshes() {
         use crate::pipeline::geometry;
         use crate::scene::{Scene, DEFAULT_SCENE_TOML};
-        let scene = Scene::from_file_text(DEFAULT_SCENE_TOML, "default", None).unwrap();
+        let scene = Scene::from_file_text(DEFAULT_SCENE_TOML, "default", &crate::scene::NoFiles).unwrap();
         let wing = scene.wing.as_ref().unwrap();
-        let model = geometry::build_model(&scene, wing, None).unwrap();
+        let model = geometry::build_model(&scene, wing, &crate::scene::NoFiles).unwrap();
         let cache = WingCache::default();
         let first = cache.meshes_of(&model, &scene.resolution).unwrap();
         let again = cache
-            .meshes_of(&geometry::build_model(&scene, wing, None).unwrap(), &scene.resolution)
+            .meshes_of(
+                &geometry::build_model(&scene, wing, &crate::scene::NoFiles).unwrap(),
+                &scene.resolution,
+            )
             .unwrap();
         assert_eq!(format!("{cache:?}"), "WingCache { wings: 1, shapes: 0 }");
         assert_eq!(first, again);
@@ -163,7 +166,7 @@ mod tests {
         assert_ne!(fine, first);
         let mut other = scene.clone();
         other.flap[0].chord_fraction_outboard *= 0.9;
-        let other_model = geometry::build_model(&other, other.wing.as_ref().unwrap(), None).unwrap();
+        let other_model = geometry::build_model(&other, other.wing.as_ref().unwrap(), &crate::scene::NoFiles).unwrap();
         assert!(other_model != model);
         cache.meshes_of(&other_model, &scene.resolution).unwrap();
         assert_eq!(format!("{cache:?}"), "WingCache { wings: 3, shapes: 0 }");

@@ -1,6 +1,8 @@
 //! How a scene names an airfoil: a NACA designation or a coordinate file.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
+
+use super::files::FileSource;
 
 use anyhow::{Context, Result};
 use flapwright_geom::airfoil::{Airfoil, TrailingEdge};
@@ -32,10 +34,10 @@ pub enum AirfoilRef {
 }
 
 /// Where a file airfoil's text comes from.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug)]
 pub enum AirfoilSource {
-    /// A file on disk.
-    Disk(PathBuf),
+    /// A file the scene's [`FileSource`] gave (its bytes, or why they could not be read).
+    Given(std::io::Result<Vec<u8>>),
     /// A file bundled in the binary.
     Bundled(&'static str),
 }
@@ -64,13 +66,11 @@ impl AirfoilRef {
         ))
     }
 
-    /// Finds a file airfoil: relative to `scene_dir` first, then among the bundled files.
-    pub fn locate(name: &str, scene_dir: Option<&Path>) -> Option<AirfoilSource> {
-        if let Some(dir) = scene_dir {
-            let path = dir.join(name);
-            if path.is_file() {
-                return Some(AirfoilSource::Disk(path));
-            }
+    /// Finds a file airfoil: among the scene's `files` first (next to the scene), then among
+    /// the bundled files.
+    pub fn locate(name: &str, files: &dyn FileSource) -> Option<AirfoilSource> {
+        if let Some(bytes) = files.read(name) {
+            return Some(AirfoilSource::Given(bytes));
         }
         let file_name = Path::new(name).file_name()?.to_str()?;
         BUNDLED_AIRFOILS
@@ -88,17 +88,16 @@ pub const AIRFOIL_COORDINATE_MARGIN: f64 = 0.1;
 /// Reads an airfoil the scene names and resamples it to the scene's resolution; a file's
 /// coordinates must be of a unit-chord section: x within `AIRFOIL_COORDINATE_MARGIN` (0.1) of [0, 1], y in
 /// [-0.5, 0.5].
-pub fn load_airfoil(text: &str, scene_dir: Option<&Path>, points_per_side: usize) -> Result<Airfoil> {
+pub fn load_airfoil(text: &str, files: &dyn FileSource, points_per_side: usize) -> Result<Airfoil> {
     let airfoil = match AirfoilRef::parse(text).map_err(anyhow::Error::msg)? {
         AirfoilRef::Naca(digits) => Airfoil::naca(&digits, points_per_side, TrailingEdge::Closed)
             .with_context(|| format!("building NACA {digits}"))?,
         AirfoilRef::File(name) => {
-            let source =
-                AirfoilRef::locate(&name, scene_dir).with_context(|| format!("airfoil file {name} not found"))?;
+            let source = AirfoilRef::locate(&name, files).with_context(|| format!("airfoil file {name} not found"))?;
             let parsed = match source {
-                AirfoilSource::Disk(path) => {
-                    let file = std::fs::File::open(&path).with_context(|| format!("opening {}", path.display()))?;
-                    Airfoil::from_dat(file)
+                AirfoilSource::Given(bytes) => {
+                    let bytes = bytes.with_context(|| format!("opening {name}"))?;
+                    Airfoil::from_dat(bytes.as_slice())
                 }
                 AirfoilSource::Bundled(text) => Airfoil::from_dat(text.as_bytes()),
             };
@@ -142,9 +141,15 @@ mod tests {
     #[test]
     fn bundled_files_are_found() {
         assert!(matches!(
-            AirfoilRef::locate("n63212.dat", None),
+            AirfoilRef::locate("n63212.dat", &super::super::files::NoFiles),
             Some(AirfoilSource::Bundled(_))
         ));
-        assert!(AirfoilRef::locate("missing.dat", None).is_none());
+        assert!(AirfoilRef::locate("missing.dat", &super::super::files::NoFiles).is_none());
+        // A file the scene gives comes before a bundled one of that name.
+        let given = super::super::files::MemoryFiles::new().with("n63212.dat", "x");
+        assert!(matches!(
+            AirfoilRef::locate("n63212.dat", &given),
+            Some(AirfoilSource::Given(Ok(bytes))) if bytes == b"x"
+        ));
     }
 }

@@ -8,6 +8,7 @@
 
 mod airfoil_ref;
 mod dynamics;
+mod files;
 mod key_path;
 pub(crate) mod parse;
 mod settings;
@@ -17,6 +18,7 @@ mod wing;
 
 pub use airfoil_ref::{load_airfoil, AirfoilRef, AirfoilSource};
 pub use dynamics::DynamicsScene;
+pub use files::{FileSource, Folder, MemoryFiles, NoFiles};
 pub use key_path::Location;
 pub use settings::{InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene, StlSetting};
 pub use station::{LoadCaseScene, LoadsScene, StationScene};

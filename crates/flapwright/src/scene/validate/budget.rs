@@ -343,7 +343,7 @@ mod tests {
     use super::*;
 
     fn problems(text: &str) -> String {
-        match Scene::from_toml(text, None) {
+        match Scene::from_toml(text, &crate::scene::NoFiles) {
             Ok(_) => String::new(),
             Err(e) => e.to_string(),
         }

@@ -45,7 +45,7 @@ impl Checker<'_> {
     fn airfoil(&mut self, path: &str, text: &str) {
         match AirfoilRef::parse(text) {
             Err(message) => self.fail(path, message),
-            Ok(AirfoilRef::File(name)) if AirfoilRef::locate(&name, self.scene_dir).is_some() => {
+            Ok(AirfoilRef::File(name)) if AirfoilRef::locate(&name, self.files).is_some() => {
                 self.airfoil_loads(path, text);
             }
             Ok(AirfoilRef::File(name)) => {
@@ -68,7 +68,7 @@ impl Checker<'_> {
     /// The airfoil reads and resamples: a `.dat` file that holds no airfoil, or a NACA code
     /// without thickness (`NACA 0000`), is a problem at its key.
     fn airfoil_loads(&mut self, path: &str, text: &str) {
-        match load_airfoil(text, self.scene_dir, self.airfoil_points_per_side) {
+        match load_airfoil(text, self.files, self.airfoil_points_per_side) {
             Err(error) => self.fail(path, format!("= \"{text}\": {error:#}")),
             Ok(airfoil) => {
                 if let Some(reason) = outline_defect(&airfoil.points) {

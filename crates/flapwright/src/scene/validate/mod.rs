@@ -1,7 +1,7 @@
 //! Scene validation: every bad value reported with its path in the file, all at once.
 
+use super::files::FileSource;
 use std::fmt;
-use std::path::Path;
 
 mod budget;
 mod geometry;
@@ -126,10 +126,10 @@ impl fmt::Display for SceneError {
 impl std::error::Error for SceneError {}
 
 impl Scene {
-    /// Parses and validates a scene. `scene_dir` is where relative airfoil files are
+    /// Parses and validates a scene. `files` gives the airfoil files the scene names, which are
     /// looked up (bundled airfoils are found by name otherwise).
-    pub fn from_toml(text: &str, scene_dir: Option<&Path>) -> Result<Self, SceneError> {
-        Self::from_file_text(text, "scene.toml", scene_dir)
+    pub fn from_toml(text: &str, files: &dyn FileSource) -> Result<Self, SceneError> {
+        Self::from_file_text(text, "scene.toml", files)
     }
 
     /// Reads a scene file's bytes from `reader`, no further than [`MAX_SCENE_BYTES`] and one
@@ -172,7 +172,7 @@ impl Scene {
 
     /// As [`Scene::from_toml`], naming the file `file` in the problems
     /// (`file:line:col: path = value: rule`).
-    pub fn from_file_text(text: &str, file: &str, scene_dir: Option<&Path>) -> Result<Self, SceneError> {
+    pub fn from_file_text(text: &str, file: &str, files: &dyn FileSource) -> Result<Self, SceneError> {
         let located = |problems| SceneError::Invalid(problems).locate(text, file);
         let at = |offset: usize, path: String, message: String| {
             SceneError::Located(vec![LocatedProblem {
@@ -224,7 +224,7 @@ impl Scene {
             };
             at(offset, path.to_string(), message)
         })?;
-        let mut scene = Self::from_table(&table, scene_dir).map_err(located)?;
+        let mut scene = Self::from_table(&table, files).map_err(located)?;
         scene.warnings = locate_all(text, file, scene.value_warnings())
             .iter()
             .map(ToString::to_string)
@@ -235,9 +235,9 @@ impl Scene {
     /// A scene from its TOML table, parsed and validated; problems by key path only (the
     /// trade study builds its variants as tables and locates their problems in the user's
     /// file). The scene's `warnings` are left empty.
-    pub fn from_table(table: &toml::Table, scene_dir: Option<&Path>) -> Result<Self, Vec<Problem>> {
+    pub fn from_table(table: &toml::Table, files: &dyn FileSource) -> Result<Self, Vec<Problem>> {
         let scene: Scene = super::parse::typed(table)?;
-        let problems = scene.validate(scene_dir);
+        let problems = scene.validate(files);
         if problems.is_empty() {
             Ok(scene)
         } else {
@@ -280,11 +280,11 @@ impl Scene {
     }
 
     /// All problems of the scene (empty when valid).
-    pub fn validate(&self, scene_dir: Option<&Path>) -> Vec<Problem> {
+    pub fn validate(&self, files: &dyn FileSource) -> Vec<Problem> {
         let (fewest, most) = limits::AIRFOIL_POINTS_PER_SIDE;
         let mut check = Checker {
             problems: Vec::new(),
-            scene_dir,
+            files,
             airfoil_points_per_side: self.resolution.airfoil_points_per_side.clamp(fewest, most),
         };
         if self.name.trim().is_empty() {
@@ -409,7 +409,7 @@ impl KeyChecker for Checker<'_> {
 
 struct Checker<'a> {
     problems: Vec<Problem>,
-    scene_dir: Option<&'a Path>,
+    files: &'a dyn FileSource,
     /// Airfoils are read and resampled at the scene's resolution during validation, so a
     /// file that is not an airfoil is an input problem, not a failure of the geometry stage.
     airfoil_points_per_side: usize,

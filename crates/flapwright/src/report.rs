@@ -3,6 +3,8 @@
 //! Everything but [`Report::timings`] is a pure function of the scene, so the same scene
 //! gives byte-identical reports apart from that one section.
 
+use flapwright_mechanism::seam::BodyRole;
+use flapwright_mechanism::urdf::CutJoint;
 use serde::Serialize;
 
 /// Version of the report schema; bumped on any incompatible change.
@@ -23,7 +25,7 @@ pub struct Report {
     pub parts: Vec<PartReport>,
     /// Every solid of every station's mechanism (with STL or URDF output): the solids the
     /// interference check sweeps, stowed, their STL files and masses.
-    pub mechanism_parts: Vec<crate::pipeline::mechanism_parts::MechanismPartReport>,
+    pub mechanism_parts: Vec<MechanismPartReport>,
     /// Per support station.
     pub stations: Vec<StationReport>,
     /// Clearance of every moving/fixed part pair over the deployment (when checked).
@@ -94,11 +96,11 @@ pub struct StationReport {
 #[derive(Debug, Clone, Default, Serialize)]
 pub struct Exports {
     /// The URDF, its trajectory file and where loops were cut.
-    pub urdf: Option<crate::pipeline::exports::UrdfExport>,
+    pub urdf: Option<UrdfExport>,
     /// SVG drawings (`station-<name>.svg`) and plots (`plots-<name>.svg`).
     pub svg: Vec<String>,
     /// The animated glTF of the deployment.
-    pub gltf: Option<crate::pipeline::animation::GltfExport>,
+    pub gltf: Option<GltfExport>,
     /// Where the STL files show the flaps and mechanisms (`stowed`, `takeoff`, `landing`;
     /// absent without STL files).
     pub stl_setting: Option<crate::scene::StlSetting>,
@@ -111,4 +113,67 @@ pub struct StageTiming {
     pub stage: String,
     /// Wall time, s.
     pub wall_time_s: f64,
+}
+
+/// Where a solid's mass comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum MassBasis {
+    /// The sizing stage's mass of the member (`sizing.rods`).
+    Sized,
+    /// The drawn envelope at the material's density: not sized.
+    Drawn,
+}
+
+/// The report's record of one mechanism part file.
+#[derive(Debug, Clone, Serialize)]
+pub struct MechanismPartReport {
+    /// `<station>.<solid>`.
+    pub name: String,
+    /// Station.
+    pub station: String,
+    /// The body it belongs to (its URDF link is `<station>_<body>`, its trajectory key
+    /// points `<station>.<body>.<point>`).
+    pub body: String,
+    /// Its body's role (`flap`, `link`, `track`, `carriage`, `actuator`, `support`).
+    pub role: BodyRole,
+    /// Vertex count.
+    pub vertices: usize,
+    /// Triangle count.
+    pub triangles: usize,
+    /// Mass, kg: the sized member's, or the drawn envelope's ([`Self::mass_basis`]).
+    pub mass_kg: f64,
+    /// Where the mass comes from: `sized` or `drawn`.
+    pub mass_basis: MassBasis,
+    /// STL file, aircraft frame, stowed (relative to the output folder).
+    pub stl_file: Option<String>,
+}
+
+/// What the URDF export wrote.
+#[derive(Debug, Clone, Serialize)]
+pub struct UrdfExport {
+    /// The URDF file.
+    pub file: String,
+    /// Joint values and key points per deployment sample.
+    pub trajectory_file: String,
+    /// Where the closed loops were cut (URDF is a tree).
+    pub cut_joints: Vec<CutJoint>,
+}
+
+/// What the glTF export wrote.
+#[derive(Debug, Clone, Serialize)]
+pub struct GltfExport {
+    /// The file.
+    pub file: String,
+    /// Nodes (one per part and solid), named as the report's parts.
+    pub nodes: usize,
+    /// Keyframes per moving node: the report's deployment samples.
+    pub samples: usize,
+    /// Animation length (s).
+    pub duration_s: f64,
+    /// Largest distance between where a viewer's interpolation puts a vertex and where the
+    /// motion puts it, at the middle of every step between samples (m).
+    pub max_interpolation_error_m: f64,
+    /// The part where that largest error occurs.
+    pub max_interpolation_error_part: String,
 }

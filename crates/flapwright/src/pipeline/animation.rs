@@ -11,34 +11,16 @@ use flapwright_gltf::{interpolated_displacement, to_glb, Body, Material, Model};
 use flapwright_interference::Motion;
 use flapwright_mechanism::seam::BodyRole;
 use nalgebra::Isometry3;
-use serde::Serialize;
 
 use crate::pipeline::mechanism_parts::MechanismSolid;
 use crate::pipeline::mechanisms::StationRecord;
+use crate::report::GltfExport;
 use crate::scene::Scene;
 use crate::sink::Sink;
 
 /// Seconds the animation takes from stowed to deployed (its clock is the drive fraction
 /// times this; the real deployment time is the actuator's).
 pub const ANIMATION_DURATION_S: f64 = 4.0;
-
-/// What the glTF export wrote.
-#[derive(Debug, Clone, Serialize)]
-pub struct GltfExport {
-    /// The file.
-    pub file: String,
-    /// Nodes (one per part and solid), named as the report's parts.
-    pub nodes: usize,
-    /// Keyframes per moving node: the report's deployment samples.
-    pub samples: usize,
-    /// Animation length (s).
-    pub duration_s: f64,
-    /// Largest distance between where a viewer's interpolation puts a vertex and where the
-    /// motion puts it, at the middle of every step between samples (m).
-    pub max_interpolation_error_m: f64,
-    /// The part where that largest error occurs.
-    pub max_interpolation_error_part: String,
-}
 
 /// A surface colour per part kind and body role: the same role, the same colour at every
 /// station.

@@ -10,30 +10,18 @@ use flapwright_geom::CollisionShape;
 use flapwright_interference::{FairingDepth, InterferenceReport};
 use flapwright_mechanism::seam::BodyRole;
 use flapwright_mechanism::urdf::{
-    build_robot, to_xml, trajectory, AftElementLink, BaseLink, BodyGeometry, CutJoint, MeshRef, RigidInertia,
-    StationMechanism3d,
+    build_robot, to_xml, trajectory, AftElementLink, BaseLink, BodyGeometry, MeshRef, RigidInertia, StationMechanism3d,
 };
 use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
-use serde::Serialize;
 
 use crate::pipeline::mechanism_parts::MechanismSolid;
 use crate::pipeline::mechanisms::StationRecord;
 use crate::pipeline::plots::{station_plots, SettingTarget};
 use crate::report::PartReport;
+use crate::report::UrdfExport;
 use crate::scene::Scene;
 use crate::sink::Sink;
-
-/// What the URDF export wrote.
-#[derive(Debug, Clone, Serialize)]
-pub struct UrdfExport {
-    /// The URDF file.
-    pub file: String,
-    /// Joint values and key points per deployment sample.
-    pub trajectory_file: String,
-    /// Where the closed loops were cut (URDF is a tree).
-    pub cut_joints: Vec<CutJoint>,
-}
 
 /// Writes `<scene>.urdf` and `trajectory.json`; meshes are the part STL files beside them
 /// (`solids`: the mechanism's, with their mass properties; `meshed`: the wing's, for the

@@ -16,21 +16,11 @@ use std::sync::Arc;
 use flapwright_interference::{station_parts, Motion, StationParts};
 use flapwright_mechanism::seam::BodyRole;
 use flapwright_mechanism::urdf::RigidInertia;
-use serde::Serialize;
 
 use crate::pipeline::mechanisms::StationRecord;
+use crate::report::{MassBasis, MechanismPartReport};
 use crate::scene::{Scene, StlSetting};
 use crate::sink::Sink;
-
-/// Where a solid's mass comes from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum MassBasis {
-    /// The sizing stage's mass of the member (`sizing.rods`).
-    Sized,
-    /// The drawn envelope at the material's density: not sized.
-    Drawn,
-}
 
 /// One solid of one station's mechanism.
 pub struct MechanismSolid {
@@ -53,30 +43,6 @@ pub struct MechanismSolid {
     pub mass_basis: MassBasis,
     /// How it moves with the drive fraction (the check's motion).
     pub motion: Arc<dyn Motion>,
-}
-
-/// The report's record of one mechanism part file.
-#[derive(Debug, Clone, Serialize)]
-pub struct MechanismPartReport {
-    /// `<station>.<solid>`.
-    pub name: String,
-    /// Station.
-    pub station: String,
-    /// The body it belongs to (its URDF link is `<station>_<body>`, its trajectory key
-    /// points `<station>.<body>.<point>`).
-    pub body: String,
-    /// Its body's role (`flap`, `link`, `track`, `carriage`, `actuator`, `support`).
-    pub role: BodyRole,
-    /// Vertex count.
-    pub vertices: usize,
-    /// Triangle count.
-    pub triangles: usize,
-    /// Mass, kg: the sized member's, or the drawn envelope's ([`Self::mass_basis`]).
-    pub mass_kg: f64,
-    /// Where the mass comes from: `sized` or `drawn`.
-    pub mass_basis: MassBasis,
-    /// STL file, aircraft frame, stowed (relative to the output folder).
-    pub stl_file: Option<String>,
 }
 
 /// The drive fraction at which each record's station puts its flap at `setting` (0 for

@@ -11,6 +11,7 @@ mod dynamics;
 mod files;
 mod key_path;
 pub(crate) mod parse;
+mod problem;
 mod settings;
 mod station;
 mod validate;

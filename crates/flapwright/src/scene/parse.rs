@@ -15,7 +15,7 @@ use serde_path_to_error::{Path as KeyPath, Segment};
 use toml::{Table, Value};
 
 use super::key_path::{KeyPathBuf, Step};
-use super::validate::Problem;
+use super::problem::Problem;
 
 /// Deserialisation rounds before the search gives up (each round finds one problem).
 pub const MAX_ROUNDS: usize = 200;

@@ -37,9 +37,10 @@ def snapshot(binary: str, out: pathlib.Path) -> None:
             if command == "check":
                 args += ["--junit", "check.junit.xml"]
             result = subprocess.run(args, capture_output=True, text=True, cwd=folder)
-            (folder / f"{command}.status").write_text(
-                f"exit {result.returncode}\n--- stdout\n{result.stdout}--- stderr\n{result.stderr}"
-            )
+            # The repository's own path, where a message names the scene, as `<repo>`: two
+            # checkouts (worktrees) give the same snapshot.
+            status = f"exit {result.returncode}\n--- stdout\n{result.stdout}--- stderr\n{result.stderr}"
+            (folder / f"{command}.status").write_text(status.replace(str(ROOT), "<repo>"))
 
 
 MANIFEST = ".flapwright-manifest.json"

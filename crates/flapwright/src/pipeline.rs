@@ -13,6 +13,7 @@ use crate::sink::Sink;
 pub mod animation;
 pub mod dynamics;
 pub mod exports;
+pub mod flap_motion;
 pub mod flap_position;
 pub mod flight_loads;
 pub(crate) mod geometry;
@@ -21,6 +22,7 @@ pub mod mechanism_parts;
 pub mod mechanisms;
 mod plausibility;
 mod plots;
+pub mod record;
 pub(crate) mod sizing;
 pub mod stations;
 mod wing_cache;
@@ -212,12 +214,12 @@ pub fn design_with_progress(
         if scene.loads.cases.is_empty() && !records.is_empty() {
             warnings.push(format!(
                 "loads: the scene gives no [[loads.cases]]: each mechanism is loaded by its flap's weight alone (case \"{}\"); give the air loads as [[loads.cases]] (moments or flight conditions)",
-                mechanisms::weight_only().name
+                flight_loads::weight_only().name
             ));
         }
         stages.run("kinematics", || {
             for record in &mut records {
-                let cases = mechanisms::load_cases(scene, record);
+                let cases = flight_loads::load_cases(scene, record);
                 let mut report = mechanisms::sweep_station(record, &cases, samples, &mut warnings)?;
                 if let Some(measure) = &record.flap_behind_wing {
                     flap_position::annotate_samples(record, measure, &mut report, &scene.flap)?;

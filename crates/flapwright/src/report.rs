@@ -82,9 +82,9 @@ pub struct StationReport {
     /// Plane, frame, skew, residuals and section cuts (absent without a wing).
     pub plane: Option<flapwright_planes::StationReport>,
     /// Gap and overlap behind the main wing at the flap settings (design only).
-    pub flap_position: Option<crate::pipeline::flap_position::FlapPositionReport>,
+    pub flap_position: Option<crate::pipeline::record::FlapPositionReport>,
     /// Mechanism dimensions, synthesis and one sweep per load case.
-    pub mechanism: Option<crate::pipeline::mechanisms::MechanismReport>,
+    pub mechanism: Option<crate::pipeline::record::MechanismReport>,
     /// Fairing depth: how far the mechanism reaches below the lower wing/flap contour.
     pub fairing: Option<flapwright_interference::FairingDepth>,
     /// The deployment under the `[dynamics]` motor (absent without `[dynamics]`).

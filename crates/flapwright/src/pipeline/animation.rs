@@ -13,7 +13,7 @@ use flapwright_mechanism::seam::BodyRole;
 use nalgebra::Isometry3;
 
 use crate::pipeline::mechanism_parts::MechanismSolid;
-use crate::pipeline::mechanisms::StationRecord;
+use crate::pipeline::record::StationRecord;
 use crate::report::GltfExport;
 use crate::scene::Scene;
 use crate::sink::Sink;

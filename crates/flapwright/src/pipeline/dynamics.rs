@@ -15,7 +15,8 @@ use flapwright_mechanism::RigidFlapDynamics;
 use nalgebra::Point2;
 use serde::Serialize;
 
-use crate::pipeline::mechanisms::{load_cases, weight_only, StationRecord};
+use crate::pipeline::flight_loads::{load_cases, weight_only};
+use crate::pipeline::record::StationRecord;
 use crate::scene::{DynamicsScene, Scene};
 use crate::sink::Sink;
 

@@ -16,8 +16,8 @@ use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
 
 use crate::pipeline::mechanism_parts::MechanismSolid;
-use crate::pipeline::mechanisms::StationRecord;
 use crate::pipeline::plots::{station_plots, SettingTarget};
+use crate::pipeline::record::StationRecord;
 use crate::report::PartReport;
 use crate::report::UrdfExport;
 use crate::scene::Scene;

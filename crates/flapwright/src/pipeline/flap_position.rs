@@ -4,152 +4,15 @@
 
 use anyhow::{Context, Result};
 use flapwright_mechanism::{PrecisionPosition, StationOutline};
-use flapwright_planes::{FlapBehindWing, GapOverlap};
+use flapwright_planes::FlapBehindWing;
 use nalgebra::{Isometry2, Isometry3, Point2, Point3};
-use serde::Serialize;
 
 use crate::kinds::SynthesisContext;
-use crate::pipeline::mechanisms::StationRecord;
-use crate::pipeline::stations::PlacedStation;
+use crate::pipeline::record::{
+    structural_gap_m, AftSlotReport, AftSlotSetting, FlapPositionReport, PlacedStation, RigidFlapSetting,
+    SettingPosition, StationRecord,
+};
 use crate::scene::{FlapScene, Problem, SceneError};
-
-/// Gap and overlap at one named flap setting.
-#[derive(Debug, Clone, Serialize)]
-pub struct SettingPosition {
-    /// "stowed", "takeoff" or "landing".
-    pub setting: String,
-    /// Flap rotation of the setting (deg).
-    pub deflection_deg: f64,
-    /// Gap and overlap (m and % of the local chord).
-    #[serde(flatten)]
-    pub position: GapOverlap,
-    /// The scene's target gap (% of the local chord), if it gives one.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub target_gap_percent_chord: Option<f64>,
-    /// The scene's target overlap (% of the local chord), if it gives one.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub target_overlap_percent_chord: Option<f64>,
-    /// Where the target gap is below the flap's sealed gap, the gap the mechanism was
-    /// synthesised to instead (m): the slot is sealed, a seal on the lip closing the rest.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub sealed_gap_m: Option<f64>,
-    /// How far the gap misses what the mechanism was synthesised to (% of the local chord;
-    /// positive: wider): the target, or the sealed gap where the setting is sealed.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub gap_miss_percent_chord: Option<f64>,
-    /// How far the overlap misses its target (% of the local chord; positive: larger).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub overlap_miss_percent_chord: Option<f64>,
-}
-
-/// The gap (m) a setting's mechanism is synthesised to for a target of `gap_percent` of
-/// `chord_m`, and whether the setting is sealed (the target below `sealed_gap_m`).
-pub fn structural_gap_m(gap_percent: f64, chord_m: f64, sealed_gap_m: f64) -> (f64, bool) {
-    let target = gap_percent * chord_m / 100.0;
-    if target < sealed_gap_m {
-        (sealed_gap_m, true)
-    } else {
-        (target, false)
-    }
-}
-
-impl SettingPosition {
-    /// The setting at `position`, its misses measured against the targets, and a sealed
-    /// gap against the sealed gap (a sealed slot is built to it, not to the smaller target).
-    pub fn new(
-        setting: &str,
-        deflection_deg: f64,
-        position: GapOverlap,
-        targets: (Option<f64>, Option<f64>),
-        sealed_gap_m: Option<f64>,
-        chord_m: f64,
-    ) -> Self {
-        let (target_gap_percent_chord, target_overlap_percent_chord) = targets;
-        let built_gap_percent = sealed_gap_m
-            .map(|gap| 100.0 * gap / chord_m)
-            .or(target_gap_percent_chord);
-        Self {
-            setting: setting.into(),
-            deflection_deg,
-            position,
-            target_gap_percent_chord,
-            target_overlap_percent_chord,
-            sealed_gap_m,
-            gap_miss_percent_chord: built_gap_percent.map(|t| position.gap_percent_chord - t),
-            overlap_miss_percent_chord: target_overlap_percent_chord.map(|t| position.overlap_percent_chord - t),
-        }
-    }
-
-    /// How far the gap and the overlap miss what the setting was built to (% of the local
-    /// chord; positive: larger), where the scene gives targets.
-    pub fn misses(&self) -> (Option<f64>, Option<f64>) {
-        (self.gap_miss_percent_chord, self.overlap_miss_percent_chord)
-    }
-}
-
-/// The flap's position behind the main wing at one station.
-#[derive(Debug, Clone, Serialize)]
-pub struct FlapPositionReport {
-    /// The main-wing trailing edge measured from (upper lip of the cove), station frame (m).
-    pub trailing_edge_st_m: [f64; 2],
-    /// Local clean chord the percentages refer to (m).
-    pub local_chord_m: f64,
-    /// Stowed, take-off and landing.
-    pub settings: Vec<SettingPosition>,
-    /// Where the flap's other stations move the settings from this station's own (see
-    /// [`rigid_flap_settings`]); empty for a flap with one station.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub rigid_flap: Vec<RigidFlapSetting>,
-    /// A two-element flap's second slot: the aft element behind the main element.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub aft_slot: Option<AftSlotReport>,
-}
-
-/// The second slot of a two-element flap: gap and overlap of the aft element behind the
-/// main element (the `003_...` definitions with the main element as the wing: the lip is
-/// the main element's upper trailing edge), at the same settings, in the main element's
-/// frame (the aft element's displacement relative to the main element's).
-#[derive(Debug, Clone, Serialize)]
-pub struct AftSlotReport {
-    /// The main element's trailing edge (upper lip of its cove), stowed, station frame (m).
-    pub trailing_edge_st_m: [f64; 2],
-    /// The flap's local chord the percentages refer to (m): the main element's nose to the
-    /// aft element's trailing edge, stowed.
-    pub flap_chord_m: f64,
-    /// Stowed, take-off and landing.
-    pub settings: Vec<AftSlotSetting>,
-}
-
-/// The second slot at one setting.
-#[derive(Debug, Clone, Serialize)]
-pub struct AftSlotSetting {
-    /// "stowed", "takeoff" or "landing".
-    pub setting: String,
-    /// The aft element's rotation relative to the main element (deg, trailing edge down).
-    pub relative_deflection_deg: f64,
-    /// Gap and overlap (m and % of the flap chord).
-    #[serde(flatten)]
-    pub position: GapOverlap,
-}
-
-/// How the rigid flap moves one station's setting from where the station's own gap and
-/// overlap put the flap.
-#[derive(Debug, Clone, Serialize)]
-pub struct RigidFlapSetting {
-    /// "takeoff" or "landing".
-    pub setting: &'static str,
-    /// Largest in-plane distance of the station's flap section points (all of them) from
-    /// the position its own gap and overlap give (m): the measured gap and overlap miss the
-    /// station's targets by at most this.
-    pub shift_from_station_target_m: f64,
-    /// Largest distance of the section points from the station plane at the setting (m):
-    /// the out-of-plane motion the flap attachments' joints take up.
-    pub out_of_plane_m: f64,
-    /// The rigid flap's rotation as this plane sees it (deg): the setting's deflection
-    /// give or take the conical motion's share; the station's precision position and its
-    /// `settings` entry are at this deflection.
-    pub deflection_in_plane_deg: f64,
-}
 
 /// The flap is one rigid body. Where several stations carry it, or a station's plane is
 /// skew-corrected, its take-off and landing poses in 3D are the rigid motions of
@@ -502,7 +365,7 @@ fn second_slot(flap: &FlapScene, record: &StationRecord) -> Result<Option<FlapBe
 pub fn annotate_samples(
     mechanism: &StationRecord,
     measure: &FlapBehindWing,
-    report: &mut crate::pipeline::mechanisms::MechanismReport,
+    report: &mut crate::pipeline::record::MechanismReport,
     flaps: &[FlapScene],
 ) -> Result<()> {
     let flap = mechanism

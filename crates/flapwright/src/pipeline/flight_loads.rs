@@ -19,27 +19,14 @@ use flapwright_mechanism::outline::{extent_x, vertical_span};
 use flapwright_mechanism::{ExternalMoment, FlapNormalForce, LoadCase};
 use flapwright_sizing::{distribute_to_stations, ElementLoad};
 use nalgebra::{Point2, Vector2};
-use serde::Serialize;
 
-use crate::pipeline::mechanisms::StationRecord;
+use crate::pipeline::record::{FlapLoadShare, StationRecord};
 use crate::scene::{LoadCaseScene, Scene};
 
 /// Spanwise elements of a flap: the midpoint rule's error on a flap chord that varies
 /// quadratically along the span (a linear chord fraction of a linear wing chord) is
 /// (span/elements)^2/24 of the chord's curvature, below 1e-4 of the area here.
 pub const FLAP_ELEMENTS: usize = 40;
-
-/// A station's share of its flap's flight load.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct FlapLoadShare {
-    /// The station's share of the flap area (m²): its normal force is C_N q n times this.
-    pub flap_area_share_m2: f64,
-    /// The flap's quarter-chord point in the station plane, stowed (station frame, m).
-    pub quarter_chord_st_m: [f64; 2],
-    /// The unit upward normal of the stowed flap's chord line (station frame): the normal
-    /// force's direction (`003_...` eq. 1).
-    pub chord_normal_st: [f64; 2],
-}
 
 /// Each placed record's share of its flap's area and the point its share acts at.
 pub fn shares(scene: &Scene, model: &WingModel, records: &mut [StationRecord]) -> Result<()> {
@@ -141,5 +128,27 @@ pub fn load_case(case: &LoadCaseScene, record: &StationRecord) -> LoadCase {
         include_inertia: false,
         flap_normal_force,
         load_factor: case.load_factor.unwrap_or(1.0),
+    }
+}
+
+/// The scene's load cases in the mechanism crate's terms.
+/// The scene's load cases at `record` (flight conditions shared among its flap's stations).
+pub fn load_cases(scene: &Scene, record: &StationRecord) -> Vec<LoadCase> {
+    scene
+        .loads
+        .cases
+        .iter()
+        .map(|case| crate::pipeline::flight_loads::load_case(case, record))
+        .collect()
+}
+
+/// The load case of a scene without any: the flap's weight alone.
+pub fn weight_only() -> LoadCase {
+    LoadCase {
+        name: "weight-only".into(),
+        external_moment: ExternalMoment::Constant(0.0),
+        include_inertia: false,
+        flap_normal_force: None,
+        load_factor: 1.0,
     }
 }

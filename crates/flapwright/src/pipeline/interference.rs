@@ -6,12 +6,12 @@ use anyhow::{Context, Result};
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::parts::{Part as MeshPart, PartKind};
 use flapwright_interference::{
-    check_assembly, fairing_depth, fit_points, flap_part, planar_parts, station_opening, station_parts, Assembly,
-    FittedFlapMotion, FlapCarrier, FlapElement, InterferenceReport, Part, Requirements, SweepSettings,
+    check_assembly, fairing_depth, flap_part, planar_parts, station_opening, station_parts, Assembly, FlapElement,
+    InterferenceReport, Part, Requirements, SweepSettings,
 };
 
-use crate::pipeline::mechanisms::StationRecord;
-use crate::pipeline::stations::PlacedStation;
+use crate::pipeline::flap_motion::fitted_flap_motion;
+use crate::pipeline::record::{PlacedStation, StationRecord};
 use crate::pipeline::WingCache;
 use crate::scene::{ResolutionScene, Scene};
 
@@ -200,33 +200,6 @@ fn flap_element(part: &MeshPart) -> Result<(&str, FlapElement)> {
         Some((flap, true)) => Ok((flap, FlapElement::Aft)),
         None => anyhow::bail!("part {} is not a flap element", part.name),
     }
-}
-
-/// The rigid motion of a flap element (the part `part`: the flap, or its aft element)
-/// carried by several stations, fitted to its sections as their mechanisms move them
-/// (`flapwright_interference::FittedFlapMotion`), with a speed bound for `vertices_ac`.
-pub fn fitted_flap_motion(
-    part: &str,
-    element: FlapElement,
-    carriers: &[&StationRecord],
-    vertices_ac: &[nalgebra::Point3<f64>],
-) -> Result<FittedFlapMotion> {
-    let carriers = carriers
-        .iter()
-        .map(|record| {
-            let placed = record
-                .placed
-                .as_ref()
-                .with_context(|| format!("station {} is not placed", record.station))?;
-            Ok(FlapCarrier {
-                station: record.station.clone(),
-                aircraft_from_station: *placed.station.frame.aircraft_from_station(),
-                mechanism: record.mechanism.clone(),
-                section_st: fit_points(&placed.polygons_of(|name| name == part)),
-            })
-        })
-        .collect::<Result<Vec<_>>>()?;
-    Ok(FittedFlapMotion::try_new(part, element, carriers, vertices_ac)?)
 }
 
 /// The chordwise extent of a section cut (station x, m): the local chord of a flap.

@@ -17,7 +17,7 @@ use flapwright_interference::{station_parts, Motion, StationParts};
 use flapwright_mechanism::seam::BodyRole;
 use flapwright_mechanism::urdf::RigidInertia;
 
-use crate::pipeline::mechanisms::StationRecord;
+use crate::pipeline::record::StationRecord;
 use crate::report::{MassBasis, MechanismPartReport};
 use crate::scene::{Scene, StlSetting};
 use crate::sink::Sink;

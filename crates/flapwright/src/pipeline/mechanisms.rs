@@ -2,68 +2,15 @@
 
 use anyhow::Result;
 use std::f64::consts::TAU;
-use std::sync::Arc;
 
-use flapwright_mechanism::seam::{Actuator, InputQuantity, InputRange};
-use flapwright_mechanism::{sweep_deployment, Deployment, ExternalMoment, FlapMechanism, LoadCase};
-use serde::Serialize;
-
-use flapwright_interference::FairingDepth;
-use flapwright_planes::FlapBehindWing;
+use flapwright_mechanism::seam::{Actuator, InputQuantity};
+use flapwright_mechanism::{sweep_deployment, ExternalMoment, FlapMechanism, LoadCase};
 
 use crate::kinds::SynthesisContext;
-use crate::pipeline::flap_position::{self, FlapPositionReport};
-
-use crate::pipeline::stations::PlacedStation;
+use crate::pipeline::flap_position;
+use crate::pipeline::flight_loads::weight_only;
+use crate::pipeline::record::{flaps_on_several_stations, MechanismReport, PlacedStation, StationRecord};
 use crate::scene::{Problem, Scene, SceneError};
-
-/// One station as the stages see it, filled in stage by stage: its name and flap, its
-/// mechanism behind the seam, and what each stage found. The pipeline keeps one record per
-/// station, never parallel vectors matched by position.
-#[derive(Debug)]
-pub struct StationRecord {
-    /// Station name.
-    pub station: String,
-    /// Its index in the scene's `[[station]]` list (for keys such as `station[i]`).
-    pub index: usize,
-    /// The flap it supports.
-    pub flap: Option<String>,
-    /// The synthesised mechanism, behind the seam: all the other stages see of it.
-    pub mechanism: Arc<dyn FlapMechanism>,
-    /// Its plane, frame and section cuts (planes stage; None without a wing).
-    pub placed: Option<PlacedStation>,
-    /// The flap behind the main wing in the station plane (gap-overlap stage).
-    pub flap_behind_wing: Option<FlapBehindWing>,
-    /// Gap and overlap at the flap settings (gap-overlap stage).
-    pub flap_position: Option<FlapPositionReport>,
-    /// How the rigid flap moved this station's settings (synthesis; empty for a flap with
-    /// one station).
-    pub rigid_flap: Vec<flap_position::RigidFlapSetting>,
-    /// Fairing depth (fairing stage).
-    pub fairing: Option<FairingDepth>,
-    /// Deployments under every load case (kinematics stage).
-    pub kinematics: Option<MechanismReport>,
-    /// Its share of its flap's flight load (after the planes, with a wing).
-    pub flap_load_share: Option<crate::pipeline::flight_loads::FlapLoadShare>,
-}
-
-/// The report's record of one station's mechanism: kind-neutral apart from `details`.
-#[derive(Debug, Clone, Serialize)]
-pub struct MechanismReport {
-    /// Mechanism kind (the scene's `kind`).
-    pub kind: &'static str,
-    /// The actuator input: stroke (m) or angle (rad), stowed and deployed.
-    pub input: InputRange,
-    /// The actuator: its type and nominal speed.
-    pub actuator: flapwright_mechanism::seam::Actuator,
-    /// The kind's own record: its dimensions and what synthesis computed.
-    pub details: serde_json::Value,
-    /// One deployment per load case.
-    pub load_cases: Vec<Deployment>,
-    /// Its share of its flap's flight load, where a case gives a flight condition.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub flap_load_share: Option<crate::pipeline::flight_loads::FlapLoadShare>,
-}
 
 /// Synthesises every station, each with its placed plane where the scene has a wing
 /// (`placed`, in station order; empty without one); a mechanism that cannot be built from
@@ -281,28 +228,6 @@ pub const FLAP_FIT_WARNING_CHORD_FRACTION: f64 = 0.005;
 /// Drive fractions the fitted flap motion is sampled at for [`flap_agreement`].
 const FLAP_FIT_SAMPLES: usize = 32;
 
-/// Each flap carried by two or more placed stations, with those stations' records, in the
-/// order the flaps first appear.
-pub fn flaps_on_several_stations(records: &[StationRecord]) -> Vec<(&str, Vec<&StationRecord>)> {
-    let mut flaps: Vec<&str> = Vec::new();
-    for flap in records.iter().filter_map(|r| r.flap.as_deref()) {
-        if !flaps.contains(&flap) {
-            flaps.push(flap);
-        }
-    }
-    flaps
-        .into_iter()
-        .map(|flap| {
-            let carriers: Vec<&StationRecord> = records
-                .iter()
-                .filter(|r| r.flap.as_deref() == Some(flap) && r.placed.is_some())
-                .collect();
-            (flap, carriers)
-        })
-        .filter(|(_, carriers)| carriers.len() >= 2)
-        .collect()
-}
-
 /// Warnings where the stations of one rigid flap move it in ways no rigid motion follows:
 /// the flap moves by the motion fitted to them all (the interference check's,
 /// `flapwright_interference::FittedFlapMotion`), and the stations' sections miss it by up to
@@ -310,7 +235,7 @@ pub fn flaps_on_several_stations(records: &[StationRecord]) -> Vec<(&str, Vec<&S
 pub fn flap_agreement(records: &[StationRecord]) -> Vec<String> {
     let mut warnings = Vec::new();
     for (flap, carriers) in flaps_on_several_stations(records) {
-        let Ok(motion) = crate::pipeline::interference::fitted_flap_motion(
+        let Ok(motion) = crate::pipeline::flap_motion::fitted_flap_motion(
             flap,
             flapwright_interference::FlapElement::Main,
             &carriers,
@@ -400,28 +325,6 @@ fn degeneracies(mechanism: &dyn FlapMechanism, path: &str, keys: &str) -> Vec<Pr
         }
     }
     problems
-}
-
-/// The scene's load cases in the mechanism crate's terms.
-/// The scene's load cases at `record` (flight conditions shared among its flap's stations).
-pub fn load_cases(scene: &Scene, record: &StationRecord) -> Vec<LoadCase> {
-    scene
-        .loads
-        .cases
-        .iter()
-        .map(|case| crate::pipeline::flight_loads::load_case(case, record))
-        .collect()
-}
-
-/// The load case of a scene without any: the flap's weight alone.
-pub fn weight_only() -> LoadCase {
-    LoadCase {
-        name: "weight-only".into(),
-        external_moment: ExternalMoment::Constant(0.0),
-        include_inertia: false,
-        flap_normal_force: None,
-        load_factor: 1.0,
-    }
 }
 
 /// Sweeps one station under every load case (a weight-only case when the scene has none).

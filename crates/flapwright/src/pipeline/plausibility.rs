@@ -14,7 +14,7 @@
 
 use nalgebra::Point2;
 
-use crate::pipeline::mechanisms::StationRecord;
+use crate::pipeline::record::StationRecord;
 use crate::scene::{Problem, Scene};
 
 /// Largest distance from A0 (the hinge point) to the stowed flap section's bounding box, in
@@ -154,10 +154,7 @@ pub const TARGET_TOLERANCE_PERCENT_CHORD: f64 = 0.5;
 
 /// Warnings for take-off and landing gaps and overlaps that miss the scene's targets, or
 /// without targets lie far outside the usual settings.
-pub fn gap_overlap_warnings(
-    station: &str,
-    position: &crate::pipeline::flap_position::FlapPositionReport,
-) -> Vec<String> {
+pub fn gap_overlap_warnings(station: &str, position: &crate::pipeline::record::FlapPositionReport) -> Vec<String> {
     let (low, high) = PLAUSIBLE_GAP_OVERLAP_PERCENT_CHORD;
     let margin = GAP_OVERLAP_WARNING_MARGIN_PERCENT_CHORD;
     let mut warnings = Vec::new();

@@ -11,7 +11,7 @@ use flapwright_sizing::{
 };
 use nalgebra::{Point3, Vector3};
 
-use crate::pipeline::mechanisms::{MechanismReport, StationRecord};
+use crate::pipeline::record::{MechanismReport, StationRecord};
 use crate::scene::Scene;
 
 /// The material a scene names: a preset or one of its `[[materials]]`.

@@ -9,49 +9,14 @@ use flapwright_planes::{
     skewed_plane_normal_ac, thesis_stations, FlapDeployment, FlapSetting, HingeAxis, Plane, PlaneConstruction, Section,
     Station,
 };
-use nalgebra::{Isometry3, Point2, Point3, Vector3};
+use nalgebra::{Isometry3, Point3, Vector3};
 
 use crate::pipeline::flap_position;
-use crate::pipeline::mechanisms::StationRecord;
+use crate::pipeline::record::{PlacedStation, StationRecord};
 use crate::scene::Scene;
 
 /// Deployment samples for the out-of-plane residual of the attachment points.
 const RESIDUAL_SAMPLES: usize = 64;
-
-/// A station placed in 3D.
-#[derive(Debug, Clone)]
-pub struct PlacedStation {
-    /// The plane, frame, skew and residuals (the residuals once the mechanism is known:
-    /// [`attachment_residuals`]).
-    pub station: Station,
-    /// Section cuts of every part in the station plane.
-    pub sections: Vec<Section>,
-    /// The flap's 3D motion the residuals are measured over.
-    pub deployment: FlapDeployment,
-    /// The flap's take-off and landing 3D poses (aircraft frame) its settings ask for,
-    /// where several stations carry it or this one's plane is skew-corrected
-    /// ([`apply_flap_motion`]); the station's precision positions are these as its plane
-    /// sees them.
-    pub setting_poses_ac: Option<[Isometry3<f64>; 2]>,
-}
-
-impl PlacedStation {
-    /// The section polygons of the whole flap `flap` (station frame): its own part's and
-    /// its aft element's, stowed.
-    pub fn flap_polygons(&self, flap: &str) -> Vec<Vec<Point2<f64>>> {
-        let aft = flapwright_geom::parts::aft_element_name(flap);
-        self.polygons_of(|name| name == flap || name == aft)
-    }
-
-    /// The section polygons (station frame) of the parts `wanted` accepts by name.
-    pub fn polygons_of(&self, wanted: impl Fn(&str) -> bool) -> Vec<Vec<Point2<f64>>> {
-        self.sections
-            .iter()
-            .filter(|s| wanted(&s.part_name))
-            .flat_map(|s| s.polygons.iter().cloned())
-            .collect()
-    }
-}
 
 /// Places every station of the scene on its flap and cuts every part by its plane, in the
 /// scene's station order (before synthesis: kinds synthesised from the flap settings need
@@ -70,7 +35,7 @@ pub fn place_all(scene: &Scene, model: &WingModel, parts: &[Part]) -> Result<Vec
 /// it holds exactly.
 pub fn attachment_residuals(records: &mut [StationRecord]) -> Result<()> {
     let mut poses_by_record: Vec<Option<Vec<Isometry3<f64>>>> = vec![None; records.len()];
-    for (flap, carriers) in crate::pipeline::mechanisms::flaps_on_several_stations(records) {
+    for (flap, carriers) in crate::pipeline::record::flaps_on_several_stations(records) {
         let attachments_ac: Vec<Point3<f64>> = carriers
             .iter()
             .filter_map(|r| r.placed.as_ref().map(|p| (r, p.station.frame)))
@@ -81,7 +46,7 @@ pub fn attachment_residuals(records: &mut [StationRecord]) -> Result<()> {
                     .map(move |a| frame.aircraft_point_from_station(&a.position))
             })
             .collect();
-        let motion = crate::pipeline::interference::fitted_flap_motion(
+        let motion = crate::pipeline::flap_motion::fitted_flap_motion(
             flap,
             flapwright_interference::FlapElement::Main,
             &carriers,

@@ -8,9 +8,9 @@ use std::collections::BTreeMap;
 use serde::Serialize;
 
 use crate::error::{Error, Result};
-use crate::kinetostatics::LoadCase;
-use crate::screw_jack::ScrewTorques;
 use crate::seam::{FlapMechanism, MemberLoad};
+use crate::shared::load_case::LoadCase;
+use crate::shared::screw_jack::ScrewTorques;
 
 /// One sample of a deployment: a row of the report's `samples[]`.
 #[derive(Debug, Clone, PartialEq, Serialize)]

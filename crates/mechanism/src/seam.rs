@@ -29,9 +29,9 @@ use nalgebra::{Isometry2, Point2, Unit, Vector2};
 use serde::Serialize;
 
 use crate::error::Result;
-use crate::kinetostatics::LoadCase;
-pub use crate::members::{Member, MemberLoad, MemberLoading};
-use crate::screw_jack::{ScrewJack, ScrewTorques};
+use crate::shared::load_case::LoadCase;
+pub use crate::shared::members::{Member, MemberLoad, MemberLoading};
+use crate::shared::screw_jack::{ScrewJack, ScrewTorques};
 
 /// What the actuator moves.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -584,7 +584,7 @@ pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
 
     /// The flap share this station carries, whose weight the statics hold: what
     /// [`crate::rigid_flap`] needs besides the poses. None for a kind that does not say.
-    fn flap_mass(&self) -> Option<crate::flap_load::FlapMass> {
+    fn flap_mass(&self) -> Option<crate::shared::flap_load::FlapMass> {
         None
     }
 }

@@ -3,10 +3,10 @@
 //! synthesised from flap settings, the actuator's work over a deployment against the energy
 //! balance of a constant couple.
 
-use flapwright_mechanism::dropped_hinge::DroppedHinge;
-use flapwright_mechanism::four_bar::FourBar;
-use flapwright_mechanism::hooked_track::HookedTrack;
-use flapwright_mechanism::link_track::LinkTrack;
+use flapwright_mechanism::kinds::dropped_hinge::DroppedHinge;
+use flapwright_mechanism::kinds::four_bar::FourBar;
+use flapwright_mechanism::kinds::hooked_track::HookedTrack;
+use flapwright_mechanism::kinds::link_track::LinkTrack;
 use flapwright_mechanism::seam::FlapMechanism;
 use flapwright_mechanism::{Error, ExternalMoment, LoadCase, PrecisionPosition, SynthesisDefect};
 

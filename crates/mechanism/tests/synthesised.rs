@@ -1,10 +1,10 @@
 //! The kinds synthesised from flap settings (dropped hinge, four-bar) on a model section:
 //! a box wing with a cove and an elliptic flap nested in it (`model_section.rs`).
 
-use flapwright_mechanism::dropped_hinge::DroppedHinge;
-use flapwright_mechanism::four_bar::FourBar;
-use flapwright_mechanism::hooked_track::HookedTrack;
-use flapwright_mechanism::link_track::LinkTrack;
+use flapwright_mechanism::kinds::dropped_hinge::DroppedHinge;
+use flapwright_mechanism::kinds::four_bar::FourBar;
+use flapwright_mechanism::kinds::hooked_track::HookedTrack;
+use flapwright_mechanism::kinds::link_track::LinkTrack;
 use flapwright_mechanism::seam::{FlapMechanism, MemberLoad, MemberLoading};
 use flapwright_mechanism::{Error, ExternalMoment, FlapNormalForce, LoadCase, PrecisionPosition, SynthesisDefect};
 use nalgebra::{Isometry2, Point2, Vector2};

@@ -1,7 +1,7 @@
 //! The mechanism seam: what every stage outside this crate sees of a mechanism kind.
 //!
-//! A kind (circular-arc track with screw jack, dropped hinge, four-bar, ...) is one module
-//! of this crate that implements [`FlapMechanism`]; interference, fairing, URDF and
+//! A kind (circular-arc track with screw jack, dropped hinge, four-bar, ...) is one folder
+//! of [`crate::kinds`] that implements [`FlapMechanism`]; interference, fairing, URDF and
 //! trajectory, drawings, plots, sizing and the report consume only this trait and the plain
 //! data below, as parry's queries see a `Shape`. A new kind touches its own module and the
 //! scene's kind enum, nothing that names another kind.
@@ -515,8 +515,11 @@ pub struct Kinetostatics {
     pub transmission_angle_rad: f64,
     /// Closure residual, condition number, distance to toggle.
     pub health: PoseHealth,
-    /// Raise and lower torque of a screw-jack actuator for this load (None for others).
-    pub screw_torques: Option<ScrewTorques>,
+    /// Raise and lower torque of the actuator for this load where a screw thread gives
+    /// them (a screw jack, thesis eqs. 3.6.9-10); None for other actuators, whose
+    /// drive-shaft torques [`Actuator::shaft_torques`] gives. (Called `screw_torques`
+    /// before issue 36: an actuator's name in the seam every kind implements.)
+    pub actuator_torques: Option<ScrewTorques>,
     /// The internal loads of each member of [`FlapMechanism::members`], by member name.
     pub members: Vec<(String, MemberLoad)>,
 }

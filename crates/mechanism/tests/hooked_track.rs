@@ -104,7 +104,7 @@ fn hooked_track_meets_stowed_and_landing_and_translates_before_it_turns() {
         }
         let loads = track.kinetostatics(input, &load).unwrap();
         assert!(loads.transmission_angle_rad >= 30f64.to_radians() - 1e-9);
-        assert!(loads.screw_torques.is_some());
+        assert!(loads.actuator_torques.is_some());
         assert!(pose.deflection_rad >= previous - 1e-12, "the flap turns back");
         previous = pose.deflection_rad;
     }

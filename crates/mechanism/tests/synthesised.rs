@@ -301,7 +301,7 @@ fn rotary_dropped_hinge_turns_about_the_same_hinge_and_balances() {
         let pose = rotary.pose(input).unwrap();
         assert!(pose.point("B0").is_none() && pose.point("P").is_none());
         let loads = rotary.kinetostatics(input, &load).unwrap();
-        assert!(loads.screw_torques.is_none());
+        assert!(loads.actuator_torques.is_none());
         let axial = |name: &str| member_load(&loads, name).axial_n;
         let point = |name: &str| pose.point(name).unwrap();
         let (h, s1, s2, d) = (point("H"), point("S1"), point("S2"), point("D"));

@@ -355,7 +355,7 @@ impl FlapMechanism for CircularArcTrack {
                 jacobian_condition_number: pose.diagnostics.jacobian_condition_number,
                 distance_to_toggle_rad: pose.diagnostics.distance_to_toggle_rad,
             },
-            screw_torques: Some(forces.screw),
+            actuator_torques: Some(forces.screw),
             members: Vec::new(),
         })
     }

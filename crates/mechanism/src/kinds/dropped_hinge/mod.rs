@@ -509,7 +509,7 @@ impl FlapMechanism for DroppedHinge {
             reactions,
             transmission_angle_rad: transmission,
             health,
-            screw_torques,
+            actuator_torques: screw_torques,
             members: members::member_loads(self, &flap, &wrench, screw_push, hinge_reaction),
         })
     }

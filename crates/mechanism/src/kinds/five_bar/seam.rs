@@ -451,7 +451,7 @@ impl FlapMechanism for FiveBarKind {
                 jacobian_condition_number: 1.0 / sine.max(1e-300),
                 distance_to_toggle_rad: sine.clamp(0.0, 1.0).asin(),
             },
-            screw_torques: None,
+            actuator_torques: None,
             members: Vec::new(),
         })
     }

@@ -339,7 +339,7 @@ impl FlapMechanism for FourBar {
                 jacobian_condition_number: conditioning,
                 distance_to_toggle_rad: pose.transmission.min(state.transmission_angle_rad),
             },
-            screw_torques: Some(self.synthesis.screw.torques(force)),
+            actuator_torques: Some(self.synthesis.screw.torques(force)),
             members: vec![
                 // Three forces on the crank: the flap's pin, the screw, the ground at O1.
                 (

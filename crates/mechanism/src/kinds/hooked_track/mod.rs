@@ -569,7 +569,7 @@ impl FlapMechanism for HookedTrack {
                 jacobian_condition_number: 1.0 / pose.transmission.sin().max(1e-300),
                 distance_to_toggle_rad: pose.transmission,
             },
-            screw_torques: Some(self.synthesis.screw.torques(screw_force)),
+            actuator_torques: Some(self.synthesis.screw.torques(screw_force)),
             members: self.member_loads(pose.f, n * rail_force, pose.g, m * roller),
         })
     }

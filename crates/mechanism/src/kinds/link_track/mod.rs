@@ -461,7 +461,7 @@ impl FlapMechanism for LinkTrack {
                 jacobian_condition_number: 1.0 / pose.transmission.sin().max(1e-300),
                 distance_to_toggle_rad: pose.transmission,
             },
-            screw_torques: None,
+            actuator_torques: None,
             members: self.member_loads(pose.a, pin, pose.c, n * track_force),
         })
     }

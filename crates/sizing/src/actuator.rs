@@ -1,6 +1,9 @@
-//! Screw jacks: the motor torque with a safety factor and the self-locking verdict
-//! (thesis `000` section 5.2). The thread torques themselves (eqs 3.6.9, 3.6.10) belong to
-//! the mechanism: `flapwright_mechanism::ScrewJack`, re-exported here.
+//! Actuators (a screw jack, or a geared rotary actuator): the motor torque with a safety
+//! factor and the self-locking verdict (thesis `000` section 5.2), from the peak torques
+//! on the actuator's drive shaft over the deployment. The thread torques themselves (eqs
+//! 3.6.9, 3.6.10) belong to the mechanism: `flapwright_mechanism::ScrewJack`, re-exported
+//! here. (Named `screw_jack`, `ScrewJackInput`, `ScrewJackSizing` and `size_screw_jack`
+//! before issue 36, though they held rotary actuators too.)
 
 use serde::Serialize;
 
@@ -8,12 +11,13 @@ use crate::check::finite;
 use crate::warning::SizingWarning;
 use crate::{Error, Result};
 
-/// Peak screw torques of one screw jack over the deployment.
+/// Peak drive-shaft torques of one actuator over the deployment (a screw jack's thread
+/// torques, eqs 3.6.9-10, or a rotary actuator's through its gearing).
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct ScrewJackInput {
+pub struct ActuatorInput {
     /// Station name.
     pub station: String,
-    /// Screw jack name.
+    /// Actuator name (`screw-jack`, `rotary-actuator`).
     pub name: String,
     /// Largest raising (deploying) torque over the deployment, N m.
     pub max_raise_torque_nm: f64,
@@ -27,12 +31,12 @@ pub struct ScrewJackInput {
     pub thread_self_locking: bool,
 }
 
-/// Result of [`size_screw_jack`].
+/// Result of [`size_actuator`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct ScrewJackSizing {
+pub struct ActuatorSizing {
     /// Station name.
     pub station: String,
-    /// Screw jack name.
+    /// Actuator name (`screw-jack`, `rotary-actuator`).
     pub name: String,
     /// Largest raising torque, N m.
     pub max_raise_torque_nm: f64,
@@ -70,12 +74,12 @@ pub fn motor_torque_nm(max_raise_torque_nm: f64, max_lower_torque_nm: f64, safet
     Ok(safety_factor * max_raise_torque_nm.abs().max(max_lower_torque_nm.abs()))
 }
 
-/// Motor torque and self-locking verdict of one screw jack; a jack that is not
+/// Motor torque and self-locking verdict of one actuator; one that is not
 /// self-locking gets a [`SizingWarning::NotSelfLocking`].
 ///
 /// # Errors
 /// As [`motor_torque_nm`].
-pub fn size_screw_jack(input: &ScrewJackInput, safety_factor: f64) -> Result<ScrewJackSizing> {
+pub fn size_actuator(input: &ActuatorInput, safety_factor: f64) -> Result<ActuatorSizing> {
     finite("min_lower_torque_nm", input.min_lower_torque_nm)?;
     let largest_lower = if input.min_lower_torque_nm.abs() > input.max_lower_torque_nm.abs() {
         input.min_lower_torque_nm
@@ -88,11 +92,11 @@ pub fn size_screw_jack(input: &ScrewJackInput, safety_factor: f64) -> Result<Scr
     if !self_locking {
         warnings.push(SizingWarning::NotSelfLocking {
             station: input.station.clone(),
-            screw_jack: input.name.clone(),
+            actuator: input.name.clone(),
             lower_torque_nm: input.min_lower_torque_nm,
         });
     }
-    Ok(ScrewJackSizing {
+    Ok(ActuatorSizing {
         station: input.station.clone(),
         name: input.name.clone(),
         max_raise_torque_nm: input.max_raise_torque_nm,

@@ -26,8 +26,8 @@
 //! the box holds the whole sweep.
 
 use flapwright_geom::TriMesh;
-use flapwright_mechanism::outline::{point_segment_distance, vertical_span};
 use flapwright_mechanism::seam::{BodyRole, FlapMechanism};
+use flapwright_mechanism::shared::outline::{point_segment_distance, vertical_span};
 use flapwright_mechanism::spanwise::spanwise_layout;
 use nalgebra::{Isometry3, Point2, Point3, Vector3};
 use serde::Serialize;

@@ -8,9 +8,9 @@ use std::collections::BTreeMap;
 use serde::Serialize;
 
 use crate::error::{Error, Result};
-use crate::kinetostatics::LoadCase;
-use crate::screw_jack::ScrewTorques;
 use crate::seam::{FlapMechanism, MemberLoad};
+use crate::shared::load_case::LoadCase;
+use crate::shared::screw_jack::ScrewTorques;
 
 /// One sample of a deployment: a row of the report's `samples[]`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -33,9 +33,11 @@ pub struct DeploymentSample {
     pub jacobian_condition_number: f64,
     /// Distance to the nearest toggle (deg).
     pub distance_to_toggle_deg: f64,
-    /// Raise and lower torque of a screw-jack actuator (absent for others).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub screw_torques_nm: Option<ScrewTorques>,
+    /// Raise and lower torque of a screw-jack actuator (absent for others). Written as
+    /// `screw_torques_nm`, the report's field name from before the rename (issue 36): the
+    /// wire name stays.
+    #[serde(rename = "screw_torques_nm", skip_serializing_if = "Option::is_none")]
+    pub actuator_torques_nm: Option<ScrewTorques>,
     /// Axial force (N, tension positive) and largest bending moment (N m) of each member
     /// the kind sizes, by member name (absent for a kind that declares none).
     #[serde(skip_serializing_if = "BTreeMap::is_empty")]
@@ -139,7 +141,7 @@ pub fn sweep_deployment(mechanism: &dyn FlapMechanism, samples: usize, load: &Lo
                 closure_residual_m: loads.health.closure_residual_m,
                 jacobian_condition_number: loads.health.jacobian_condition_number,
                 distance_to_toggle_deg: loads.health.distance_to_toggle_rad.to_degrees(),
-                screw_torques_nm: loads.screw_torques,
+                actuator_torques_nm: loads.actuator_torques,
                 member_loads: loads.members.into_iter().collect(),
                 flap_position: None,
                 aft_element,

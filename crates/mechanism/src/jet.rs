@@ -14,7 +14,7 @@ use std::ops::{Add, Mul, Sub};
 
 use nalgebra::Vector2;
 
-use crate::rocker_drive::cross;
+use crate::shared::geometry::cross;
 
 /// A planar point (or vector) and its first three derivatives with respect to the input
 /// (m, m per unit input, ...).

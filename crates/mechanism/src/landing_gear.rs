@@ -11,9 +11,9 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 use serde::{Deserialize, Serialize};
 
-use crate::angle::guarded_acos;
 use crate::error::{Error, Result};
-use crate::slider_crank::InvertedSliderCrank;
+use crate::shared::angle::guarded_acos;
+use crate::shared::slider_crank::InvertedSliderCrank;
 
 /// Bisection stops when the bracket is narrower than this (rad).
 const BISECTION_TOLERANCE_RAD: f64 = 1e-15;

@@ -1,41 +1,51 @@
-//! Planar flap mechanisms behind one seam: the circular-arc track with screw jack of
-//! Arslan (2022), its synthesis, kinematics, kinetostatics and deployment sweeps.
+//! Planar flap mechanisms behind one seam: six kinds, each synthesised for a station from
+//! the designer's choices or the flap settings, with kinematics, kinetostatics, members to
+//! size, a URDF model and the equation of motion.
 //!
 //! # Overview
 //!
 //! - [`seam`]: [`FlapMechanism`], what every other Flapwright crate sees of a mechanism
 //!   kind (input range, poses as body displacements, bodies with roles, solids and
-//!   certified speed bounds, joints by name, kinetostatics, the actuator); a kind is a
-//!   module implementing it. [`sweep_deployment`] samples any kind kind-neutrally.
-//! - [`spanwise`]: where each solid lies along the station's z axis (a kind's own offsets,
-//!   or a layout from the seam that puts solids crossing in the plane side by side).
-//! - The circular-arc track implements the seam in `track_seam` (bodies: flap, screw,
-//!   nut, two tracks; [`TrackHardware`] sizes their solids).
-//! - [`CircularArcTrackSpec`] holds the designer's choices (thesis Table 2, yellow cells);
-//!   [`CircularArcTrackSpec::thesis_case_study`] is the published case.
-//! - [`CircularArcTrack::synthesise`] runs design steps 7-10 (collinearity rule giving
-//!   s34,i and Δs; g2, p2, q2, σ, θG, θF) and turns the spreadsheet's red cells (section
-//!   5.3) into typed [`Error`]s and [`SynthesisWarning`]s.
-//! - [`CircularArcTrack::pose`] gives θ12, θ13, ω12, ω13, α12, α13 and points A, B, D, F,
-//!   G with velocities and accelerations, plus [`PoseDiagnostics`].
-//! - [`CircularArcTrack::forces`] gives F_input by equilibrium (eq. 3.4.16) and by virtual
-//!   work (eq. 3.5.1), the slot reactions G12G, G12F and the screw torques T_R, T_L.
-//! - [`CircularArcTrack::sweep`] samples the deployment under a [`LoadCase`].
-//! - [`InvertedSliderCrank`] is the driving linkage on its own (toggle detection, condition
-//!   number); [`landing_gear`] synthesises it by the landing-gear method of Yastrebov &
-//!   Polyushkova (1982, doc 004).
-//! - [`five_bar`]: the five-bar double-slotted flap of `001_...` in closed form (three RRR
-//!   dyads), with every derivative to third order through [`jet`]; [`generalised`] turns a
-//!   one-input mechanism's bodies with mass and its lifting surfaces into the equation of
-//!   motion's generalised inertia and force (work-energy, `001_...` section 3.1).
-//! - [`rigid_flap`]: the same for any kind from its poses and statics, its flap the one body
-//!   with mass, driven through its actuator's shaft ([`RigidFlapDynamics`]).
-//! - [`planar`] is a general one-input planar model (bodies; revolute, prismatic,
+//!   certified speed bounds, joints by name, kinetostatics, the actuator, members); the
+//!   plain data it returns ([`seam::Body`], [`seam::MechanismPose`], [`seam::Kinetostatics`],
+//!   [`seam::Actuator`]) is written in roles and actuator types, never in kinds.
+//! - [`kinds`]: one folder per kind, each implementing the seam and naming no other kind:
+//!   - [`kinds::circular_arc_track`]: the circular-arc track with screw jack of Arslan
+//!     (2022, thesis `000_...`), its published case, synthesis (design steps 7-10),
+//!     closed-form kinematics and forces ([`CircularArcTrack`], [`CircularArcTrackSpec`]);
+//!   - [`kinds::dropped_hinge`], [`kinds::four_bar`], [`kinds::link_track`],
+//!     [`kinds::hooked_track`]: the four kinds of Zaccai, Bertels & Vos (`003_...`),
+//!     synthesised from precision positions ([`DroppedHinge`], [`FourBar`], [`LinkTrack`],
+//!     [`HookedTrack`]);
+//!   - [`kinds::five_bar`]: the five-bar double-slotted flap of `001_...` in closed form
+//!     (three RRR dyads) with every derivative to third order ([`FiveBarDoubleFlap`],
+//!     behind the seam as [`FiveBarKind`]).
+//! - [`shared`]: the toolbox the kinds share (its module table says why each sits there):
+//!   the load case ([`LoadCase`]) and the flap's wrench ([`shared::flap_load`]), planar
+//!   geometry helpers, the inverted slider-crank ([`InvertedSliderCrank`]) and the rocker
+//!   drive ([`shared::rocker_drive`]), the actuators ([`ScrewJack`], [`ScrewDrive`],
+//!   [`RotaryDrive`]), placement of jacks and struts ([`shared::placement`]), precision
+//!   positions ([`PrecisionPosition`]), the station outlines ([`StationOutline`]), the
+//!   synthesis searches' loop checks and the members to size.
+//! - Kind-neutral consumers of the seam: [`sweep_deployment`] samples any kind's
+//!   kinetostatics into a [`Deployment`]; [`spanwise`] lays a station's solids side by side
+//!   along its z axis.
+//! - Dynamics helpers: [`jet`] (points and angles with three derivatives),
+//!   [`generalised`] (a one-input mechanism's bodies with mass and lifting surfaces to the
+//!   equation of motion's generalised inertia and force, work-energy, `001_...` section
+//!   3.1), [`rigid_flap`] (the same for any kind from its poses and statics, its flap the
+//!   one body with mass: [`RigidFlapDynamics`]).
+//! - [`planar`]: a general one-input planar model (bodies; revolute, prismatic,
 //!   pin-in-circular-slot and pin-in-straight-slot joints; a distance or angle driver)
-//!   solved by Newton with the analytic Jacobian, velocities and accelerations from the
-//!   differentiated constraints, the branch tracked from the stowed configuration
-//!   ([`planar::PlanarModel::solve`], [`planar::PlanarModel::sweep`]). The thesis track
-//!   rebuilt in it agrees with the closed form to 1e-9.
+//!   solved by Newton with the analytic Jacobian, the branch tracked from the stowed
+//!   configuration ([`planar::PlanarModel::solve`], [`planar::PlanarModel::sweep`]). No kind
+//!   uses it; the thesis track rebuilt in it agrees with the closed form to 1e-9.
+//! - [`landing_gear`]: the inverted slider-crank synthesised by the landing-gear method of
+//!   Yastrebov & Polyushkova (1982, doc `004_...`), kept for the next design issue.
+//! - [`urdf`]: the URDF model of a wing's posed mechanisms, its trajectory file and a check
+//!   of the URDF rules (the crate's only use of urdf-rs).
+//! - [`Error`]: the crate's one error type; synthesis defects name the condition
+//!   ([`SynthesisDefect`]).
 //!
 //! # Units and frames
 //!
@@ -47,6 +57,9 @@
 //!
 //! # Design notes
 //!
+//! - A kind's kinematics exist once, in its folder; interference, URDF, glTF, drawings,
+//!   sizing and the report consume its poses and solids through the seam. What two kinds
+//!   share goes to [`shared`], never into one kind's folder.
 //! - Readings that reproduce the thesis numbers (Table 3 within 0.5 %, Appendix C rows):
 //!   mm-based tables converted to SI; the aerodynamic moment is halved because two screw
 //!   jacks share the flap, but the full flap weight (12 kg) acts on each mechanism;
@@ -68,73 +81,56 @@
 //! - Forces are quasi-static by default, as in the thesis (accelerations < 0.1 % g,
 //!   Fig. 31); [`LoadCase::include_inertia`] adds m a_D and I_D α12.
 //! - Joint friction is neglected except in the screw thread.
-//! - The assembly branch is the thesis's (θ12 in [0, π], A counter-clockwise of B0).
+//! - The track's assembly branch is the thesis's (θ12 in [0, π], A counter-clockwise of B0).
 //!
 //! # Pitfalls
 //!
 //! - Thesis Table 3 landing "min/max" pairs are column-wise extremes, not one pose.
 //! - G12G and G12F are signed radial reactions along θG, θF; negative values mean the
 //!   reaction points towards the hinge.
-//! - `sweep` never returns NaN: it stops at the first failing input and reports it in
-//!   [`Sweep::stopped`].
+//! - Sweeps never return NaN: they stop at the first failing input and report it
+//!   ([`Sweep::stopped`], [`Deployment::stopped`]).
 
-mod angle;
 mod deployment;
-pub mod dropped_hinge;
 mod error;
-mod feasibility;
-pub mod five_bar;
-pub mod flap_load;
-pub mod four_bar;
 pub mod generalised;
-pub mod hooked_track;
 pub mod jet;
-mod kinetostatics;
+pub mod kinds;
 pub mod landing_gear;
-pub mod link_track;
-mod members;
-pub mod outline;
-pub mod placement;
 pub mod planar;
 mod planar_solve;
-pub mod precision;
 pub mod rigid_flap;
-pub mod rocker_drive;
-mod rotary_actuator;
-mod screw_jack;
 pub mod seam;
-mod slider_crank;
+pub mod shared;
 pub mod spanwise;
-mod sweep;
-mod track_pose;
-mod track_seam;
-mod track_spec;
-mod track_synthesis;
 pub mod urdf;
 
-pub use angle::{four_times_triangle_area, guarded_acos, ACOS_ROUNDING_TOLERANCE, DEFAULT_TOGGLE_TOLERANCE_RAD};
 pub use deployment::{
     sweep_deployment, AftElementSample, Deployment, DeploymentSample, DeploymentStop, FlapGapOverlap,
 };
-pub use dropped_hinge::{DroppedHinge, DroppedHingeActuator, DroppedHingeSpec};
 pub use error::{Error, Result, SynthesisDefect};
-pub use five_bar::{DoubleFlapLoads, FiveBarDimensions, FiveBarDoubleFlap, FiveBarKind, FiveBarPose, LoadedFiveBar};
-pub use flap_load::{FlapMass, LinkHardware};
-pub use four_bar::{FourBar, FourBarSpec};
 pub use generalised::{generalise, AeroSurface, Generalised, InertialBody, OneInputDynamics};
-pub use hooked_track::{HookedTrack, HookedTrackSpec};
-pub use kinetostatics::{ExternalMoment, FlapNormalForce, Forces, LoadCase};
-pub use link_track::{LinkTrack, LinkTrackSpec};
-pub use outline::StationOutline;
+pub use kinds::circular_arc_track::{
+    screw_outer_radius_m, CircularArcTrack, CircularArcTrackSpec, Forces, JointReactions, PointKinematics, Pose,
+    PoseDiagnostics, Sweep, SweepSample, SweepStop, SynthesisWarning, TrackHardware, TrackSynthesis,
+};
+pub use kinds::dropped_hinge::{DroppedHinge, DroppedHingeActuator, DroppedHingeSpec};
+pub use kinds::five_bar::{
+    DoubleFlapLoads, FiveBarDimensions, FiveBarDoubleFlap, FiveBarKind, FiveBarPose, LoadedFiveBar,
+};
+pub use kinds::four_bar::{FourBar, FourBarSpec};
+pub use kinds::hooked_track::{HookedTrack, HookedTrackSpec};
+pub use kinds::link_track::{LinkTrack, LinkTrackSpec};
 pub use planar_solve::PlanarSolution;
-pub use precision::PrecisionPosition;
 pub use rigid_flap::RigidFlapDynamics;
-pub use rotary_actuator::RotaryDrive;
-pub use screw_jack::{ScrewDrive, ScrewJack, ScrewTorques};
 pub use seam::FlapMechanism;
-pub use slider_crank::{InvertedSliderCrank, SliderCrankState};
-pub use sweep::{JointReactions, Sweep, SweepSample, SweepStop};
-pub use track_pose::{PointKinematics, Pose, PoseDiagnostics};
-pub use track_seam::{screw_outer_radius_m, TrackHardware};
-pub use track_spec::CircularArcTrackSpec;
-pub use track_synthesis::{CircularArcTrack, SynthesisWarning, TrackSynthesis};
+pub use shared::angle::{
+    four_times_triangle_area, guarded_acos, ACOS_ROUNDING_TOLERANCE, DEFAULT_TOGGLE_TOLERANCE_RAD,
+};
+pub use shared::flap_load::{FlapMass, LinkHardware};
+pub use shared::load_case::{ExternalMoment, FlapNormalForce, LoadCase};
+pub use shared::outline::StationOutline;
+pub use shared::precision::PrecisionPosition;
+pub use shared::rotary_actuator::RotaryDrive;
+pub use shared::screw_jack::{ScrewDrive, ScrewJack, ScrewTorques};
+pub use shared::slider_crank::{InvertedSliderCrank, SliderCrankState};

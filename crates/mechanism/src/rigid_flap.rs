@@ -28,10 +28,10 @@
 use nalgebra::{Isometry2, Point2};
 
 use crate::error::{Error, Result};
-use crate::flap_load::FlapMass;
 use crate::generalised::{Generalised, OneInputDynamics};
-use crate::kinetostatics::LoadCase;
 use crate::seam::FlapMechanism;
+use crate::shared::flap_load::FlapMass;
+use crate::shared::load_case::LoadCase;
 
 /// The difference step, as a fraction of the input travel.
 pub const RELATIVE_STEP: f64 = 5e-4;

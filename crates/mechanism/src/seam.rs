@@ -1,7 +1,7 @@
 //! The mechanism seam: what every stage outside this crate sees of a mechanism kind.
 //!
-//! A kind (circular-arc track with screw jack, dropped hinge, four-bar, ...) is one module
-//! of this crate that implements [`FlapMechanism`]; interference, fairing, URDF and
+//! A kind (circular-arc track with screw jack, dropped hinge, four-bar, ...) is one folder
+//! of [`crate::kinds`] that implements [`FlapMechanism`]; interference, fairing, URDF and
 //! trajectory, drawings, plots, sizing and the report consume only this trait and the plain
 //! data below, as parry's queries see a `Shape`. A new kind touches its own module and the
 //! scene's kind enum, nothing that names another kind.
@@ -29,9 +29,9 @@ use nalgebra::{Isometry2, Point2, Unit, Vector2};
 use serde::Serialize;
 
 use crate::error::Result;
-use crate::kinetostatics::LoadCase;
-pub use crate::members::{Member, MemberLoad, MemberLoading};
-use crate::screw_jack::{ScrewJack, ScrewTorques};
+use crate::shared::load_case::LoadCase;
+pub use crate::shared::members::{Member, MemberLoad, MemberLoading};
+use crate::shared::screw_jack::{ScrewJack, ScrewTorques};
 
 /// What the actuator moves.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -515,8 +515,11 @@ pub struct Kinetostatics {
     pub transmission_angle_rad: f64,
     /// Closure residual, condition number, distance to toggle.
     pub health: PoseHealth,
-    /// Raise and lower torque of a screw-jack actuator for this load (None for others).
-    pub screw_torques: Option<ScrewTorques>,
+    /// Raise and lower torque of the actuator for this load where a screw thread gives
+    /// them (a screw jack, thesis eqs. 3.6.9-10); None for other actuators, whose
+    /// drive-shaft torques [`Actuator::shaft_torques`] gives. (Called `screw_torques`
+    /// before issue 36: an actuator's name in the seam every kind implements.)
+    pub actuator_torques: Option<ScrewTorques>,
     /// The internal loads of each member of [`FlapMechanism::members`], by member name.
     pub members: Vec<(String, MemberLoad)>,
 }
@@ -584,7 +587,7 @@ pub trait FlapMechanism: std::fmt::Debug + Send + Sync {
 
     /// The flap share this station carries, whose weight the statics hold: what
     /// [`crate::rigid_flap`] needs besides the poses. None for a kind that does not say.
-    fn flap_mass(&self) -> Option<crate::flap_load::FlapMass> {
+    fn flap_mass(&self) -> Option<crate::shared::flap_load::FlapMass> {
         None
     }
 }

@@ -3,10 +3,10 @@
 //! synthesised from flap settings, the actuator's work over a deployment against the energy
 //! balance of a constant couple.
 
-use flapwright_mechanism::dropped_hinge::DroppedHinge;
-use flapwright_mechanism::four_bar::FourBar;
-use flapwright_mechanism::hooked_track::HookedTrack;
-use flapwright_mechanism::link_track::LinkTrack;
+use flapwright_mechanism::kinds::dropped_hinge::DroppedHinge;
+use flapwright_mechanism::kinds::four_bar::FourBar;
+use flapwright_mechanism::kinds::hooked_track::HookedTrack;
+use flapwright_mechanism::kinds::link_track::LinkTrack;
 use flapwright_mechanism::seam::FlapMechanism;
 use flapwright_mechanism::{Error, ExternalMoment, LoadCase, PrecisionPosition, SynthesisDefect};
 
@@ -104,7 +104,7 @@ fn hooked_track_meets_stowed_and_landing_and_translates_before_it_turns() {
         }
         let loads = track.kinetostatics(input, &load).unwrap();
         assert!(loads.transmission_angle_rad >= 30f64.to_radians() - 1e-9);
-        assert!(loads.screw_torques.is_some());
+        assert!(loads.actuator_torques.is_some());
         assert!(pose.deflection_rad >= previous - 1e-12, "the flap turns back");
         previous = pose.deflection_rad;
     }

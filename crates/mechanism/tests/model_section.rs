@@ -3,10 +3,10 @@
 //! `003_...` 5.2 (take-off 15 deg, 0.5 %c gap, 3 %c overlap; landing 35 deg, 2 %c gap,
 //! 0 %c overlap).
 
-use flapwright_mechanism::dropped_hinge::{DroppedHingeActuator, DroppedHingeSpec};
-use flapwright_mechanism::four_bar::FourBarSpec;
-use flapwright_mechanism::hooked_track::HookedTrackSpec;
-use flapwright_mechanism::link_track::LinkTrackSpec;
+use flapwright_mechanism::kinds::dropped_hinge::{DroppedHingeActuator, DroppedHingeSpec};
+use flapwright_mechanism::kinds::four_bar::FourBarSpec;
+use flapwright_mechanism::kinds::hooked_track::HookedTrackSpec;
+use flapwright_mechanism::kinds::link_track::LinkTrackSpec;
 use flapwright_mechanism::{FlapMass, LinkHardware, PrecisionPosition, RotaryDrive, ScrewDrive, StationOutline};
 use flapwright_planes::FlapBehindWing;
 use nalgebra::Point2;

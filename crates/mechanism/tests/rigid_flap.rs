@@ -1,9 +1,9 @@
 //! The rigid-flap equation of motion (`flapwright_mechanism::rigid_flap`) from a kind's
 //! poses and statics, against independent routes.
 
-use flapwright_mechanism::dropped_hinge::DroppedHinge;
-use flapwright_mechanism::four_bar::FourBar;
 use flapwright_mechanism::generalised::OneInputDynamics;
+use flapwright_mechanism::kinds::dropped_hinge::DroppedHinge;
+use flapwright_mechanism::kinds::four_bar::FourBar;
 use flapwright_mechanism::seam::FlapMechanism;
 use flapwright_mechanism::RigidFlapDynamics;
 use nalgebra::{Matrix2, Point2};

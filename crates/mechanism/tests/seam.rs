@@ -200,7 +200,7 @@ fn a_deployment_through_the_seam_is_the_tracks_own_sweep() {
             assert_eq!(s.reactions_n["B0"], o.joint_reactions_n.screw_mount_b0_n);
             assert_eq!(s.reactions_n["F"], o.joint_reactions_n.outer_pin_f_n);
             assert_eq!(s.reactions_n["G"], o.joint_reactions_n.inner_pin_g_n);
-            let screw = s.screw_torques_nm.unwrap();
+            let screw = s.actuator_torques_nm.unwrap();
             assert_eq!(screw.raise_torque_nm, o.raise_torque_nm);
             assert_eq!(screw.lower_torque_nm, o.lower_torque_nm);
             assert_eq!(s.jacobian_condition_number, o.jacobian_condition_number);

@@ -1,10 +1,10 @@
 //! The kinds synthesised from flap settings (dropped hinge, four-bar) on a model section:
 //! a box wing with a cove and an elliptic flap nested in it (`model_section.rs`).
 
-use flapwright_mechanism::dropped_hinge::DroppedHinge;
-use flapwright_mechanism::four_bar::FourBar;
-use flapwright_mechanism::hooked_track::HookedTrack;
-use flapwright_mechanism::link_track::LinkTrack;
+use flapwright_mechanism::kinds::dropped_hinge::DroppedHinge;
+use flapwright_mechanism::kinds::four_bar::FourBar;
+use flapwright_mechanism::kinds::hooked_track::HookedTrack;
+use flapwright_mechanism::kinds::link_track::LinkTrack;
 use flapwright_mechanism::seam::{FlapMechanism, MemberLoad, MemberLoading};
 use flapwright_mechanism::{Error, ExternalMoment, FlapNormalForce, LoadCase, PrecisionPosition, SynthesisDefect};
 use nalgebra::{Isometry2, Point2, Vector2};
@@ -301,7 +301,7 @@ fn rotary_dropped_hinge_turns_about_the_same_hinge_and_balances() {
         let pose = rotary.pose(input).unwrap();
         assert!(pose.point("B0").is_none() && pose.point("P").is_none());
         let loads = rotary.kinetostatics(input, &load).unwrap();
-        assert!(loads.screw_torques.is_none());
+        assert!(loads.actuator_torques.is_none());
         let axial = |name: &str| member_load(&loads, name).axial_n;
         let point = |name: &str| pose.point(name).unwrap();
         let (h, s1, s2, d) = (point("H"), point("S1"), point("S2"), point("D"));

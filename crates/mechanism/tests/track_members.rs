@@ -1,8 +1,8 @@
 //! The track kinds' members (link-track: link, track, struts; hooked-track: rail, hook,
 //! struts) against a hand computation from each pose's pins and reactions.
 
-use flapwright_mechanism::hooked_track::HookedTrack;
-use flapwright_mechanism::link_track::LinkTrack;
+use flapwright_mechanism::kinds::hooked_track::HookedTrack;
+use flapwright_mechanism::kinds::link_track::LinkTrack;
 use flapwright_mechanism::seam::FlapMechanism;
 use nalgebra::Point2;
 

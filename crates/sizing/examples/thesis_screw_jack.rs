@@ -4,7 +4,7 @@
 //!
 //! Run: `cargo run -p flapwright-sizing --example thesis_screw_jack`
 
-use flapwright_sizing::{size_screw_jack, ScrewJack, ScrewJackInput, CS25_SAFETY_FACTOR};
+use flapwright_sizing::{size_actuator, ActuatorInput, ScrewJack, CS25_SAFETY_FACTOR};
 
 fn main() -> Result<(), flapwright_sizing::Error> {
     let thread = ScrewJack {
@@ -13,7 +13,7 @@ fn main() -> Result<(), flapwright_sizing::Error> {
         friction_coefficient: 0.1,
     };
     let input_force_n = 1622.9;
-    let jack = ScrewJackInput {
+    let jack = ActuatorInput {
         station: "thesis".into(),
         name: "screw jack".into(),
         max_raise_torque_nm: thread.torques(input_force_n).raise_torque_nm,
@@ -21,7 +21,7 @@ fn main() -> Result<(), flapwright_sizing::Error> {
         min_lower_torque_nm: thread.torques(input_force_n).lower_torque_nm,
         thread_self_locking: true,
     };
-    let sizing = size_screw_jack(&jack, CS25_SAFETY_FACTOR)?;
+    let sizing = size_actuator(&jack, CS25_SAFETY_FACTOR)?;
     println!(
         "raise {:.4} N m, lower {:.4} N m, motor {:.4} N m, self-locking {}",
         sizing.max_raise_torque_nm, sizing.max_lower_torque_nm, sizing.motor_torque_nm, sizing.self_locking

@@ -9,7 +9,7 @@
 //!    forward and aft attachment points, by statics (the printed eqs 2-3 are corrected).
 //! 3. The mechanism crate turns attachment loads into link forces and screw torques over
 //!    the deployment (not here).
-//! 4. [`rod`]: each link sized for tension, compression and Euler buckling; [`screw_jack`]:
+//! 4. [`rod`]: each link sized for tension, compression and Euler buckling; [`actuator`]:
 //!    motor torque and self-locking (thesis `000` sections 3.6, 5.2); [`torque_tube`]:
 //!    cumulative drive torque and tube radii (eqs 4, 6, 7); [`drive`]: power (eq 5) and
 //!    work per deployment; [`weights`]: masses per station and in total.
@@ -58,6 +58,7 @@
 //! - Lowering torque sign follows thesis eq 3.6.10: positive means self-locking.
 //! - Torque tubes are listed from the far (outboard) end towards the motor.
 
+pub mod actuator;
 pub mod distribution;
 pub mod drive;
 mod error;
@@ -65,7 +66,6 @@ pub mod loads;
 pub mod material;
 pub mod report;
 pub mod rod;
-pub mod screw_jack;
 pub mod section;
 pub mod torque_tube;
 pub mod warning;
@@ -73,6 +73,7 @@ pub mod weights;
 
 mod check;
 
+pub use actuator::{motor_torque_nm, size_actuator, ActuatorInput, ActuatorSizing};
 pub use distribution::{
     attachment_loads, distribute_to_stations, station_attachment_loads, AttachmentLoads, StationLoad,
 };
@@ -87,7 +88,6 @@ pub use rod::{
     axial_envelope_n, bending_radius_m, buckling_radius_m, euler_critical_load_n, size_rod, strength_radius_m,
     BendingLoad, GoverningCase, RodInput, RodSizing,
 };
-pub use screw_jack::{motor_torque_nm, size_screw_jack, ScrewJackInput, ScrewJackSizing};
 pub use section::SectionShape;
 pub use torque_tube::{
     cumulative_torques_nm, ideal_motor_torque_nm, size_torque_tubes, torsion_radius_m, TorqueTubeInput,

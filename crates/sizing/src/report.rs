@@ -2,9 +2,9 @@
 
 use serde::Serialize;
 
+use crate::actuator::ActuatorSizing;
 use crate::drive::DriveDemand;
 use crate::rod::RodSizing;
-use crate::screw_jack::ScrewJackSizing;
 use crate::torque_tube::TorqueTubeSizing;
 use crate::warning::SizingWarning;
 use crate::weights::{MassBreakdown, MassItem};
@@ -28,15 +28,18 @@ pub struct SizingTotals {
     pub work_per_deployment_j: Option<f64>,
 }
 
-/// Sizing results: per rod the governing case, radius and mass; per screw jack the peak
+/// Sizing results: per rod the governing case, radius and mass; per actuator the peak
 /// raise/lower torque and the motor torque; per torque tube the torque carried, radius
 /// and mass; masses per station; totals; every warning of every part.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SizingReport {
     /// Sized rods.
     pub rods: Vec<RodSizing>,
-    /// Sized screw jacks.
-    pub screw_jacks: Vec<ScrewJackSizing>,
+    /// Sized actuators (screw jacks and rotary actuators), one per station. Written as
+    /// `screw_jacks`, the report's field name from before the rename (issue 36): the wire
+    /// name stays.
+    #[serde(rename = "screw_jacks")]
+    pub actuators: Vec<ActuatorSizing>,
     /// Sized torque tubes, far end first.
     pub torque_tubes: Vec<TorqueTubeSizing>,
     /// Drive motor demand, if a drive line was sized.
@@ -45,7 +48,7 @@ pub struct SizingReport {
     pub masses: MassBreakdown,
     /// Totals of mass, power and work.
     pub totals: SizingTotals,
-    /// All warnings, in part order (rods, screw jacks, tubes).
+    /// All warnings, in part order (rods, actuators, tubes).
     pub warnings: Vec<SizingWarning>,
 }
 
@@ -53,7 +56,7 @@ impl SizingReport {
     /// Assembles the report and its totals from the sized parts.
     pub fn assemble(
         rods: Vec<RodSizing>,
-        screw_jacks: Vec<ScrewJackSizing>,
+        actuators: Vec<ActuatorSizing>,
         torque_tubes: Vec<TorqueTubeSizing>,
         drive: Option<DriveDemand>,
     ) -> Self {
@@ -74,7 +77,7 @@ impl SizingReport {
         let warnings = rods
             .iter()
             .flat_map(|r| r.warnings.iter())
-            .chain(screw_jacks.iter().flat_map(|s| s.warnings.iter()))
+            .chain(actuators.iter().flat_map(|s| s.warnings.iter()))
             .chain(torque_tubes.iter().flat_map(|t| t.warnings.iter()))
             .cloned()
             .collect();
@@ -88,7 +91,7 @@ impl SizingReport {
         };
         Self {
             rods,
-            screw_jacks,
+            actuators,
             torque_tubes,
             drive,
             masses,

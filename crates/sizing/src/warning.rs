@@ -54,8 +54,10 @@ pub enum SizingWarning {
     NotSelfLocking {
         /// Station name.
         station: String,
-        /// Actuator name (`screw-jack`, `rotary-actuator`).
-        screw_jack: String,
+        /// Actuator name (`screw-jack`, `rotary-actuator`). Written as `screw_jack`, the
+        /// report's field name from before the rename (issue 36): the wire name stays.
+        #[serde(rename = "screw_jack")]
+        actuator: String,
         /// Lowering torque given, N m (thesis `000` eq 3.6.10 sign).
         lower_torque_nm: f64,
     },
@@ -90,9 +92,9 @@ impl std::fmt::Display for SizingWarning {
                 "station {station}, rod {rod}: slenderness {slenderness_ratio:.1} below Euler limit {transition_slenderness_ratio:.1}"
             ),
             Self::UnloadedRod { station, rod } => write!(f, "station {station}, rod {rod}: carries no load"),
-            Self::NotSelfLocking { station, screw_jack, lower_torque_nm } => write!(
+            Self::NotSelfLocking { station, actuator, lower_torque_nm } => write!(
                 f,
-                "station {station}, {screw_jack}: not self-locking (lowering torque {lower_torque_nm:.3} N m on the drive shaft: the load back-drives it)"
+                "station {station}, {actuator}: not self-locking (lowering torque {lower_torque_nm:.3} N m on the drive shaft: the load back-drives it)"
             ),
             Self::TorqueTubeExceedsEnvelope { station, required_outer_radius_m, allowed_outer_radius_m } => write!(
                 f,

@@ -2,7 +2,7 @@
 
 use approx::assert_relative_eq;
 use flapwright_sizing::{
-    drive_demand, size_rod, size_screw_jack, size_torque_tubes, DeploymentWork, Material, RodInput, ScrewJackInput,
+    drive_demand, size_actuator, size_rod, size_torque_tubes, ActuatorInput, DeploymentWork, Material, RodInput,
     SectionShape, SizingReport, TorqueTubeInput,
 };
 
@@ -16,8 +16,8 @@ fn report_totals_and_json() {
         size_rod(&RodInput::new("outboard", "link", 0.5, 1e4, 5e3), &steel).unwrap(),
         size_rod(&fat, &steel).unwrap(),
     ];
-    let jacks = vec![size_screw_jack(
-        &ScrewJackInput {
+    let jacks = vec![size_actuator(
+        &ActuatorInput {
             station: "inboard".into(),
             name: "jack".into(),
             max_raise_torque_nm: 4.7,

@@ -2,7 +2,7 @@
 
 use crate::data::{number, rows};
 use approx::assert_relative_eq;
-use flapwright_sizing::{motor_torque_nm, size_screw_jack, ScrewJack, ScrewJackInput};
+use flapwright_sizing::{motor_torque_nm, size_actuator, ActuatorInput, ScrewJack};
 
 fn thesis_thread() -> ScrewJack {
     // Thesis section 5.2: r = 16 mm, l = 8 mm, f = 0.1.
@@ -51,8 +51,8 @@ fn section_5_2_motor_torque() {
     // Raise torque recomputed from the spreadsheet input force 1622.9 N:
     let recomputed = thesis_thread().torques(1622.9).raise_torque_nm;
     assert_relative_eq!(recomputed, raise_nm, max_relative = 1e-5);
-    let sizing = size_screw_jack(
-        &ScrewJackInput {
+    let sizing = size_actuator(
+        &ActuatorInput {
             station: "thesis".into(),
             name: "screw jack".into(),
             max_raise_torque_nm: recomputed,
@@ -85,7 +85,7 @@ fn back_drivable_screw_warns() {
     assert!(!thread.is_self_locking());
     let lower = thread.torques(1000.0).lower_torque_nm;
     assert!(lower < 0.0);
-    let input = ScrewJackInput {
+    let input = ActuatorInput {
         station: "s1".into(),
         name: "jack".into(),
         max_raise_torque_nm: thread.torques(1000.0).raise_torque_nm,
@@ -93,7 +93,7 @@ fn back_drivable_screw_warns() {
         min_lower_torque_nm: lower,
         thread_self_locking: thread.is_self_locking(),
     };
-    let sizing = size_screw_jack(&input, 1.5).unwrap();
+    let sizing = size_actuator(&input, 1.5).unwrap();
     assert!(!sizing.self_locking);
     assert_eq!(sizing.warnings.len(), 1);
     assert_relative_eq!(motor_torque_nm(2.0, -3.0, 1.5).unwrap(), 4.5, max_relative = 1e-15);

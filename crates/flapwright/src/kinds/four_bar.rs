@@ -4,7 +4,7 @@
 
 use std::sync::Arc;
 
-use flapwright_mechanism::four_bar::FollowStation;
+use flapwright_mechanism::kinds::four_bar::FollowStation;
 use flapwright_mechanism::{FlapMechanism, FourBar, FourBarSpec};
 use nalgebra::Point2;
 use serde::Deserialize;

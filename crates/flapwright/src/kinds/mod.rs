@@ -53,7 +53,7 @@ pub struct Companion {
     /// The station it comes from.
     pub station: String,
     /// Its moving flap attachments, in its flap section's terms.
-    pub attachments: Vec<flapwright_mechanism::outline::FlapPoint>,
+    pub attachments: Vec<flapwright_mechanism::shared::outline::FlapPoint>,
     /// Its flap deflection at [`COMPANION_SAMPLES`] + 1 evenly spaced drive fractions (rad).
     pub deflections_rad: Vec<f64>,
 }

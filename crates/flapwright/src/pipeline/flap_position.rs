@@ -39,7 +39,7 @@ pub fn rigid_flap_settings(
             let seen = frame.inverse() * pose * frame;
             let moved: Vec<Point3<f64>> = points.iter().map(|p| seen * lift(p)).collect();
             let in_plane: Vec<Point2<f64>> = moved.iter().map(|q| Point2::new(q.x, q.y)).collect();
-            let displacement = flapwright_mechanism::precision::fit_displacement(&points, &in_plane)
+            let displacement = flapwright_mechanism::shared::precision::fit_displacement(&points, &in_plane)
                 .with_context(|| format!("flap {flap}: its {setting} pose in station {}", placed.station.name))?;
             let own = position.flap;
             change.push(RigidFlapSetting {

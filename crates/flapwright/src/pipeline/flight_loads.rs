@@ -15,7 +15,7 @@
 
 use anyhow::{Context, Result};
 use flapwright_geom::parts::WingModel;
-use flapwright_mechanism::outline::{extent_x, vertical_span};
+use flapwright_mechanism::shared::outline::{extent_x, vertical_span};
 use flapwright_mechanism::{ExternalMoment, FlapNormalForce, LoadCase};
 use flapwright_sizing::{distribute_to_stations, ElementLoad};
 use nalgebra::{Point2, Vector2};

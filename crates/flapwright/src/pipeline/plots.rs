@@ -72,10 +72,10 @@ pub fn station_plots(
         }),
         plot("Actuator load", load_label, cases, &|s| Some(s.actuator_load)),
         plot("Screw raise torque", "T_R (N m)", cases, &|s| {
-            s.screw_torques_nm.map(|t| t.raise_torque_nm)
+            s.actuator_torques_nm.map(|t| t.raise_torque_nm)
         }),
         plot("Screw lower torque", "T_L (N m)", cases, &|s| {
-            s.screw_torques_nm.map(|t| t.lower_torque_nm)
+            s.actuator_torques_nm.map(|t| t.lower_torque_nm)
         }),
         Plot {
             title: format!(

@@ -6,8 +6,8 @@ use anyhow::{Context, Result};
 use flapwright_mechanism::seam::{Actuator, MemberLoad, MemberLoading};
 use flapwright_mechanism::DeploymentSample;
 use flapwright_sizing::{
-    axial_envelope_n, deployment_work_j, drive_demand, size_rod, size_screw_jack, size_torque_tubes, BendingLoad,
-    DeploymentWork, Material, RodInput, ScrewJackInput, ScrewJackSizing, SectionShape, SizingReport, TorqueTubeInput,
+    axial_envelope_n, deployment_work_j, drive_demand, size_actuator, size_rod, size_torque_tubes, ActuatorInput,
+    ActuatorSizing, BendingLoad, DeploymentWork, Material, RodInput, SectionShape, SizingReport, TorqueTubeInput,
 };
 use nalgebra::{Point3, Vector3};
 
@@ -58,7 +58,7 @@ pub fn size_all(
     let tube_material = material(scene, &scene.sizing.torque_tube_material)?;
     let link_material = material(scene, &scene.sizing.link_material)?;
     let mut rods = Vec::new();
-    let mut jacks: Vec<Option<ScrewJackSizing>> = Vec::new();
+    let mut jacks: Vec<Option<ActuatorSizing>> = Vec::new();
     let mut notes = Vec::new();
     for (mechanism, report) in mechanisms.iter().zip(&reports) {
         // Sizing is written per actuator type, never per kind.
@@ -93,8 +93,8 @@ pub fn size_all(
             Actuator::ScrewJack { .. } => "screw-jack",
             Actuator::Rotary { .. } => "rotary-actuator",
         };
-        let jack = size_screw_jack(
-            &ScrewJackInput {
+        let jack = size_actuator(
+            &ActuatorInput {
                 station: mechanism.station.clone(),
                 name: name.into(),
                 max_raise_torque_nm: max_raise,

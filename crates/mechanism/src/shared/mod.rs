@@ -1,0 +1,36 @@
+//! The toolbox the kinds share: what two or more kinds (or a kind and the seam) use sits
+//! here, so that no kind's folder holds what another kind needs. Each module says in its
+//! own docs what it is for; why it is here and not in one kind:
+//!
+//! | module | what | used by |
+//! |---|---|---|
+//! | `load_case` | [`LoadCase`](crate::LoadCase), [`ExternalMoment`](crate::ExternalMoment), [`FlapNormalForce`](crate::FlapNormalForce) | every kind's kinetostatics, the seam, `deployment`, [`crate::rigid_flap`] |
+//! | [`flap_load`] | the flap's weight and air load as a wrench; [`flap_load::LinkHardware`] | every kind but the thesis track, [`crate::rigid_flap`] |
+//! | `geometry` | 2D cross product, turns about a point | every kind, [`crate::jet`] |
+//! | `angle` | guarded `acos`, Kahan's triangle area, toggle tolerance | the track, the slider-crank, [`crate::landing_gear`] |
+//! | `slider_crank` | the inverted slider-crank A0 B0 A | the track, the rocker drive, [`crate::landing_gear`] |
+//! | [`rocker_drive`] | a screw jack turning a body about a pivot | dropped hinge, four-bar, placement |
+//! | `screw_jack` | the thread's torques; [`ScrewDrive`](crate::ScrewDrive) | the seam's [`Actuator`](crate::seam::Actuator), the track, dropped hinge, four-bar, hooked-track |
+//! | `rotary_actuator` | geared rotary actuators ([`RotaryDrive`](crate::RotaryDrive)) | dropped hinge, link-track |
+//! | [`placement`] | jack mounts and struts clear of the outlines | the synthesised kinds |
+//! | [`precision`] | precision positions, poles, circle centres | the synthesised kinds |
+//! | `feasibility` | loop checks over a deployment | four-bar, link-track, hooked-track |
+//! | [`outline`] | the station's section outlines and their distance queries | the synthesised kinds |
+//! | `members` | members to size and their loads | the seam ([`Member`](crate::seam::Member)), the kinds |
+//!
+//! The modules that were public at the crate root stay public here; the others are
+//! crate-private, their public types re-exported at the crate root.
+
+pub(crate) mod angle;
+pub(crate) mod feasibility;
+pub mod flap_load;
+pub(crate) mod geometry;
+pub(crate) mod load_case;
+pub(crate) mod members;
+pub mod outline;
+pub mod placement;
+pub mod precision;
+pub mod rocker_drive;
+pub(crate) mod rotary_actuator;
+pub(crate) mod screw_jack;
+pub(crate) mod slider_crank;

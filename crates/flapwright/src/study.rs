@@ -2,26 +2,35 @@
 //! and Fig. 17). Each candidate kind replaces the mechanism of every studied station (the
 //! flap mass, centre of mass and minimum transmission angle carried over, every other
 //! choice the kind's own default or search); the scene is then designed as usual, without
-//! STL, URDF or drawings, into one folder per kind, and each station's figures are
-//! gathered from the kind's report: fairing depth and length, largest actuator load, peak
+//! STL, URDF or drawings, into one folder per kind, and each station's figures are read
+//! from the kind's typed [`Report`]: fairing depth and length, largest actuator load, peak
 //! power, work per deployment, mechanism mass, the misses at the settings, the
 //! transmission-angle range and the clearance verdict; with charts of gap and overlap
 //! against deflection for every kind and a ranking.
 //!
-//! The study edits the scene as a TOML table and touches only the `kind` key and the
-//! kind-neutral keys above, so it names no kind: a new kind is studied by naming it. The
-//! tables are never written out as text: their problems are located in the user's file,
-//! with the station and flap indices of that file.
+//! Each variant is a typed [`Scene`]: the user's scene, parsed once, keeps the studied
+//! stations and their flaps ([`StudiedScene`]), and per kind each kept station's
+//! `mechanism` becomes the kind's table (its `kind` and the kind-neutral keys above as the
+//! user wrote them), deserialised and validated like any scene's. The kind's table is the
+//! one place the study still writes TOML: the kinds' tables are their only constructors,
+//! and a key the user did not write must stay the kind's own default. So the study names
+//! no kind: a new kind is studied by naming it. Every problem a variant meets is located in
+//! the user's file, with the station and flap indices of that file.
 
 use anyhow::{anyhow, Context, Result};
 use flapwright_drawing::{Plot, Series};
+use flapwright_interference::InterferenceReport;
+use flapwright_mechanism::seam::InputQuantity;
+use flapwright_mechanism::Deployment;
 use rayon::prelude::*;
-use serde::Serialize;
-use serde_json::Value;
+use serde::{Deserialize, Serialize};
 
+use crate::kinds::MechanismScene;
+use crate::pipeline::flap_position::FlapPositionReport;
 use crate::pipeline::WingCache;
 use crate::pipeline::{self, Inputs, Mode};
-use crate::scene::{FileSource, Problem, Scene, SceneError};
+use crate::report::{Report, StationReport};
+use crate::scene::{FileSource, OutputsScene, Problem, Scene, SceneError, StlSetting};
 use crate::sink::{MemorySink, Sink};
 
 /// The kinds studied when none are named: every kind synthesised from the flap settings.
@@ -42,8 +51,8 @@ pub struct StationFigures {
     pub fairing_depth_percent_flap_chord: f64,
     /// Fairing length, % of the flap chord.
     pub fairing_length_percent_flap_chord: f64,
-    /// "stroke" (screw jack: loads in N, power from the nut speed) or "angle" (rotary: N m).
-    pub actuator_input: String,
+    /// `stroke` (screw jack: loads in N, power from the nut speed) or `angle` (rotary: N m).
+    pub actuator_input: InputQuantity,
     /// Largest actuator load over every load case and sample (N or N m).
     pub max_actuator_load: f64,
     /// Largest |load x nominal input speed| (W).
@@ -134,19 +143,157 @@ fn rank(figures: &StationFigures) -> (bool, usize, f64, f64) {
     )
 }
 
-/// A studied scene as a table, and where its stations and flaps come from in the user's
-/// file (the study keeps only the studied stations and their flaps).
+/// The part of the user's scene every kind's variant shares: the studied stations and the
+/// flaps they carry (the others are removed so that the study designs only what it
+/// compares), the outputs the figures need, and where each kept station and flap comes
+/// from in the user's file.
 #[derive(Debug, Clone)]
-pub struct Variant {
-    /// The scene table with the kind in place of each kept station's mechanism.
-    pub table: toml::Table,
+pub struct StudiedScene {
+    /// The user's scene, its stations and flaps limited to the studied ones and its outputs
+    /// to what the figures need; its stations' mechanisms are still the user's.
+    pub scene: Scene,
     /// For each kept station, its index in the user's file.
     pub station_index: Vec<usize>,
     /// For each kept flap, its index in the user's file.
     pub flap_index: Vec<usize>,
+    /// For each kept station, the kind-neutral keys of its mechanism table as the user
+    /// wrote them ([`CARRIED_KEYS`]), and its flap mass where the table names it otherwise.
+    carried: Vec<toml::Table>,
 }
 
-impl Variant {
+/// Each kept station's `mechanism` as a kind's table, read with the scene's own paths
+/// (`station[0].mechanism.flap_mass_kg`) so that its problems read as a whole scene's.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct KindTables {
+    station: Vec<KindTable>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct KindTable {
+    mechanism: MechanismScene,
+}
+
+impl StudiedScene {
+    /// The stations named in `stations` (all when empty) of `scene`, parsed from `text`;
+    /// `text` gives the keys each station's mechanism table carries over as written, and
+    /// `scene` the flap mass of a station whose table names it otherwise (the five-bar's
+    /// two elements).
+    pub fn new(text: &str, scene: &Scene, stations: &[String]) -> Result<Self> {
+        let table: toml::Table = text.parse().context("parsing the scene as TOML")?;
+        let written = table
+            .get("station")
+            .and_then(|v| v.as_array())
+            .ok_or_else(|| anyhow!("the scene has no [[station]] to study"))?;
+        let studied = |name: &str| stations.is_empty() || stations.iter().any(|w| w == name);
+        let station_index: Vec<usize> = scene
+            .station
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| studied(&s.name))
+            .map(|(i, _)| i)
+            .collect();
+        if station_index.is_empty() {
+            return Err(anyhow!("no station named {}", stations.join(", ")));
+        }
+        if written.len() != scene.station.len() {
+            return Err(anyhow!(
+                "the scene's [[station]] tables are not the scene it was parsed into"
+            ));
+        }
+        let carried = station_index
+            .iter()
+            .map(|&i| {
+                let mechanism = written[i].get("mechanism").and_then(|m| m.as_table());
+                let mut carried = toml::Table::new();
+                for key in CARRIED_KEYS {
+                    if let Some(value) = mechanism.and_then(|m| m.get(key)) {
+                        carried.insert(key.into(), value.clone());
+                    }
+                }
+                if !carried.contains_key("flap_mass_kg") {
+                    let mass = scene.station[i].mechanism.kind().flap_mass_kg();
+                    carried.insert("flap_mass_kg".into(), toml::Value::Float(mass));
+                }
+                carried
+            })
+            .collect();
+        let flaps_used: Vec<&str> = station_index
+            .iter()
+            .filter_map(|&i| scene.station[i].flap.as_deref())
+            .collect();
+        let flap_index: Vec<usize> = scene
+            .flap
+            .iter()
+            .enumerate()
+            .filter(|(_, f)| flaps_used.contains(&f.name.as_str()))
+            .map(|(i, _)| i)
+            .collect();
+        let mut kept = scene.clone();
+        kept.station = station_index.iter().map(|&i| scene.station[i].clone()).collect();
+        kept.flap = flap_index.iter().map(|&i| scene.flap[i].clone()).collect();
+        // Every field named: an output added later is a choice the study must make.
+        kept.outputs = OutputsScene {
+            stl: false,
+            urdf: false,
+            svg: false,
+            gltf: false,
+            kinematics: true,
+            sizing: true,
+            interference: true,
+            stl_setting: StlSetting::Stowed,
+        };
+        // The study reads only each pair's verdict, so its sweeps stop refining a pair once
+        // the verdict is certain instead of locating its minimum to the tolerance: the same
+        // certified pass or fail (the pair's lower bound still meets the requirement, or a
+        // sample already misses it) for a fraction of the distance evaluations. The kinds'
+        // reports say so (`interference.stopped_at_verdict`), and their pairs'
+        // `min_clearance_m` are the smallest samples, `residual_bound_m` how much lower the
+        // true minimum may be.
+        kept.interference.stop_at_verdict = true;
+        // The file's own warnings were the user's to read when it was parsed; the kinds'
+        // reports carry only what their designs find.
+        kept.warnings = Vec::new();
+        Ok(Self {
+            scene: kept,
+            station_index,
+            flap_index,
+            carried,
+        })
+    }
+
+    /// The scene with `kind` in place of every kept station's mechanism (the carried keys
+    /// and the kind's defaults), validated as [`Scene::from_table`] validates a file's;
+    /// problems by the variant's key paths (see [`StudiedScene::user_path`]).
+    pub fn variant(&self, kind: &str, files: &dyn FileSource) -> Result<Scene, Vec<Problem>> {
+        let stations = self
+            .carried
+            .iter()
+            .map(|carried| {
+                let mut mechanism = toml::Table::new();
+                mechanism.insert("kind".into(), toml::Value::String(kind.into()));
+                mechanism.extend(carried.iter().map(|(key, value)| (key.clone(), value.clone())));
+                toml::Value::Table(toml::Table::from_iter([(
+                    "mechanism".into(),
+                    toml::Value::Table(mechanism),
+                )]))
+            })
+            .collect();
+        let tables = toml::Table::from_iter([("station".into(), toml::Value::Array(stations))]);
+        let kind_tables: KindTables = crate::scene::parse::typed(&tables)?;
+        let mut scene = self.scene.clone();
+        for (station, table) in scene.station.iter_mut().zip(kind_tables.station) {
+            station.mechanism = table.mechanism;
+        }
+        let problems = scene.validate(files);
+        if problems.is_empty() {
+            Ok(scene)
+        } else {
+            Err(problems)
+        }
+    }
+
     /// `path` (`station[0].mechanism`) with the station and flap indices of the user's file.
     pub fn user_path(&self, path: &str) -> String {
         for (table, map) in [("station[", &self.station_index), ("flap[", &self.flap_index)] {
@@ -169,100 +316,6 @@ impl Variant {
             .collect();
         SceneError::Invalid(problems).locate(text, file)
     }
-}
-
-/// The scene with every studied station's mechanism replaced by `kind` (only the stations
-/// named in `stations`, all when empty; the others and flaps left without stations are
-/// removed so that the study designs only what it compares), and outputs limited to what
-/// the figures need. `scene` is the same file, parsed: it gives the flap mass of a station
-/// whose table names it otherwise (the five-bar's two elements).
-pub fn variant(text: &str, scene: &Scene, kind: &str, stations: &[String]) -> Result<Variant> {
-    let mut table: toml::Table = text.parse().context("parsing the scene as TOML")?;
-    let list = table
-        .get_mut("station")
-        .and_then(|v| v.as_array_mut())
-        .ok_or_else(|| anyhow!("the scene has no [[station]] to study"))?;
-    let studied = |name: &str| stations.is_empty() || stations.iter().any(|w| w == name);
-    let station_index: Vec<usize> = scene
-        .station
-        .iter()
-        .enumerate()
-        .filter(|(_, s)| studied(&s.name))
-        .map(|(i, _)| i)
-        .collect();
-    if station_index.is_empty() {
-        return Err(anyhow!("no station named {}", stations.join(", ")));
-    }
-    if list.len() != scene.station.len() {
-        return Err(anyhow!(
-            "the scene's [[station]] tables are not the scene it was parsed into"
-        ));
-    }
-    let kept: Vec<toml::Value> = station_index.iter().map(|&i| list[i].clone()).collect();
-    *list = kept;
-    for (station, &i) in list.iter_mut().zip(&station_index) {
-        let Some(mechanism) = station.get_mut("mechanism").and_then(|m| m.as_table_mut()) else {
-            continue;
-        };
-        let mut replaced = toml::Table::new();
-        replaced.insert("kind".into(), toml::Value::String(kind.into()));
-        for key in CARRIED_KEYS {
-            if let Some(value) = mechanism.get(key) {
-                replaced.insert(key.into(), value.clone());
-            }
-        }
-        if !replaced.contains_key("flap_mass_kg") {
-            let mass = scene.station[i].mechanism.kind().flap_mass_kg();
-            replaced.insert("flap_mass_kg".into(), toml::Value::Float(mass));
-        }
-        *mechanism = replaced;
-    }
-    let flaps_used: Vec<&str> = station_index
-        .iter()
-        .filter_map(|&i| scene.station[i].flap.as_deref())
-        .collect();
-    let flap_index: Vec<usize> = scene
-        .flap
-        .iter()
-        .enumerate()
-        .filter(|(_, f)| flaps_used.contains(&f.name.as_str()))
-        .map(|(i, _)| i)
-        .collect();
-    if let Some(flaps) = table.get_mut("flap").and_then(|v| v.as_array_mut()) {
-        let kept: Vec<toml::Value> = flap_index.iter().filter_map(|&i| flaps.get(i).cloned()).collect();
-        *flaps = kept;
-    }
-    let mut outputs = toml::Table::new();
-    for (key, on) in [
-        ("stl", false),
-        ("urdf", false),
-        ("svg", false),
-        ("gltf", false),
-        ("kinematics", true),
-        ("sizing", true),
-        ("interference", true),
-    ] {
-        outputs.insert(key.into(), toml::Value::Boolean(on));
-    }
-    table.insert("outputs".into(), toml::Value::Table(outputs));
-    // The study reads only each pair's verdict, so its sweeps stop refining a pair once the
-    // verdict is certain instead of locating its minimum to the tolerance: the same
-    // certified pass or fail (the pair's lower bound still meets the requirement, or a
-    // sample already misses it) for a fraction of the distance evaluations. The kinds'
-    // reports say so (`interference.stopped_at_verdict`), and their pairs'
-    // `min_clearance_m` are the smallest samples, `residual_bound_m` how much lower the
-    // true minimum may be.
-    let interference = table
-        .entry("interference")
-        .or_insert_with(|| toml::Value::Table(toml::Table::new()));
-    if let Some(interference) = interference.as_table_mut() {
-        interference.insert("stop_at_verdict".into(), toml::Value::Boolean(true));
-    }
-    Ok(Variant {
-        table,
-        station_index,
-        flap_index,
-    })
 }
 
 /// A scene the study cannot compare kinds on: its problems, located in the file, shown on
@@ -372,20 +425,19 @@ pub fn run(
     stations: &[String],
     out: &dyn Sink,
 ) -> Result<Study> {
+    // A problem of the whole study (no such station) stops it before any kind; a kind's
+    // own problems (its variant's, its design's) are its outcome.
+    let studied = StudiedScene::new(text, scene, stations)?;
+    // The kinds design the same wing: its meshes, their statistics and their collision
+    // shapes are built once for all.
+    let cache = WingCache::default();
     // The kinds are independent designs into their own folders: in parallel (rayon), in
     // the order asked. Each design also runs its pairs in parallel; running the kinds side by
     // side lets one kind's serial stages (synthesis searches, a pair that takes long) overlap
     // the others' work.
-    let variants = kinds
-        .iter()
-        .map(|kind| Ok((kind, variant(text, scene, kind, stations)?)))
-        .collect::<Result<Vec<_>>>()?;
-    // The kinds design the same wing: its meshes, their statistics and their collision
-    // shapes are built once for all.
-    let cache = WingCache::default();
-    let designed: Vec<_> = variants
+    let designed: Vec<_> = kinds
         .par_iter()
-        .map(|(kind, variant)| (*kind, design_kind(variant, text, files, file, kind, out, &cache)))
+        .map(|kind| (kind, design_kind(&studied, text, files, file, kind, out, &cache)))
         .collect();
     let mut outcomes = Vec::new();
     let mut failures = Vec::new();
@@ -455,7 +507,7 @@ pub fn run(
 /// Designs one kind's variant into `out/<kind>/` (no folder when it fails) and gathers its
 /// stations' figures; its problems are located in the user's file.
 fn design_kind(
-    variant: &Variant,
+    studied: &StudiedScene,
     text: &str,
     files: &dyn FileSource,
     file: &str,
@@ -463,9 +515,11 @@ fn design_kind(
     out: &dyn Sink,
     cache: &WingCache,
 ) -> Result<Vec<StationFigures>> {
-    let scene = Scene::from_table(&variant.table, files).map_err(|p| variant.locate(p, text, file))?;
-    // Designed in memory, written as one folder only when the whole design succeeded (no
-    // folder for a kind that could not be designed).
+    let scene = studied
+        .variant(kind, files)
+        .map_err(|problems| studied.locate(problems, text, file))?;
+    // Designed in memory, written as one folder only when the whole design succeeded and
+    // its figures were read (no folder for a kind that could not be designed).
     let written = MemorySink::new();
     let inputs = Inputs {
         scene: &scene,
@@ -475,125 +529,173 @@ fn design_kind(
     };
     let outcome =
         pipeline::design(&inputs, Mode::Design, &written).map_err(|error| match error.downcast::<SceneError>() {
-            Ok(SceneError::Invalid(problems)) => anyhow::Error::new(variant.locate(problems, text, file)),
+            Ok(SceneError::Invalid(problems)) => anyhow::Error::new(studied.locate(problems, text, file)),
             Ok(other) => anyhow::Error::new(other),
             Err(error) => error,
         })?;
+    let report = &outcome.report;
+    let figures = report
+        .stations
+        .iter()
+        .map(|station| station_figures(report, station))
+        .collect::<Result<Vec<_>, _>>()?;
     out.write_folder(kind, &written)
         .with_context(|| format!("writing the {kind} folder"))?;
-    let report = serde_json::to_value(&outcome.report).context("reading the kind's report")?;
-    let figures = report["stations"]
-        .as_array()
-        .map(|stations| stations.iter().map(|s| station_figures(&report, s)).collect())
-        .unwrap_or_default();
     Ok(figures)
 }
 
-fn number(value: &Value) -> f64 {
-    value.as_f64().unwrap_or(f64::NAN)
+/// A section of a kind's report that a station's figures are read from is absent. Every
+/// variant is designed with a wing, kinematics, sizing and the interference check, so each
+/// section is there for every station a kind designs; one missing means a stage broke
+/// that promise, and the study says so rather than report a figure it never read (a
+/// station without sweeps would otherwise show no load, and one without pairs "clears").
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct MissingSection {
+    /// The station whose figures were being read.
+    pub station: String,
+    /// The report's key that is absent (`mechanism`, `interference`, ...).
+    pub section: &'static str,
 }
 
-/// One station's figures from its kind's report.
-fn station_figures(report: &Value, station: &Value) -> StationFigures {
-    let name = station["name"].as_str().unwrap_or_default().to_string();
-    let mechanism = &station["mechanism"];
-    let actuator = &mechanism["actuator"];
-    let speed = number(&actuator["nominal_speed_mps"]).max(number(&actuator["nominal_speed_radps"]));
-    let speed = if speed.is_finite() { speed } else { 0.0 };
-    let empty = Vec::new();
-    let cases = mechanism["load_cases"].as_array().unwrap_or(&empty);
-    let (mut max_load, mut work, mut mu) = (0.0f64, 0.0f64, [f64::INFINITY, f64::NEG_INFINITY]);
-    for case in cases {
-        let samples = case["samples"].as_array().unwrap_or(&empty);
-        let mut case_work = 0.0;
-        for pair in samples.windows(2) {
-            let (a, b) = (&pair[0], &pair[1]);
-            case_work += 0.5
-                * (number(&a["actuator_load"]) + number(&b["actuator_load"]))
-                * (number(&b["input"]) - number(&a["input"]));
-        }
-        work = work.max(case_work.abs());
-        for sample in samples {
-            max_load = max_load.max(number(&sample["actuator_load"]).abs());
-            let angle = number(&sample["transmission_angle_deg"]);
-            mu = [mu[0].min(angle), mu[1].max(angle)];
-        }
+impl std::fmt::Display for MissingSection {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "station {}: the kind's report has no `{}`, which the study's figures are read from",
+            self.station, self.section
+        )
     }
-    let gap_overlap = cases
-        .first()
-        .and_then(|c| c["samples"].as_array())
-        .map(|samples| {
-            samples
-                .iter()
-                .filter_map(|s| {
-                    let p = &s["flap_position"];
-                    Some([
-                        s["deflection_deg"].as_f64()?,
-                        p["gap_percent_chord"].as_f64()?,
-                        p["overlap_percent_chord"].as_f64()?,
-                    ])
-                })
-                .collect()
-        })
-        .unwrap_or_default();
-    let setting_misses = station["flap_position"]["settings"]
-        .as_array()
-        .unwrap_or(&empty)
+}
+
+impl std::error::Error for MissingSection {}
+
+/// One station's figures from its kind's report.
+fn station_figures(report: &Report, station: &StationReport) -> Result<StationFigures, MissingSection> {
+    let missing = |section| MissingSection {
+        station: station.name.clone(),
+        section,
+    };
+    let mechanism = station.mechanism.as_ref().ok_or_else(|| missing("mechanism"))?;
+    let fairing = station.fairing.as_ref().ok_or_else(|| missing("fairing"))?;
+    let flap_position = station.flap_position.as_ref().ok_or_else(|| missing("flap_position"))?;
+    let interference = report.interference.as_ref().ok_or_else(|| missing("interference"))?;
+    let sizing = report.sizing.as_ref().ok_or_else(|| missing("sizing"))?;
+    let loads = ActuatorLoads::over(&mechanism.load_cases);
+    // The masses list the stations that have sized parts: a station without one weighs
+    // nothing here.
+    let mechanism_mass_kg = sizing
+        .masses
+        .per_station
         .iter()
-        .filter(|s| s["target_gap_percent_chord"].is_number())
-        .map(|s| SettingMiss {
-            setting: s["setting"].as_str().unwrap_or_default().to_string(),
-            deflection_deg: number(&s["deflection_deg"]),
-            target_percent_chord: [
-                number(&s["target_gap_percent_chord"]),
-                number(&s["target_overlap_percent_chord"]),
-            ],
-            // Against what the setting was built to: a sealed slot's gap against its seal.
-            gap_miss_percent_chord: number(&s["gap_miss_percent_chord"]),
-            overlap_miss_percent_chord: number(&s["overlap_miss_percent_chord"]),
+        .find(|m| m.station == station.name)
+        .map_or(0.0, |m| m.mass_kg);
+    Ok(StationFigures {
+        station: station.name.clone(),
+        fairing_depth_percent_flap_chord: fairing.depth_percent_flap_chord,
+        fairing_length_percent_flap_chord: fairing.length_percent_flap_chord,
+        actuator_input: mechanism.input.quantity,
+        max_actuator_load: loads.max_load,
+        peak_power_w: loads.max_load * mechanism.actuator.nominal_input_speed(),
+        work_per_deployment_j: loads.work,
+        mechanism_mass_kg,
+        setting_misses: setting_misses(flap_position),
+        transmission_angle_deg: loads.transmission_angle_deg,
+        clearance_passes: clearance_passes(interference, &station.name, station.flap.as_deref()),
+        gap_overlap: gap_overlap(&mechanism.load_cases),
+    })
+}
+
+/// What the actuator does over every load case and sample.
+struct ActuatorLoads {
+    /// Largest |load| (N or N m).
+    max_load: f64,
+    /// Largest |work| of one deployment (J).
+    work: f64,
+    /// Smallest and largest transmission angle (deg); infinite, the wrong way round, with
+    /// no sample.
+    transmission_angle_deg: [f64; 2],
+}
+
+impl ActuatorLoads {
+    fn over(cases: &[Deployment]) -> Self {
+        let mut loads = Self {
+            max_load: 0.0,
+            work: 0.0,
+            transmission_angle_deg: [f64::INFINITY, f64::NEG_INFINITY],
+        };
+        for case in cases {
+            // The trapezoidal integral of load over input.
+            let mut case_work = 0.0;
+            for pair in case.samples.windows(2) {
+                let (a, b) = (&pair[0], &pair[1]);
+                case_work += 0.5 * (a.actuator_load + b.actuator_load) * (b.input - a.input);
+            }
+            loads.work = loads.work.max(case_work.abs());
+            for sample in &case.samples {
+                loads.max_load = loads.max_load.max(sample.actuator_load.abs());
+                let [low, high] = loads.transmission_angle_deg;
+                let angle = sample.transmission_angle_deg;
+                loads.transmission_angle_deg = [low.min(angle), high.max(angle)];
+            }
+        }
+        loads
+    }
+}
+
+/// Gap and overlap (% chord) against deflection (deg) over the first load case's samples.
+fn gap_overlap(cases: &[Deployment]) -> Vec<[f64; 3]> {
+    // A sample's gap and overlap are absent only at a station with no flap section to
+    // measure them by, where no kind the study puts in is synthesised.
+    cases.first().map_or_else(Vec::new, |case| {
+        case.samples
+            .iter()
+            .filter_map(|s| {
+                let at = s.flap_position?;
+                Some([s.deflection_deg, at.gap_percent_chord, at.overlap_percent_chord])
+            })
+            .collect()
+    })
+}
+
+/// The misses at each setting the scene gives a gap target for (`stowed` has none).
+fn setting_misses(flap_position: &FlapPositionReport) -> Vec<SettingMiss> {
+    flap_position
+        .settings
+        .iter()
+        .filter_map(|s| {
+            let target_gap = s.target_gap_percent_chord?;
+            // A setting with a gap target has a gap miss; an overlap target (and its miss)
+            // may be absent in a scene the study's requirements did not vet: NaN then
+            // (`null` in study.json), never a miss of zero.
+            Some(SettingMiss {
+                setting: s.setting.clone(),
+                deflection_deg: s.deflection_deg,
+                target_percent_chord: [target_gap, s.target_overlap_percent_chord.unwrap_or(f64::NAN)],
+                // Against what the setting was built to: a sealed slot's gap against its seal.
+                gap_miss_percent_chord: s.gap_miss_percent_chord.unwrap_or(f64::NAN),
+                overlap_miss_percent_chord: s.overlap_miss_percent_chord.unwrap_or(f64::NAN),
+            })
         })
-        .collect();
-    let prefix = format!("{name}.");
+        .collect()
+}
+
+/// Every checked pair of `station`'s parts (named `<station>.<solid>`), and of the flap
+/// it moves, and every joint of the station keeps its requirement.
+fn clearance_passes(interference: &InterferenceReport, station: &str, flap: Option<&str>) -> bool {
+    let prefix = format!("{station}.");
     // The flap this station moves is the kind's result too: each kind moves it on its own
     // path, so the flap's pairs (against the wing, spars, tube) count with the station's.
-    let flap = station["flap"].as_str();
-    let interference = &report["interference"];
-    let clearance_passes = interference["pairs"]
-        .as_array()
-        .unwrap_or(&empty)
+    let concerns = |part: &str| part.starts_with(&prefix) || Some(part) == flap;
+    interference
+        .pairs
         .iter()
-        .filter(|p| {
-            [&p["part_a"], &p["part_b"]]
-                .iter()
-                .any(|n| n.as_str().is_some_and(|n| n.starts_with(&prefix) || Some(n) == flap))
-        })
-        .all(|p| p["passes"] == true)
-        && interference["declared_contacts"]
-            .as_array()
-            .unwrap_or(&empty)
+        .filter(|p| concerns(&p.clearance.part_a) || concerns(&p.clearance.part_b))
+        .all(|p| p.passes)
+        && interference
+            .declared_contacts
             .iter()
-            .filter(|c| c["declared"]["station"].as_str() == Some(name.as_str()))
-            .all(|c| c["passes"] == true);
-    let mass = report["sizing"]["masses"]["per_station"]
-        .as_array()
-        .unwrap_or(&empty)
-        .iter()
-        .find(|m| m["station"].as_str() == Some(name.as_str()))
-        .map_or(0.0, |m| number(&m["mass_kg"]));
-    StationFigures {
-        fairing_depth_percent_flap_chord: number(&station["fairing"]["depth_percent_flap_chord"]),
-        fairing_length_percent_flap_chord: number(&station["fairing"]["length_percent_flap_chord"]),
-        actuator_input: mechanism["input"]["quantity"].as_str().unwrap_or_default().to_string(),
-        max_actuator_load: max_load,
-        peak_power_w: max_load * speed,
-        work_per_deployment_j: work,
-        mechanism_mass_kg: mass,
-        setting_misses,
-        transmission_angle_deg: mu,
-        clearance_passes,
-        gap_overlap,
-        station: name,
-    }
+            .filter(|c| c.declared.station == station)
+            .all(|c| c.passes)
 }
 
 /// Each kind's figures at `station`, in the order of `outcomes`.
@@ -673,7 +775,7 @@ pub fn table(study: &Study) -> String {
                         format!("{:+.1}/{:+.1}", m.gap_miss_percent_chord, m.overlap_miss_percent_chord)
                     })
             };
-            let load = if f.actuator_input == "angle" {
+            let load = if f.actuator_input == InputQuantity::Angle {
                 format!("{:.1} kN m", f.max_actuator_load / 1e3)
             } else {
                 format!("{:.1} kN", f.max_actuator_load / 1e3)
@@ -705,19 +807,324 @@ pub fn table(study: &Study) -> String {
 
 #[cfg(test)]
 mod tests {
+    use std::collections::BTreeMap;
+
+    use flapwright_interference::{
+        ContactResult, DeclaredContact, FairingDepth, JointSeparation, PairClearance, PairResult,
+    };
+    use flapwright_mechanism::seam::{Actuator, InputRange};
+    use flapwright_mechanism::{DeploymentSample, FlapGapOverlap};
+    use flapwright_sizing::{MassBreakdown, MassItem, SizingReport};
+
     use super::*;
+    use crate::pipeline::flap_position::SettingPosition;
+    use crate::pipeline::mechanisms::MechanismReport;
+    use crate::report::{Exports, SceneInfo, SCHEMA_VERSION};
+
+    /// A sample at `input` (rad) under `load` (N m), the flap at `deflection_deg` with
+    /// `gap_percent` and an overlap of 1 %.
+    fn sample(input: f64, load: f64, angle_deg: f64, deflection_deg: f64, gap_percent: f64) -> DeploymentSample {
+        DeploymentSample {
+            input,
+            deflection_deg,
+            transmission_angle_deg: angle_deg,
+            actuator_load: load,
+            actuator_load_cross_check_relative: 0.0,
+            reactions_n: BTreeMap::new(),
+            closure_residual_m: 0.0,
+            jacobian_condition_number: 1.0,
+            distance_to_toggle_deg: 90.0,
+            screw_torques_nm: None,
+            member_loads: BTreeMap::new(),
+            flap_position: Some(FlapGapOverlap {
+                gap_m: gap_percent / 100.0,
+                gap_percent_chord: gap_percent,
+                overlap_m: 0.01,
+                overlap_percent_chord: 1.0,
+            }),
+            aft_element: None,
+        }
+    }
+
+    /// A setting at `deflection_deg` measured at `gap_percent` and 1 % overlap, against
+    /// `targets` (gap, overlap; % of a 1 m chord).
+    fn setting(
+        name: &str,
+        deflection_deg: f64,
+        gap_percent: f64,
+        targets: (Option<f64>, Option<f64>),
+    ) -> SettingPosition {
+        let measured = flapwright_planes::GapOverlap {
+            rotation_rad: deflection_deg.to_radians(),
+            gap_m: gap_percent / 100.0,
+            gap_percent_chord: gap_percent,
+            overlap_m: 0.01,
+            overlap_percent_chord: 1.0,
+        };
+        SettingPosition::new(name, deflection_deg, measured, targets, None, 1.0)
+    }
+
+    /// Station `name` on flap `flap` as a kind designs it: a rotary actuator turning at
+    /// 0.1 rad/s through 0.5 rad, two load cases, the take-off setting aimed at 2 % gap and
+    /// 0 % overlap, a fairing 10 % deep and 30 % long.
+    fn designed_station(name: &str, flap: &str) -> StationReport {
+        let case = |name: &str, samples| Deployment {
+            load_case: name.into(),
+            samples,
+            stopped: None,
+        };
+        StationReport {
+            name: name.into(),
+            flap: Some(flap.into()),
+            plane: None,
+            flap_position: Some(FlapPositionReport {
+                trailing_edge_st_m: [0.0, 0.0],
+                local_chord_m: 1.0,
+                settings: vec![
+                    setting("stowed", 0.0, 0.0, (None, None)),
+                    setting("takeoff", 20.0, 2.5, (Some(2.0), Some(0.0))),
+                ],
+                rigid_flap: Vec::new(),
+                aft_slot: None,
+            }),
+            mechanism: Some(MechanismReport {
+                kind: "link-track",
+                input: InputRange {
+                    quantity: InputQuantity::Angle,
+                    stowed: 0.0,
+                    deployed: 0.5,
+                },
+                actuator: Actuator::Rotary {
+                    gear_ratio: 100.0,
+                    efficiency: 0.9,
+                    nominal_speed_radps: 0.1,
+                },
+                details: serde_json::Value::Null,
+                load_cases: vec![
+                    case(
+                        "cruise",
+                        vec![
+                            sample(0.0, 100.0, 60.0, 0.0, 0.0),
+                            sample(0.25, 300.0, 40.0, 20.0, 2.5),
+                            sample(0.5, -500.0, 70.0, 40.0, 3.0),
+                        ],
+                    ),
+                    case(
+                        "landing",
+                        vec![
+                            sample(0.0, 1000.0, 50.0, 0.0, 0.0),
+                            sample(0.5, 1000.0, 30.0, 40.0, 3.0),
+                        ],
+                    ),
+                ],
+                flap_load_share: None,
+            }),
+            fairing: Some(FairingDepth {
+                depth_m: 0.1,
+                depth_percent_flap_chord: 10.0,
+                part: Some(format!("{name}.link")),
+                at_parameter: 0.5,
+                point_st: [0.0, -0.1],
+                length_m: 0.3,
+                length_percent_flap_chord: 30.0,
+            }),
+            dynamics: None,
+        }
+    }
+
+    /// A pair of parts `a` and `b`, passing or not.
+    fn pair(a: &str, b: &str, passes: bool) -> PairResult {
+        PairResult {
+            station: None,
+            clearance: PairClearance {
+                part_a: a.into(),
+                part_b: b.into(),
+                min_clearance_m: if passes { 0.01 } else { 0.0 },
+                at_parameter: 0.5,
+                point_a_ac: [0.0; 3],
+                point_b_ac: [0.0; 3],
+                penetration_m: 0.0,
+                penetration_resolution_m: 0.0,
+                residual_bound_m: 0.0,
+                evaluations: 1,
+                trace: Vec::new(),
+            },
+            required_clearance_m: 0.005,
+            passes,
+        }
+    }
+
+    /// A joint of `station`, holding or not.
+    fn joint(station: &str, passes: bool) -> ContactResult {
+        ContactResult {
+            declared: DeclaredContact {
+                station: station.into(),
+                part_a: format!("{station}.link"),
+                part_b: format!("{station}.carriage"),
+                joint: "B".into(),
+            },
+            separation: JointSeparation {
+                max_separation_m: 0.0,
+                at_parameter: 0.0,
+                upper_bound_m: 0.0,
+                evaluations: 1,
+            },
+            passes,
+        }
+    }
+
+    fn interference(pairs: Vec<PairResult>, declared_contacts: Vec<ContactResult>) -> InterferenceReport {
+        InterferenceReport {
+            deployment_range: [0.0, 1.0],
+            required_clearance_m: 0.005,
+            required_clearance_by_station_m: BTreeMap::new(),
+            joint_play_m: 0.001,
+            passes: pairs.iter().all(|p| p.passes) && declared_contacts.iter().all(|c| c.passes),
+            pairs,
+            swept_box_intervals: 0,
+            certified_apart: Vec::new(),
+            declared_contacts,
+            openings: Vec::new(),
+            unchecked_pairs: Vec::new(),
+            stopped_at_verdict: true,
+        }
+    }
+
+    /// A kind's report of `station`, with no pairs and no sized parts.
+    fn report_of(station: StationReport) -> Report {
+        Report {
+            schema_version: SCHEMA_VERSION,
+            flapwright_version: String::new(),
+            scene: SceneInfo {
+                name: "wing".into(),
+                description: String::new(),
+                sha256: String::new(),
+            },
+            stages: Vec::new(),
+            parts: Vec::new(),
+            mechanism_parts: Vec::new(),
+            stations: vec![station],
+            interference: Some(interference(Vec::new(), Vec::new())),
+            sizing: Some(SizingReport::assemble(Vec::new(), Vec::new(), Vec::new(), None)),
+            files: Exports::default(),
+            warnings: Vec::new(),
+            timings: Vec::new(),
+        }
+    }
+
+    fn figures_of(report: &Report) -> Result<StationFigures, MissingSection> {
+        station_figures(report, &report.stations[0])
+    }
 
     #[test]
-    fn the_clearance_verdict_counts_the_flap_the_station_moves() {
-        let pair = |a: &str, b: &str, passes: bool| serde_json::json!({"part_a": a, "part_b": b, "passes": passes});
-        let station = serde_json::json!({"name": "s1", "flap": "outboard"});
-        let report = |pairs: Vec<Value>| serde_json::json!({"interference": {"pairs": pairs, "declared_contacts": []}});
-        let clear = report(vec![pair("s1.link", "wing", true), pair("outboard", "wing", true)]);
-        assert!(station_figures(&clear, &station).clearance_passes);
-        let flap_too_close = report(vec![pair("s1.link", "wing", true), pair("outboard", "wing", false)]);
-        assert!(!station_figures(&flap_too_close, &station).clearance_passes);
-        let other_flap = report(vec![pair("s1.link", "wing", true), pair("inboard", "wing", false)]);
-        assert!(station_figures(&other_flap, &station).clearance_passes);
+    fn the_figures_are_read_from_the_kinds_report() {
+        let mut report = report_of(designed_station("s1", "outboard"));
+        report.sizing.as_mut().unwrap().masses = MassBreakdown::from_items(&[
+            MassItem {
+                station: "s0".into(),
+                part: "link".into(),
+                mass_kg: 9.0,
+            },
+            MassItem {
+                station: "s1".into(),
+                part: "link".into(),
+                mass_kg: 2.5,
+            },
+        ]);
+        let f = figures_of(&report).unwrap();
+        assert_eq!(f.station, "s1");
+        assert_eq!(f.actuator_input, InputQuantity::Angle);
+        assert_eq!(
+            [f.fairing_depth_percent_flap_chord, f.fairing_length_percent_flap_chord],
+            [10.0, 30.0]
+        );
+        // The largest |load| of any case, times the nominal input speed.
+        assert_eq!(f.max_actuator_load, 1000.0);
+        assert!((f.peak_power_w - 100.0).abs() < 1e-12, "{}", f.peak_power_w);
+        // The landing case's 1000 N m over 0.5 rad outworks the cruise case's
+        // 0.5 (100 + 300) 0.25 + 0.5 (300 - 500) 0.25 = 25 J.
+        assert!(
+            (f.work_per_deployment_j - 500.0).abs() < 1e-12,
+            "{}",
+            f.work_per_deployment_j
+        );
+        assert_eq!(f.transmission_angle_deg, [30.0, 70.0]);
+        assert_eq!(f.mechanism_mass_kg, 2.5, "the station's own entry");
+        // The first case's samples, in order.
+        assert_eq!(f.gap_overlap, [[0.0, 0.0, 1.0], [20.0, 2.5, 1.0], [40.0, 3.0, 1.0]]);
+        // Only the setting with targets; its misses against them.
+        assert_eq!(f.setting_misses.len(), 1, "{:?}", f.setting_misses);
+        let takeoff = &f.setting_misses[0];
+        assert_eq!(takeoff.setting, "takeoff");
+        assert_eq!(takeoff.deflection_deg, 20.0);
+        assert_eq!(takeoff.target_percent_chord, [2.0, 0.0]);
+        assert!((takeoff.gap_miss_percent_chord - 0.5).abs() < 1e-12);
+        assert!((takeoff.overlap_miss_percent_chord - 1.0).abs() < 1e-12);
+        assert!(f.clearance_passes, "no pair, no joint");
+    }
+
+    #[test]
+    fn the_documented_values_stand_where_a_figure_is_absent() {
+        // No sized part at the station: no entry in the masses, and 0 kg.
+        let mut station = designed_station("s1", "outboard");
+        // A take-off target without an overlap target: NaN, not a miss of zero.
+        station.flap_position.as_mut().unwrap().settings[1] = setting("takeoff", 20.0, 2.5, (Some(2.0), None));
+        let f = figures_of(&report_of(station)).unwrap();
+        assert_eq!(f.mechanism_mass_kg, 0.0);
+        let takeoff = &f.setting_misses[0];
+        assert!((takeoff.gap_miss_percent_chord - 0.5).abs() < 1e-12);
+        assert!(takeoff.target_percent_chord[1].is_nan() && takeoff.overlap_miss_percent_chord.is_nan());
+    }
+
+    #[test]
+    fn a_report_without_a_section_the_figures_need_is_an_error_naming_it() {
+        let designed = || report_of(designed_station("s1", "outboard"));
+        /// Takes one section out of a designed report.
+        type TakeOut = fn(&mut Report);
+        let cases: [(&str, TakeOut); 5] = [
+            ("mechanism", |r| r.stations[0].mechanism = None),
+            ("fairing", |r| r.stations[0].fairing = None),
+            ("flap_position", |r| r.stations[0].flap_position = None),
+            ("interference", |r| r.interference = None),
+            ("sizing", |r| r.sizing = None),
+        ];
+        for (section, take_out) in cases {
+            let mut report = designed();
+            take_out(&mut report);
+            let error = figures_of(&report).unwrap_err();
+            assert_eq!(
+                error,
+                MissingSection {
+                    station: "s1".into(),
+                    section
+                }
+            );
+            let message = error.to_string();
+            assert!(
+                message.contains("station s1") && message.contains(&format!("`{section}`")),
+                "{message}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_clearance_verdict_counts_the_flap_the_station_moves_and_its_joints() {
+        let verdict = |pairs, joints| clearance_passes(&interference(pairs, joints), "s1", Some("outboard"));
+        assert!(verdict(
+            vec![pair("s1.link", "wing", true), pair("outboard", "wing", true)],
+            vec![]
+        ));
+        assert!(!verdict(
+            vec![pair("s1.link", "wing", true), pair("outboard", "wing", false)],
+            vec![]
+        ));
+        assert!(!verdict(vec![pair("wing", "s1.link", false)], vec![]));
+        // Another flap's pairs, another station's parts and joints are theirs.
+        assert!(verdict(
+            vec![pair("inboard", "wing", false), pair("s10.link", "wing", false)],
+            vec![joint("s2", false)]
+        ));
+        assert!(!verdict(vec![], vec![joint("s1", false)]));
     }
 
     fn parsed(text: &str) -> Scene {
@@ -727,35 +1134,49 @@ mod tests {
     #[test]
     fn a_variant_keeps_the_kind_neutral_keys_and_the_studied_stations_only() {
         let text = crate::scene::DEFAULT_SCENE_TOML;
-        let variant = variant(text, &parsed(text), "hooked-track", &["outer".into()]).unwrap();
-        let table = &variant.table;
-        let stations = table["station"].as_array().unwrap();
-        assert_eq!(stations.len(), 1);
-        assert_eq!(variant.station_index, [1]);
+        let studied = StudiedScene::new(text, &parsed(text), &["outer".into()]).unwrap();
+        assert_eq!(studied.station_index, [1]);
         assert_eq!(
-            variant.user_path("station[0].mechanism.kind"),
+            studied.user_path("station[0].mechanism.kind"),
             "station[1].mechanism.kind"
         );
-        assert_eq!(variant.user_path("flap[0].settings"), "flap[0].settings");
-        let mechanism = stations[0]["mechanism"].as_table().unwrap();
-        assert_eq!(mechanism["kind"].as_str(), Some("hooked-track"));
-        assert_eq!(mechanism["flap_mass_kg"].as_float(), Some(12.0));
-        assert!(mechanism.contains_key("flap_centre_of_mass_m"));
-        assert!(!mechanism.contains_key("base_distance_m"));
-        assert_eq!(table["flap"].as_array().unwrap().len(), 1);
-        assert_eq!(table["outputs"]["urdf"].as_bool(), Some(false));
-        assert_eq!(table["interference"]["stop_at_verdict"].as_bool(), Some(true));
-        assert!(super::variant(text, &parsed(text), "four-bar", &["none".into()]).is_err());
+        assert_eq!(studied.user_path("flap[0].settings"), "flap[0].settings");
+        let scene = studied.variant("hooked-track", &crate::scene::NoFiles).unwrap();
+        assert_eq!(scene.station.len(), 1);
+        assert_eq!(scene.station[0].name, "outer");
+        let MechanismScene::HookedTrack(mechanism) = &scene.station[0].mechanism else {
+            panic!("the kind in place: {:?}", scene.station[0].mechanism);
+        };
+        assert_eq!(mechanism.flap_mass_kg, 12.0);
+        assert!(mechanism.flap_centre_of_mass_m.is_some(), "carried over");
+        assert_eq!(scene.flap.len(), 1);
+        assert!(!scene.outputs.urdf && !scene.outputs.stl && scene.outputs.sizing);
+        assert!(scene.interference.stop_at_verdict);
+        assert!(StudiedScene::new(text, &parsed(text), &["none".into()]).is_err());
     }
 
     #[test]
     fn a_variant_carries_the_flap_mass_a_kind_names_otherwise() {
         let text = include_str!("../../../data/scenes/double-slotted-wing.toml");
-        let variant = variant(text, &parsed(text), "dropped-hinge", &[]).unwrap();
-        for station in variant.table["station"].as_array().unwrap() {
+        let studied = StudiedScene::new(text, &parsed(text), &[]).unwrap();
+        let scene = studied.variant("dropped-hinge", &crate::scene::NoFiles).unwrap();
+        for station in &scene.station {
             // The five-bar's main and secondary flap masses.
-            assert_eq!(station["mechanism"]["flap_mass_kg"].as_float(), Some(70.0));
+            assert_eq!(station.mechanism.kind().flap_mass_kg(), 70.0);
         }
+    }
+
+    #[test]
+    fn a_variants_problems_name_the_users_station() {
+        // A kind whose table needs keys the study does not carry: its problems are at the
+        // kept station's index in the user's file.
+        let text = crate::scene::DEFAULT_SCENE_TOML;
+        let studied = StudiedScene::new(text, &parsed(text), &["outer".into()]).unwrap();
+        let problems = studied.variant("five-bar", &crate::scene::NoFiles).unwrap_err();
+        let located = studied.locate(problems, text, "scene.toml").lines().join("\n");
+        assert!(located.contains("station[1].mechanism"), "{located}");
+        assert!(!located.contains("station[0]"), "{located}");
+        assert!(located.contains("scene.toml:"), "{located}");
     }
 
     fn figures(clears: bool, miss: f64, depth: f64) -> StationFigures {
@@ -763,7 +1184,7 @@ mod tests {
             station: "one".into(),
             fairing_depth_percent_flap_chord: depth,
             fairing_length_percent_flap_chord: 100.0,
-            actuator_input: "stroke".into(),
+            actuator_input: InputQuantity::Stroke,
             max_actuator_load: 1.0,
             peak_power_w: 1.0,
             work_per_deployment_j: 1.0,

@@ -183,9 +183,8 @@ impl Scene {
         Ok(scene)
     }
 
-    /// A scene from its TOML table, parsed and validated; problems by key path only (the
-    /// trade study builds its variants as tables and locates their problems in the user's
-    /// file). The scene's `warnings` are left empty.
+    /// A scene from its TOML table, parsed and validated; problems by key path only. The
+    /// scene's `warnings` are left empty.
     pub fn from_table(table: &toml::Table, files: &dyn FileSource) -> Result<Self, Vec<Problem>> {
         let scene: Scene = super::parse::typed(table)?;
         let problems = scene.validate(files);

@@ -26,7 +26,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::kinds::MechanismScene;
-use crate::pipeline::flap_position::FlapPositionReport;
+use crate::pipeline::record::FlapPositionReport;
 use crate::pipeline::WingCache;
 use crate::pipeline::{self, Inputs, Mode};
 use crate::report::{Report, StationReport};
@@ -817,8 +817,8 @@ mod tests {
     use flapwright_sizing::{MassBreakdown, MassItem, SizingReport};
 
     use super::*;
-    use crate::pipeline::flap_position::SettingPosition;
-    use crate::pipeline::mechanisms::MechanismReport;
+    use crate::pipeline::record::MechanismReport;
+    use crate::pipeline::record::SettingPosition;
     use crate::report::{Exports, SceneInfo, SCHEMA_VERSION};
 
     /// A sample at `input` (rad) under `load` (N m), the flap at `deflection_deg` with
@@ -834,7 +834,7 @@ mod tests {
             closure_residual_m: 0.0,
             jacobian_condition_number: 1.0,
             distance_to_toggle_deg: 90.0,
-            screw_torques_nm: None,
+            actuator_torques_nm: None,
             member_loads: BTreeMap::new(),
             flap_position: Some(FlapGapOverlap {
                 gap_m: gap_percent / 100.0,

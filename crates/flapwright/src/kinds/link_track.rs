@@ -4,7 +4,8 @@
 
 use std::sync::Arc;
 
-use flapwright_mechanism::{FlapMechanism, LinkTrack, LinkTrackSpec};
+use flapwright_kinds::{LinkTrack, LinkTrackSpec};
+use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
 use serde::Deserialize;
 

@@ -15,7 +15,7 @@ use std::sync::Arc;
 
 use flapwright_interference::{station_parts, Motion, StationParts};
 use flapwright_mechanism::seam::BodyRole;
-use flapwright_mechanism::urdf::RigidInertia;
+use flapwright_urdf::RigidInertia;
 
 use crate::pipeline::record::StationRecord;
 use crate::report::{MassBasis, MechanismPartReport};

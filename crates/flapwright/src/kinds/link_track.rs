@@ -88,6 +88,7 @@ impl KindScene for LinkTrackScene {
             rotary: self.rotary.drive(),
             hardware: flap.hardware,
             outline: flap.outline.clone(),
+            design_loads: context.design_loads.clone(),
         };
         LinkTrack::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)

@@ -45,6 +45,10 @@ pub struct SynthesisContext {
     /// from them, so that the stations of one rigid flap move it alike (two four-bars
     /// searched apart move it on paths centimetres apart between the settings).
     pub companion: Option<Companion>,
+    /// The scene's load cases at this station (its share of its flap's flight load; the
+    /// flap's weight alone when the scene gives none): the searches weigh the actuator's
+    /// load under them.
+    pub design_loads: Vec<flapwright_mechanism::LoadCase>,
 }
 
 /// See [`SynthesisContext::companion`].

@@ -216,8 +216,20 @@ impl FourBar {
         };
         let size = JackSize::new(&hw, spec.screw_drive.mean_radius_m);
         let flap_at = |phi: f64| loop_.at(phi).map(|p| p.flap);
-        let (attachment, mount, actuator_clear) =
-            place_screw_jack(loop_.o1, travel, &choice, &size, margin, &spec.outline, &flap_at);
+        let (attachment, mount, actuator_clear) = place_screw_jack(
+            loop_.o1,
+            travel,
+            &choice,
+            &size,
+            margin,
+            &spec.outline,
+            &flap_at,
+            // Not weighed by the load yet: on `transport-flap` the weighed jack (0.73-0.82
+            // of the air load instead of 1.14-2.08) deepens the fairing from 64-67 % to
+            // 69-73 % of the flap chord and its slower flap per unit stroke leaves the
+            // check's clearance uncertified within its evaluations (issue 37).
+            None,
+        );
         let mut placement_clear = true;
         let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)
             .filter_map(|k| loop_.at(travel * k as f64 / PLACEMENT_SAMPLES as f64).map(|p| p.flap))

@@ -71,6 +71,11 @@ pub struct LinkTrackSpec {
     pub hardware: LinkHardware,
     /// The station's sections.
     pub outline: StationOutline,
+    /// The station's load cases, under which the search weighs the actuator's load against
+    /// the fairing's depth ([`flapwright_mechanism::shared::objective`]); empty: the
+    /// shallowest candidate.
+    #[serde(skip)]
+    pub design_loads: Vec<flapwright_mechanism::LoadCase>,
 }
 
 /// Counts of what the search rejected.
@@ -181,7 +186,7 @@ impl LinkTrack {
                 match search::check(&spec, *link, *carriage) {
                     Ok(found) => {
                         counts.feasible += 1;
-                        if best.is_none_or(|b| found.depth < b.depth) {
+                        if best.is_none_or(|b| found.cost < b.cost) {
                             best = Some(found);
                         }
                     }
@@ -535,4 +540,16 @@ impl FlapMechanism for LinkTrack {
 /// The track's direction at a slope below the aft direction (station frame: x forward).
 pub fn track_direction(slope_rad: f64) -> Unit<Vector2<f64>> {
     Unit::new_normalize(Vector2::new(-slope_rad.cos(), -slope_rad.sin()))
+}
+
+impl LinkTrackSpec {
+    /// How the search weighs the actuator's load: under [`Self::design_loads`] with the
+    /// default weight, or not at all without them.
+    pub fn weighing(&self) -> Option<flapwright_mechanism::shared::objective::LoadWeighing> {
+        (!self.design_loads.is_empty()).then(|| flapwright_mechanism::shared::objective::LoadWeighing {
+            loads: self.design_loads.clone(),
+            flap_mass: self.flap_mass,
+            weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
+        })
+    }
 }

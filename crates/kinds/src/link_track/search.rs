@@ -18,8 +18,10 @@
 //! link's out of the spars) over the whole deployment, the solids' radii and the brackets'
 //! arms left to the interference check), reach the settings in order, stay above the minimum
 //! transmission angle, keep the flap off the wing's trailing edge and the links out of the
-//! sections, and picks the shallowest (the fairing's depth as the fairing stage measures
-//! it). Every rejection is counted ([`LinkTrackSearch`]).
+//! sections, and picks the least costly: the fairing's depth (as the fairing stage measures
+//! it) in flap chords plus, under the spec's load cases, the actuator's peak torque in
+//! reference torques ([`flapwright_mechanism::shared::objective`]); without load cases,
+//! the shallowest. Every rejection is counted ([`LinkTrackSearch`]).
 
 use nalgebra::{Matrix2, Point2, Unit, Vector2};
 
@@ -68,6 +70,10 @@ pub(super) struct Found {
     /// How far the actuator, the link pin and the carriage reach below the stowed
     /// sections' lower contour over the deployment (m).
     pub(super) depth: f64,
+    /// The search's cost: the depth in flap chords, plus the actuator's peak torque under
+    /// the load cases in reference torques when the spec has them
+    /// ([`flapwright_mechanism::shared::objective`]).
+    pub(super) cost: f64,
 }
 
 /// The point whose three positions under `positions` lie on one line along `d`.
@@ -385,10 +391,26 @@ pub(super) fn check(
             ));
         }
     }
+    let flap_chord = spec.outline.flap_chord().map_or(1.0, |(_, _, chord)| chord);
+    let cost = match spec.weighing() {
+        Some(weighing) => {
+            let rotations: Vec<f64> = (0..=LOOP_SAMPLES)
+                .map(|k| turns[1] * k as f64 / LOOP_SAMPLES as f64)
+                .collect();
+            let flap_at = |phi: f64| loop_.at(phi).map(|pose| pose.flap);
+            let torques = weighing.body_torques(&rotations, turns[1], &flap_at);
+            let peak = torques.iter().map(|t| t.unwrap_or(f64::INFINITY)).fold(0.0, f64::max);
+            let poses: Vec<_> = rotations.iter().filter_map(|&phi| flap_at(phi)).collect();
+            let reference = weighing.reference_force_n(&poses) * flap_chord;
+            weighing.cost(depth, flap_chord, peak, reference)
+        }
+        None => depth / flap_chord,
+    };
     Ok(Found {
         loop_,
         turns,
         min_transmission,
         depth,
+        cost,
     })
 }

@@ -17,6 +17,7 @@
 //! | `feasibility` | loop checks over a deployment | four-bar, link-track, hooked-track |
 //! | [`outline`] | the station's section outlines and their distance queries | the synthesised kinds |
 //! | `members` | members to size and their loads | the seam ([`Member`](crate::seam::Member)), the kinds |
+//! | [`objective`] | what the searches weigh besides depth: the actuator's load under the load cases, by virtual work | the synthesised kinds, [`placement`] |
 //!
 //! Every module is public: the kinds live in their own crate (`flapwright-kinds`) and
 //! reach the toolbox from there; the types the other stages name are also re-exported at
@@ -28,6 +29,7 @@ pub mod flap_load;
 pub mod geometry;
 pub mod load_case;
 pub mod members;
+pub mod objective;
 pub mod outline;
 pub mod placement;
 pub mod precision;

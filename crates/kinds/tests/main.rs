@@ -1,5 +1,6 @@
 //! Integration tests of the kinds (and of the toolbox in flapwright-mechanism through them), one module per topic.
 
+mod adding_a_kind;
 mod common;
 mod finite_differences;
 mod five_bar;

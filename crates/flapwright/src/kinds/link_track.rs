@@ -89,6 +89,7 @@ impl KindScene for LinkTrackScene {
             hardware: flap.hardware,
             outline: flap.outline.clone(),
             design_loads: context.design_loads.clone(),
+            load_weight: context.actuator_load_weight,
         };
         LinkTrack::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)

@@ -49,6 +49,9 @@ pub struct SynthesisContext {
     /// flap's weight alone when the scene gives none): the searches weigh the actuator's
     /// load under them.
     pub design_loads: Vec<flapwright_mechanism::LoadCase>,
+    /// `[design] actuator_load_weight`: the weight of the actuator's load against the
+    /// fairing's depth in the searches.
+    pub actuator_load_weight: f64,
 }
 
 /// See [`SynthesisContext::companion`].

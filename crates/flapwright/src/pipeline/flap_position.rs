@@ -247,6 +247,7 @@ pub fn synthesis_context(
             }),
             companion: None,
             design_loads: Vec::new(),
+            actuator_load_weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
         },
         Some(measure),
     ))

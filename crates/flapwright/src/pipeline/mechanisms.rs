@@ -75,6 +75,7 @@ pub fn synthesise_all(
                 .map(|case| flight_loads::load_case_on(case, share))
                 .collect()
         };
+        context.actuator_load_weight = scene.design.actuator_load_weight;
         inputs.push((placed, context, flap_behind_wing, Vec::new()));
     }
     if !problems.is_empty() {

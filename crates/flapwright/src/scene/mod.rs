@@ -22,7 +22,9 @@ pub use airfoil_ref::{load_airfoil, AirfoilRef, AirfoilSource};
 pub use dynamics::DynamicsScene;
 pub use files::{FileSource, Folder, MemoryFiles, NoFiles};
 pub use key_path::Location;
-pub use settings::{InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene, StlSetting};
+pub use settings::{
+    DesignScene, InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene, StlSetting,
+};
 pub use station::{LoadCaseScene, LoadsScene, StationScene};
 pub(crate) use validate::default_tube_end;
 pub use validate::{
@@ -73,6 +75,9 @@ pub struct Scene {
     /// Interference check settings.
     #[serde(default)]
     pub interference: InterferenceScene,
+    /// What the mechanism searches weigh besides the fairing's depth.
+    #[serde(default)]
+    pub design: DesignScene,
     /// Custom materials, referred to by name from `[sizing]`.
     #[serde(default)]
     pub materials: Vec<MaterialScene>,

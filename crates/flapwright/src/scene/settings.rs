@@ -166,6 +166,30 @@ pub struct MaterialScene {
     pub youngs_modulus_pa: f64,
 }
 
+/// `[design]`: what the mechanism searches weigh besides the fairing's depth
+/// ([`flapwright_mechanism::shared::objective`]).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DesignScene {
+    /// Weight of the actuator's peak load, in reference loads (the largest force the load
+    /// cases put on the flap; times the flap chord for a rotary actuator), against the
+    /// fairing's depth in flap chords; 0: the shallowest mechanism whatever it carries.
+    #[serde(default = "default_actuator_load_weight")]
+    pub actuator_load_weight: f64,
+}
+
+fn default_actuator_load_weight() -> f64 {
+    flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT
+}
+
+impl Default for DesignScene {
+    fn default() -> Self {
+        Self {
+            actuator_load_weight: default_actuator_load_weight(),
+        }
+    }
+}
+
 /// `[outputs]`: which results to produce; a stage that no requested output needs is skipped.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]

@@ -76,6 +76,10 @@ pub struct LinkTrackSpec {
     /// shallowest candidate.
     #[serde(skip)]
     pub design_loads: Vec<flapwright_mechanism::LoadCase>,
+    /// Weight of the actuator's peak load against the fairing's depth
+    /// ([`flapwright_mechanism::shared::objective::LoadWeighing::weight`]).
+    #[serde(skip)]
+    pub load_weight: f64,
 }
 
 /// Counts of what the search rejected.
@@ -178,7 +182,7 @@ impl LinkTrack {
         let mut counts = LinkTrackSearch::default();
         let carriages = search::carriages(&spec, &mut counts, flap_chord);
         let links = search::links(&spec, &mut counts, flap_chord);
-        let mut best: Option<search::Found> = None;
+        let mut feasible: Vec<search::Found> = Vec::new();
         let mut last_failure = None;
         for link in &links {
             for carriage in &carriages {
@@ -186,9 +190,7 @@ impl LinkTrack {
                 match search::check(&spec, *link, *carriage) {
                     Ok(found) => {
                         counts.feasible += 1;
-                        if best.is_none_or(|b| found.cost < b.cost) {
-                            best = Some(found);
-                        }
+                        feasible.push(found);
                     }
                     Err((defect, detail)) => {
                         match defect {
@@ -201,7 +203,7 @@ impl LinkTrack {
                 }
             }
         }
-        let Some(found) = best else {
+        let Some(found) = search::refine_best(&spec, feasible, flap_chord) else {
             return Err(match (last_failure, counts.pairs) {
                 (Some((defect, detail)), 1) => failure(defect, detail),
                 _ => failure(dominant(&counts), describe(&counts)),
@@ -543,13 +545,13 @@ pub fn track_direction(slope_rad: f64) -> Unit<Vector2<f64>> {
 }
 
 impl LinkTrackSpec {
-    /// How the search weighs the actuator's load: under [`Self::design_loads`] with the
-    /// default weight, or not at all without them.
+    /// How the search weighs the actuator's load: under [`Self::design_loads`] with
+    /// [`Self::load_weight`], or not at all without them.
     pub fn weighing(&self) -> Option<flapwright_mechanism::shared::objective::LoadWeighing> {
         (!self.design_loads.is_empty()).then(|| flapwright_mechanism::shared::objective::LoadWeighing {
             loads: self.design_loads.clone(),
             flap_mass: self.flap_mass,
-            weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
+            weight: self.load_weight,
         })
     }
 }

@@ -162,7 +162,6 @@ pub(super) fn carriages(
     search: &mut LinkTrackSearch,
     flap_chord: f64,
 ) -> Vec<(Unit<Vector2<f64>>, Point2<f64>)> {
-    let positions = [spec.takeoff, spec.landing];
     let slopes: Vec<f64> = match spec.track_slope_rad {
         Some(slope) => vec![slope],
         None => (0..SLOPES)
@@ -172,23 +171,64 @@ pub(super) fn carriages(
     let mut found = Vec::new();
     for slope in slopes {
         search.slopes += 1;
-        let d = super::track_direction(slope);
-        let Some(c) = carriage_point(&positions, d.into_inner()) else {
-            search.no_line += 1;
-            continue;
-        };
-        if !carriage_place(spec, c, flap_chord) {
-            search.carriage_off_bracket += 1;
-            continue;
+        match carriage(spec, slope, flap_chord) {
+            Ok(pair) => found.push(pair),
+            Err(Rejection::NoLine) => search.no_line += 1,
+            Err(Rejection::OffBracket) => search.carriage_off_bracket += 1,
+            Err(Rejection::Order) => search.order_defect += 1,
         }
-        let travel = positions.map(|p| d.dot(&(p.flap * c - c)));
-        if !(travel[0] > 0.0 && travel[1] > travel[0]) {
-            search.order_defect += 1;
-            continue;
-        }
-        found.push((d, c));
     }
     found
+}
+
+/// Why a track slope or a fixed pivot gives no candidate.
+pub(super) enum Rejection {
+    /// The linear equations are singular.
+    NoLine,
+    /// The point is not where a bracket can hold it (or the pivot not where a support can).
+    OffBracket,
+    /// The carriage does not run aft in order.
+    Order,
+}
+
+/// The carriage of track slope `slope` (rad): its direction and point, if the point can sit
+/// on the flap and runs along the track to take-off and further to landing.
+pub(super) fn carriage(
+    spec: &LinkTrackSpec,
+    slope: f64,
+    flap_chord: f64,
+) -> Result<(Unit<Vector2<f64>>, Point2<f64>), Rejection> {
+    let positions = [spec.takeoff, spec.landing];
+    let d = super::track_direction(slope);
+    let c = carriage_point(&positions, d.into_inner()).ok_or(Rejection::NoLine)?;
+    if !carriage_place(spec, c, flap_chord) {
+        return Err(Rejection::OffBracket);
+    }
+    let travel = positions.map(|p| d.dot(&(p.flap * c - c)));
+    if !(travel[0] > 0.0 && travel[1] > travel[0]) {
+        return Err(Rejection::Order);
+    }
+    Ok((d, c))
+}
+
+/// The link of fixed pivot `o`: the pivot and its flap point, if the pivot lies below the
+/// wing or in the trailing-edge bay and the flap point on a bracket under the flap or
+/// ahead of its nose.
+pub(super) fn link(
+    spec: &LinkTrackSpec,
+    o: Point2<f64>,
+    flap_chord: f64,
+) -> Result<(Point2<f64>, Point2<f64>), Rejection> {
+    let outline = &spec.outline;
+    let below = !outline.wing.inside(o) && outline.lower_envelope(o.x).is_none_or(|y| o.y < y);
+    if !(below || on_web(outline, o)) {
+        return Err(Rejection::OffBracket);
+    }
+    match link_point(&[spec.takeoff, spec.landing], o) {
+        Some(a) if on_bracket(spec, a, flap_chord) => Ok((o, a)),
+        Some(_) => Err(Rejection::OffBracket),
+        None => Err(Rejection::NoLine),
+    }
 }
 
 /// Fixed-pivot candidates with their link points: the given pivot, or a grid below the
@@ -201,7 +241,6 @@ pub(super) fn links(
     search: &mut LinkTrackSearch,
     flap_chord: f64,
 ) -> Vec<(Point2<f64>, Point2<f64>)> {
-    let positions = [spec.takeoff, spec.landing];
     let outline = &spec.outline;
     let pivots: Vec<Point2<f64>> = match spec.link_pivot {
         Some(o) => vec![o],
@@ -257,15 +296,10 @@ pub(super) fn links(
     let mut found = Vec::new();
     for o in pivots {
         search.pivots += 1;
-        let below = !outline.wing.inside(o) && outline.lower_envelope(o.x).is_none_or(|y| o.y < y);
-        if !(below || on_web(outline, o)) {
-            search.pivot_outside_region += 1;
-            continue;
-        }
-        match link_point(&positions, o) {
-            Some(a) if on_bracket(spec, a, flap_chord) => found.push((o, a)),
-            Some(_) => search.pivot_outside_region += 1,
-            None => search.no_line += 1,
+        match link(spec, o, flap_chord) {
+            Ok(pair) => found.push(pair),
+            Err(Rejection::NoLine) => search.no_line += 1,
+            Err(_) => search.pivot_outside_region += 1,
         }
     }
     found
@@ -413,4 +447,80 @@ pub(super) fn check(
         depth,
         cost,
     })
+}
+
+/// Steps of the refinement: it halves its steps this many times at most.
+const REFINEMENTS: usize = 6;
+
+/// Grid candidates refined, the least costly of each basin (see [`refine_best`]).
+const REFINED_STARTS: usize = 6;
+
+/// The least costly mechanism after refining the [`REFINED_STARTS`] least costly grid
+/// candidates that lie apart (pivots a tenth of the flap chord or track slopes 5 deg
+/// apart): the cost over the free choices has several basins, and the grid's best basin
+/// need not hold the best refined mechanism. `None` without a feasible candidate.
+pub(super) fn refine_best(spec: &LinkTrackSpec, mut feasible: Vec<Found>, flap_chord: f64) -> Option<Found> {
+    feasible.sort_by(|a, b| a.cost.total_cmp(&b.cost));
+    let mut starts: Vec<Found> = Vec::new();
+    for found in feasible {
+        let apart = starts.iter().all(|s: &Found| {
+            (s.loop_.o - found.loop_.o).norm() > 0.1 * flap_chord || s.loop_.d.angle(&found.loop_.d) > 5f64.to_radians()
+        });
+        if apart {
+            starts.push(found);
+            if starts.len() == REFINED_STARTS {
+                break;
+            }
+        }
+    }
+    starts
+        .into_iter()
+        .map(|start| refine(spec, start, flap_chord))
+        .min_by(|a, b| a.cost.total_cmp(&b.cost))
+}
+
+/// The best grid candidate refined by a compass search over the free choices (the fixed
+/// pivot's two coordinates and the track's slope, each only when searched): a step either
+/// way along each is kept when its candidate is feasible and costs less; the steps halve
+/// when none is, [`REFINEMENTS`] times. The grid's coarse steps make the chosen mechanism
+/// jump between neighbouring inputs (a 0.2 deg change of the landing deflection moved the
+/// transport's `ob-inner` link from 184 to 11 kN m); refined, it follows its inputs.
+pub(super) fn refine(spec: &LinkTrackSpec, best: Found, flap_chord: f64) -> Found {
+    let l = &best.loop_;
+    let mut x = [l.o.x, l.o.y, (-l.d.y).atan2(-l.d.x)];
+    let free = [
+        spec.link_pivot.is_none(),
+        spec.link_pivot.is_none(),
+        spec.track_slope_rad.is_none(),
+    ];
+    let mut steps = [0.05 * flap_chord, 0.05 * flap_chord, 1.25f64.to_radians()];
+    let mut best = best;
+    let evaluate = |x: [f64; 3]| -> Option<Found> {
+        let pivot = link(spec, Point2::new(x[0], x[1]), flap_chord).ok()?;
+        let track = carriage(spec, x[2], flap_chord).ok()?;
+        check(spec, pivot, track).ok()
+    };
+    for _ in 0..REFINEMENTS {
+        loop {
+            let mut improved = false;
+            for axis in (0..3).filter(|&k| free[k]) {
+                for sign in [-1.0, 1.0] {
+                    let mut trial = x;
+                    trial[axis] += sign * steps[axis];
+                    if let Some(found) = evaluate(trial) {
+                        if found.cost < best.cost {
+                            best = found;
+                            x = trial;
+                            improved = true;
+                        }
+                    }
+                }
+            }
+            if !improved {
+                break;
+            }
+        }
+        steps = steps.map(|step| 0.5 * step);
+    }
+    best
 }

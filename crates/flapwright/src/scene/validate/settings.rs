@@ -73,6 +73,14 @@ impl Checker<'_> {
     }
 
     pub(super) fn interference(&mut self, scene: &Scene) {
+        // 10 reference loads outweigh any fairing: beyond it the depth no longer counts.
+        self.in_range(
+            "design.actuator_load_weight",
+            scene.design.actuator_load_weight,
+            0.0,
+            10.0,
+            false,
+        );
         let interference = &scene.interference;
         self.in_range(
             "interference.required_clearance_m",

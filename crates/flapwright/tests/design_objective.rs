@@ -1,0 +1,77 @@
+//! `[design] actuator_load_weight` (issue 37): the searches weigh the actuator's load under
+//! the station's load cases against the fairing's depth; 0 gives back the shallowest.
+
+use flapwright::pipeline::{design, Inputs, Mode};
+use flapwright::scene::{NoFiles, Scene};
+use flapwright::MemorySink;
+
+const TRANSPORT: &str = include_str!("../../../data/scenes/transport-flap.toml");
+
+/// The transport scene with a link-track at `ob-inner` (its first dropped hinge) and the
+/// given `[design]` table.
+fn link_track_at_ob_inner(design_table: &str) -> String {
+    let text = TRANSPORT.replacen("kind = \"dropped-hinge\"", "kind = \"link-track\"", 1);
+    assert_ne!(text, TRANSPORT, "the transport scene has a dropped hinge at ob-inner");
+    format!("{text}\n{design_table}")
+}
+
+/// The link's rotation to landing (rad) and the depth below the sections (m) that
+/// synthesis chose at `ob-inner`.
+fn ob_inner_link(text: &str) -> (f64, f64) {
+    let scene = Scene::from_toml(text, &NoFiles).expect("a valid scene");
+    let inputs = Inputs {
+        scene: &scene,
+        scene_text: text,
+        files: &NoFiles,
+        wing_cache: None,
+    };
+    let outcome = design(&inputs, Mode::Design, &MemorySink::new()).expect("designs");
+    let station = outcome
+        .report
+        .stations
+        .iter()
+        .find(|s| s.name == "ob-inner")
+        .expect("ob-inner");
+    let details = &station.mechanism.as_ref().expect("a mechanism").details;
+    let synthesis = &details["synthesis"];
+    (
+        synthesis["link_rotation_rad"][1].as_f64().expect("link rotation").abs(),
+        synthesis["depth_below_section_m"].as_f64().expect("depth"),
+    )
+}
+
+#[test]
+fn weighed_by_its_load_the_link_turns_further_than_the_shallowest_link() {
+    let (shallowest_turn, shallowest_depth) =
+        ob_inner_link(&link_track_at_ob_inner("[design]\nactuator_load_weight = 0.0\n"));
+    let (weighed_turn, weighed_depth) = ob_inner_link(&link_track_at_ob_inner(""));
+    // The shallowest link turns 16 deg to the flap's 35: it needed 212 kN m (issue 37).
+    assert!(shallowest_turn.to_degrees() < 20.0, "{}", shallowest_turn.to_degrees());
+    // Weighed, the link turns at least twice as far (the torque falls about as much) for a
+    // fairing no more than a tenth of the flap chord (1.77 m) deeper.
+    assert!(
+        weighed_turn >= 2.0 * shallowest_turn,
+        "{weighed_turn} against {shallowest_turn}"
+    );
+    assert!(weighed_depth >= shallowest_depth - 1e-12);
+    assert!(
+        weighed_depth - shallowest_depth <= 0.177,
+        "{weighed_depth} against {shallowest_depth}"
+    );
+}
+
+#[test]
+fn a_load_weight_out_of_range_is_refused_by_key_and_line() {
+    let text = link_track_at_ob_inner("[design]\nactuator_load_weight = 11.0\n");
+    let error = Scene::from_toml(&text, &NoFiles)
+        .expect_err("11 is out of range")
+        .to_string();
+    assert!(error.contains("design.actuator_load_weight"), "{error}");
+    let line = text
+        .lines()
+        .position(|l| l.starts_with("actuator_load_weight"))
+        .unwrap()
+        + 1;
+    assert!(error.contains(&format!("{line}:")), "line {line}: {error}");
+    assert!(error.contains("10"), "the allowed range: {error}");
+}

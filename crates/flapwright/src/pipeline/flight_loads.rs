@@ -13,13 +13,13 @@
 //! share acts at its own quarter-chord point (the moment the elements' quarter-chord line
 //! makes about the station's, over a tapered flap, is not carried across).
 
-use anyhow::{Context, Result};
 use flapwright_geom::parts::WingModel;
 use flapwright_mechanism::shared::outline::{extent_x, vertical_span};
 use flapwright_mechanism::{ExternalMoment, FlapNormalForce, LoadCase};
 use flapwright_sizing::{distribute_to_stations, ElementLoad};
 use nalgebra::{Point2, Vector2};
 
+use crate::error::{Error, Result};
 use crate::pipeline::record::{FlapLoadShare, StationRecord};
 use crate::scene::{LoadCaseScene, Scene};
 
@@ -60,7 +60,10 @@ pub fn shares(scene: &Scene, model: &WingModel, records: &mut [StationRecord]) -
             _ => {
                 let positions: Vec<f64> = stations.iter().map(|s| s.1).collect();
                 distribute_to_stations(&elements, &positions)
-                    .with_context(|| format!("sharing flap {name}'s load among its stations"))?
+                    .map_err(|source| Error::SharingLoad {
+                        flap: name.clone(),
+                        source,
+                    })?
                     .iter()
                     .map(|s| s.normal_force_n)
                     .collect()
@@ -68,12 +71,18 @@ pub fn shares(scene: &Scene, model: &WingModel, records: &mut [StationRecord]) -
         };
         for (&(i, _), share) in stations.iter().zip(areas) {
             let record = &mut records[i];
-            let placed = record.placed.as_ref().context("station not placed")?;
+            let placed = record.placed.as_ref().ok_or_else(|| Error::LoadStationNotPlaced {
+                station: record.station.clone(),
+            })?;
             let polygons = placed.flap_polygons(name);
-            let (te, le) = extent_x(&polygons).context("the station plane misses its flap")?;
+            let misses = || Error::PlaneMissesFlap {
+                station: record.station.clone(),
+                flap: name.clone(),
+            };
+            let (te, le) = extent_x(&polygons).ok_or_else(misses)?;
             let x = le - 0.25 * (le - te);
-            let (lo, hi) = vertical_span(&polygons, x).context("the station plane misses its flap")?;
-            let normal = chord_normal(&polygons).context("the station plane misses its flap")?;
+            let (lo, hi) = vertical_span(&polygons, x).ok_or_else(misses)?;
+            let normal = chord_normal(&polygons).ok_or_else(misses)?;
             record.flap_load_share = Some(FlapLoadShare {
                 flap_area_share_m2: share,
                 quarter_chord_st_m: [x, 0.5 * (lo + hi)],

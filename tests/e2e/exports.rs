@@ -22,7 +22,7 @@ fn export_writes_a_valid_urdf_with_its_meshes_and_drawings() {
     let xml = std::fs::read_to_string(out.join(urdf_file)).unwrap();
     assert!(xml.starts_with("<?xml"), "XML declaration");
     let robot = urdf_rs::read_from_string(&xml).expect("urdf-rs reads the file back");
-    let violations = flapwright_mechanism::urdf::check_rules(&robot);
+    let violations = flapwright_urdf::check_rules(&robot);
     assert!(violations.is_empty(), "URDF rules: {violations:?}");
     // Every mesh the URDF names is a file beside it.
     for link in &robot.links {

@@ -544,7 +544,7 @@ fn link_tracks_are_synthesised_checked_and_exported() {
     let urdf = report["files"]["urdf"]["file"].as_str().unwrap();
     let xml = std::fs::read_to_string(dir.path().join("out").join(urdf)).unwrap();
     let robot = urdf_rs::read_from_string(&xml).expect("urdf-rs reads the file back");
-    assert!(flapwright_mechanism::urdf::check_rules(&robot).is_empty());
+    assert!(flapwright_urdf::check_rules(&robot).is_empty());
     assert!(
         robot.links.iter().any(|l| l.name == "ob-inner_link"),
         "the link is a URDF link"
@@ -589,7 +589,7 @@ fn hooked_tracks_are_synthesised_checked_and_exported() {
     let urdf = report["files"]["urdf"]["file"].as_str().unwrap();
     let xml = std::fs::read_to_string(dir.path().join("out").join(urdf)).unwrap();
     let robot = urdf_rs::read_from_string(&xml).expect("urdf-rs reads the file back");
-    assert!(flapwright_mechanism::urdf::check_rules(&robot).is_empty());
+    assert!(flapwright_urdf::check_rules(&robot).is_empty());
     assert!(robot
         .joints
         .iter()

@@ -123,7 +123,7 @@ fn the_aft_element_is_a_part_checked_drawn_and_measured_in_its_own_slot() {
     // URDF: the aft element's link hangs fixed off the secondary flap's link.
     let xml = std::fs::read_to_string(out.join(report["files"]["urdf"]["file"].as_str().unwrap())).unwrap();
     let robot = urdf_rs::read_from_string(&xml).expect("urdf-rs reads the file back");
-    assert!(flapwright_mechanism::urdf::check_rules(&robot).is_empty());
+    assert!(flapwright_urdf::check_rules(&robot).is_empty());
     assert!(robot.links.iter().any(|l| l.name == "flap-aft"));
     let mount = robot
         .joints

@@ -10,8 +10,9 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use flapwright_dynamics::{integrate, required_drive, Drive, Integration, Method, SmoothStart, SupplyVoltage};
 use flapwright_dynamics::{DcMotor, Gearbox};
+use flapwright_kinds::{CircularArcTrack, CircularArcTrackSpec, LoadedFiveBar};
 use flapwright_mechanism::seam::FlapMechanism;
-use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec, LoadCase, LoadedFiveBar, RigidFlapDynamics};
+use flapwright_mechanism::{LoadCase, RigidFlapDynamics};
 
 fn deployment(c: &mut Criterion) {
     let system = LoadedFiveBar::polimi_case_study().expect("assembles");

@@ -12,7 +12,7 @@ use std::time::Instant;
 use flapwright_dynamics::{
     integrate, required_drive, Drive, DynamicsRun, Integration, Method, SmoothStart, SupplyVoltage,
 };
-use flapwright_mechanism::LoadedFiveBar;
+use flapwright_kinds::LoadedFiveBar;
 
 fn input_at(run: &DynamicsRun, time_s: f64) -> f64 {
     let samples = &run.samples;

@@ -6,7 +6,7 @@ use flapwright_dynamics::{
     integrate, required_drive, Drive, DynamicsRun, Error, Integration, Method, SmoothStart, SupplyVoltage,
     MAX_TIME_HISTORY_SAMPLES,
 };
-use flapwright_mechanism::LoadedFiveBar;
+use flapwright_kinds::LoadedFiveBar;
 
 fn five_bar() -> LoadedFiveBar {
     LoadedFiveBar::polimi_case_study().expect("the 001 data assembles")

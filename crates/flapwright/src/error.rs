@@ -182,12 +182,6 @@ pub enum Error {
         /// The station's name.
         station: String,
     },
-    /// The flight loads met a station without a plane.
-    #[error("station not placed")]
-    LoadStationNotPlaced {
-        /// The station's name.
-        station: String,
-    },
     /// The station plane's construction on the hinge axis failed.
     #[error("placing station {station}")]
     PlacingStation {
@@ -530,6 +524,9 @@ pub enum Error {
     /// From `flapwright-gltf`.
     #[error(transparent)]
     Gltf(#[from] flapwright_gltf::Error),
+    /// From `flapwright-urdf`.
+    #[error(transparent)]
+    Urdf(#[from] flapwright_urdf::Error),
     /// A JSON file (the URDF's trajectory) could not be serialised.
     #[error(transparent)]
     Json(#[from] serde_json::Error),

@@ -158,16 +158,15 @@ pub fn design_with_progress(
         wing_model = Some(model);
     }
     // After the planes: kinds synthesised from the flap settings need the sections.
-    let mut records = stages.run("synthesis", || mechanisms::synthesise_all(scene, placed))?;
+    let mut records = stages.run("synthesis", || {
+        mechanisms::synthesise_all(scene, wing_model.as_ref(), placed)
+    })?;
     warnings.extend(mechanisms::flap_agreement(&records));
-    if let Some(model) = &wing_model {
+    if wing_model.is_some() {
         stations::attachment_residuals(&mut records)?;
         let implausible = plausibility::station_problems(scene, &records);
         if !implausible.is_empty() {
             return Err(crate::scene::SceneError::Invalid(implausible).into());
-        }
-        if scene.loads.cases.iter().any(|c| c.is_flight_condition()) {
-            flight_loads::shares(scene, model, &mut records)?;
         }
         // A design reports gap and overlap; an export needs them for the sweeps' samples
         // and the drawings' plots only.

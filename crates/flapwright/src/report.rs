@@ -4,7 +4,7 @@
 //! gives byte-identical reports apart from that one section.
 
 use flapwright_mechanism::seam::BodyRole;
-use flapwright_mechanism::urdf::CutJoint;
+use flapwright_urdf::CutJoint;
 use serde::Serialize;
 
 /// Version of the report schema; bumped on any incompatible change.

@@ -4,7 +4,8 @@
 use std::sync::Arc;
 
 use flapwright_interference::{planar_parts, station_parts, PlanarCapsule, StationParts};
-use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec, FlapMechanism};
+use flapwright_kinds::{CircularArcTrack, CircularArcTrackSpec};
+use flapwright_mechanism::FlapMechanism;
 use nalgebra::{Isometry3, Point2, Point3, Vector2};
 
 fn thesis_parts() -> (Arc<dyn FlapMechanism>, StationParts) {

@@ -8,7 +8,8 @@ use flapwright_geom::collision::{compute_distance, CollisionShape};
 use flapwright_interference::{
     flap_part, station_parts, sweep_pair, FittedFlapMotion, FlapCarrier, FlapElement, Motion, Part, SweepSettings,
 };
-use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec, FlapMechanism};
+use flapwright_kinds::{CircularArcTrack, CircularArcTrackSpec};
+use flapwright_mechanism::FlapMechanism;
 use nalgebra::{Isometry3, Point2, Point3, Vector3};
 
 use crate::TurnAboutZ;

@@ -5,10 +5,11 @@
 use std::sync::Arc;
 
 use flapwright_interference::{check_assembly, station_parts, Assembly, Requirements, SweepSettings};
+use flapwright_kinds::{CircularArcTrack, CircularArcTrackSpec};
 use flapwright_mechanism::seam::{
     Actuator, Body, DrawingNotes, FlapMechanism, InputRange, Joint, Kinetostatics, MechanismPose, NamedPoint,
 };
-use flapwright_mechanism::{CircularArcTrack, CircularArcTrackSpec, LoadCase, Result};
+use flapwright_mechanism::{LoadCase, Result};
 use nalgebra::Isometry3;
 
 /// The thesis track with the spanwise offsets a designer typed: every solid in the

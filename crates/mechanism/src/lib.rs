@@ -1,6 +1,7 @@
-//! Planar flap mechanisms behind one seam: six kinds, each synthesised for a station from
-//! the designer's choices or the flap settings, with kinematics, kinetostatics, members to
-//! size, a URDF model and the equation of motion.
+//! The seam of Flapwright's planar flap mechanisms and the toolbox its kinds share: what
+//! every stage sees of a mechanism, whatever its kind. The six kinds themselves live in
+//! `flapwright-kinds`, one module each; interference, sizing, dynamics, URDF, glTF and
+//! drawings depend on this crate alone, so a change inside a kind does not rebuild them.
 //!
 //! # Overview
 //!
@@ -9,17 +10,6 @@
 //!   certified speed bounds, joints by name, kinetostatics, the actuator, members); the
 //!   plain data it returns ([`seam::Body`], [`seam::MechanismPose`], [`seam::Kinetostatics`],
 //!   [`seam::Actuator`]) is written in roles and actuator types, never in kinds.
-//! - [`kinds`]: one folder per kind, each implementing the seam and naming no other kind:
-//!   - [`kinds::circular_arc_track`]: the circular-arc track with screw jack of Arslan
-//!     (2022, thesis `000_...`), its published case, synthesis (design steps 7-10),
-//!     closed-form kinematics and forces ([`CircularArcTrack`], [`CircularArcTrackSpec`]);
-//!   - [`kinds::dropped_hinge`], [`kinds::four_bar`], [`kinds::link_track`],
-//!     [`kinds::hooked_track`]: the four kinds of Zaccai, Bertels & Vos (`003_...`),
-//!     synthesised from precision positions ([`DroppedHinge`], [`FourBar`], [`LinkTrack`],
-//!     [`HookedTrack`]);
-//!   - [`kinds::five_bar`]: the five-bar double-slotted flap of `001_...` in closed form
-//!     (three RRR dyads) with every derivative to third order ([`FiveBarDoubleFlap`],
-//!     behind the seam as [`FiveBarKind`]).
 //! - [`shared`]: the toolbox the kinds share (its module table says why each sits there):
 //!   the load case ([`LoadCase`]) and the flap's wrench ([`shared::flap_load`]), planar
 //!   geometry helpers, the inverted slider-crank ([`InvertedSliderCrank`]) and the rocker
@@ -42,8 +32,6 @@
 //!   uses it; the thesis track rebuilt in it agrees with the closed form to 1e-9.
 //! - [`landing_gear`]: the inverted slider-crank synthesised by the landing-gear method of
 //!   Yastrebov & Polyushkova (1982, doc `004_...`), kept for the next design issue.
-//! - [`urdf`]: the URDF model of a wing's posed mechanisms, its trajectory file and a check
-//!   of the URDF rules (the crate's only use of urdf-rs).
 //! - [`Error`]: the crate's one error type; synthesis defects name the condition
 //!   ([`SynthesisDefect`]).
 //!
@@ -89,13 +77,12 @@
 //! - G12G and G12F are signed radial reactions along θG, θF; negative values mean the
 //!   reaction points towards the hinge.
 //! - Sweeps never return NaN: they stop at the first failing input and report it
-//!   ([`Sweep::stopped`], [`Deployment::stopped`]).
+//!   (the track's `Sweep::stopped` in `flapwright-kinds`, [`Deployment::stopped`]).
 
 mod deployment;
 mod error;
 pub mod generalised;
 pub mod jet;
-pub mod kinds;
 pub mod landing_gear;
 pub mod planar;
 mod planar_solve;
@@ -103,24 +90,12 @@ pub mod rigid_flap;
 pub mod seam;
 pub mod shared;
 pub mod spanwise;
-pub mod urdf;
 
 pub use deployment::{
     sweep_deployment, AftElementSample, Deployment, DeploymentSample, DeploymentStop, FlapGapOverlap,
 };
 pub use error::{Error, Result, SynthesisDefect};
 pub use generalised::{generalise, AeroSurface, Generalised, InertialBody, OneInputDynamics};
-pub use kinds::circular_arc_track::{
-    screw_outer_radius_m, CircularArcTrack, CircularArcTrackSpec, Forces, JointReactions, PointKinematics, Pose,
-    PoseDiagnostics, Sweep, SweepSample, SweepStop, SynthesisWarning, TrackHardware, TrackSynthesis,
-};
-pub use kinds::dropped_hinge::{DroppedHinge, DroppedHingeActuator, DroppedHingeSpec};
-pub use kinds::five_bar::{
-    DoubleFlapLoads, FiveBarDimensions, FiveBarDoubleFlap, FiveBarKind, FiveBarPose, LoadedFiveBar,
-};
-pub use kinds::four_bar::{FourBar, FourBarSpec};
-pub use kinds::hooked_track::{HookedTrack, HookedTrackSpec};
-pub use kinds::link_track::{LinkTrack, LinkTrackSpec};
 pub use planar_solve::PlanarSolution;
 pub use rigid_flap::RigidFlapDynamics;
 pub use seam::FlapMechanism;

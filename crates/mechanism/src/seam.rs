@@ -1,7 +1,7 @@
 //! The mechanism seam: what every stage outside this crate sees of a mechanism kind.
 //!
-//! A kind (circular-arc track with screw jack, dropped hinge, four-bar, ...) is one folder
-//! of [`crate::kinds`] that implements [`FlapMechanism`]; interference, fairing, URDF and
+//! A kind (circular-arc track with screw jack, dropped hinge, four-bar, ...) is one module
+//! of the `flapwright-kinds` crate that implements [`FlapMechanism`]; interference, fairing, URDF and
 //! trajectory, drawings, plots, sizing and the report consume only this trait and the plain
 //! data below, as parry's queries see a `Shape`. A new kind touches its own module and the
 //! scene's kind enum, nothing that names another kind.

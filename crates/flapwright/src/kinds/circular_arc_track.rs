@@ -3,9 +3,8 @@
 
 use std::sync::Arc;
 
-use flapwright_mechanism::{
-    CircularArcTrack, CircularArcTrackSpec, FlapMechanism, ScrewJack, TrackHardware, DEFAULT_TOGGLE_TOLERANCE_RAD,
-};
+use flapwright_kinds::{CircularArcTrack, CircularArcTrackSpec, TrackHardware};
+use flapwright_mechanism::{FlapMechanism, ScrewJack, DEFAULT_TOGGLE_TOLERANCE_RAD};
 use nalgebra::Point2;
 use serde::Deserialize;
 

@@ -3,7 +3,8 @@
 
 use std::sync::Arc;
 
-use flapwright_mechanism::{DroppedHinge, DroppedHingeActuator, DroppedHingeSpec, FlapMechanism};
+use flapwright_kinds::{DroppedHinge, DroppedHingeActuator, DroppedHingeSpec};
+use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
 use serde::Deserialize;
 
@@ -61,6 +62,10 @@ fn point(p: [f64; 2]) -> Point2<f64> {
 }
 
 impl KindScene for DroppedHingeScene {
+    fn gives_actuator_mount(&self) -> bool {
+        self.actuator_mount_m.is_some()
+    }
+
     fn check(&self, checker: &mut dyn KeyChecker, path: &str) {
         check_synthesised(
             checker,

@@ -6,9 +6,8 @@
 
 use std::sync::Arc;
 
-use flapwright_mechanism::{
-    DoubleFlapLoads, FiveBarDimensions, FiveBarDoubleFlap, FiveBarKind, FlapMechanism, LoadedFiveBar,
-};
+use flapwright_kinds::{DoubleFlapLoads, FiveBarDimensions, FiveBarDoubleFlap, FiveBarKind, LoadedFiveBar};
+use flapwright_mechanism::FlapMechanism;
 use serde::Deserialize;
 
 use super::{KindScene, RotaryDriveScene, SynthesisContext, GRAVITY_MPS2};

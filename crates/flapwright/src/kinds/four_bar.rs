@@ -4,8 +4,9 @@
 
 use std::sync::Arc;
 
-use flapwright_mechanism::kinds::four_bar::FollowStation;
-use flapwright_mechanism::{FlapMechanism, FourBar, FourBarSpec};
+use flapwright_kinds::four_bar::FollowStation;
+use flapwright_kinds::{FourBar, FourBarSpec};
+use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
 use serde::Deserialize;
 
@@ -44,6 +45,10 @@ fn point(p: [f64; 2]) -> Point2<f64> {
 }
 
 impl KindScene for FourBarScene {
+    fn gives_actuator_mount(&self) -> bool {
+        self.actuator_mount_m.is_some()
+    }
+
     fn check(&self, checker: &mut dyn KeyChecker, path: &str) {
         check_synthesised(
             checker,

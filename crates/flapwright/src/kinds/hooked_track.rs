@@ -4,7 +4,8 @@
 
 use std::sync::Arc;
 
-use flapwright_mechanism::{FlapMechanism, HookedTrack, HookedTrackSpec};
+use flapwright_kinds::{HookedTrack, HookedTrackSpec};
+use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
 use serde::Deserialize;
 

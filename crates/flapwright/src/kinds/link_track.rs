@@ -4,7 +4,8 @@
 
 use std::sync::Arc;
 
-use flapwright_mechanism::{FlapMechanism, LinkTrack, LinkTrackSpec};
+use flapwright_kinds::{LinkTrack, LinkTrackSpec};
+use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
 use serde::Deserialize;
 
@@ -87,6 +88,7 @@ impl KindScene for LinkTrackScene {
             rotary: self.rotary.drive(),
             hardware: flap.hardware,
             outline: flap.outline.clone(),
+            design_loads: context.design_loads.clone(),
         };
         LinkTrack::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)

@@ -45,6 +45,10 @@ pub struct SynthesisContext {
     /// from them, so that the stations of one rigid flap move it alike (two four-bars
     /// searched apart move it on paths centimetres apart between the settings).
     pub companion: Option<Companion>,
+    /// The scene's load cases at this station (its share of its flap's flight load; the
+    /// flap's weight alone when the scene gives none): the searches weigh the actuator's
+    /// load under them.
+    pub design_loads: Vec<flapwright_mechanism::LoadCase>,
 }
 
 /// See [`SynthesisContext::companion`].
@@ -330,6 +334,12 @@ pub trait KindScene {
     fn models_own_dynamics(&self) -> bool {
         false
     }
+
+    /// True when the scene gives the actuator's mount (`actuator_mount_m`), so a message
+    /// about how the actuator runs names that key rather than the whole mechanism.
+    fn gives_actuator_mount(&self) -> bool {
+        false
+    }
 }
 
 /// `[station.mechanism]`: `kind` picks the variant, the other keys are its dimensions.
@@ -398,13 +408,13 @@ impl<'de> Deserialize<'de> for MechanismScene {
         let kind = match table.remove("kind") {
             Some(toml::Value::String(kind)) => kind,
             Some(other) => {
-                return Err(D::Error::custom(crate::scene::parse::deciding_error_at(
+                return Err(D::Error::custom(crate::scene::nested_error::deciding_error_at(
                     "kind",
                     &format!("= {other}: must be a string, one of {}", Self::KINDS.join(", ")),
                 )))
             }
             None => {
-                return Err(D::Error::custom(crate::scene::parse::deciding_error_at(
+                return Err(D::Error::custom(crate::scene::nested_error::deciding_error_at(
                     "kind",
                     &format!("missing: this key is required, one of {}", Self::KINDS.join(", ")),
                 )))
@@ -412,7 +422,7 @@ impl<'de> Deserialize<'de> for MechanismScene {
         };
         fn variant<T: serde::de::DeserializeOwned, E: Error>(table: toml::Table) -> Result<T, E> {
             serde_path_to_error::deserialize(toml::Value::Table(table))
-                .map_err(|e| E::custom(crate::scene::parse::nested_error(e.path(), e.inner().message())))
+                .map_err(|e| E::custom(crate::scene::nested_error::nested_error(e.path(), e.inner().message())))
         }
         match kind.as_str() {
             "circular-arc-track" => variant::<_, D::Error>(table).map(Self::CircularArcTrack),
@@ -421,7 +431,7 @@ impl<'de> Deserialize<'de> for MechanismScene {
             "link-track" => variant::<_, D::Error>(table).map(Self::LinkTrack),
             "hooked-track" => variant::<_, D::Error>(table).map(Self::HookedTrack),
             "five-bar" => variant::<_, D::Error>(table).map(Self::FiveBar),
-            other => Err(D::Error::custom(crate::scene::parse::deciding_error_at(
+            other => Err(D::Error::custom(crate::scene::nested_error::deciding_error_at(
                 "kind",
                 &format!(
                     "= \"{other}\": unknown mechanism kind; one of {}",

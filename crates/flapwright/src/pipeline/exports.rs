@@ -8,10 +8,10 @@ use flapwright_drawing::{
 use flapwright_geom::CollisionShape;
 use flapwright_interference::{FairingDepth, InterferenceReport};
 use flapwright_mechanism::seam::BodyRole;
-use flapwright_mechanism::urdf::{
+use flapwright_mechanism::FlapMechanism;
+use flapwright_urdf::{
     build_robot, to_xml, trajectory, AftElementLink, BaseLink, BodyGeometry, MeshRef, RigidInertia, StationMechanism3d,
 };
-use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
 
 use crate::error::{Error, Result};

@@ -20,7 +20,7 @@ use flapwright_sizing::{distribute_to_stations, ElementLoad};
 use nalgebra::{Point2, Vector2};
 
 use crate::error::{Error, Result};
-use crate::pipeline::record::{FlapLoadShare, StationRecord};
+use crate::pipeline::record::{FlapLoadShare, PlacedStation, StationRecord};
 use crate::scene::{LoadCaseScene, Scene};
 
 /// Spanwise elements of a flap: the midpoint rule's error on a flap chord that varies
@@ -30,6 +30,25 @@ pub const FLAP_ELEMENTS: usize = 40;
 
 /// Each placed record's share of its flap's area and the point its share acts at.
 pub fn shares(scene: &Scene, model: &WingModel, records: &mut [StationRecord]) -> Result<()> {
+    let stations: Vec<(Option<&str>, Option<&PlacedStation>)> =
+        records.iter().map(|r| (r.flap.as_deref(), r.placed.as_ref())).collect();
+    let found = station_shares(scene, model, &stations)?;
+    for (record, share) in records.iter_mut().zip(found) {
+        if share.is_some() {
+            record.flap_load_share = share;
+        }
+    }
+    Ok(())
+}
+
+/// The share of its flap's area that each station (its flap's name and its placed plane)
+/// carries and the point the share acts at; `None` for a station without a flap or plane.
+pub fn station_shares(
+    scene: &Scene,
+    model: &WingModel,
+    stations: &[(Option<&str>, Option<&PlacedStation>)],
+) -> Result<Vec<Option<FlapLoadShare>>> {
+    let mut found = vec![None; stations.len()];
     for (f, flap) in model.flaps().iter().enumerate() {
         let name = &scene.flap[f].name;
         let (y_in, y_out) = flap.body_span_m(model.wing())?;
@@ -46,19 +65,19 @@ pub fn shares(scene: &Scene, model: &WingModel, records: &mut [StationRecord]) -
                 })
             })
             .collect::<Result<Vec<_>>>()?;
-        let mut stations: Vec<(usize, f64)> = records
+        let mut carriers: Vec<(usize, &PlacedStation, f64)> = stations
             .iter()
             .enumerate()
-            .filter(|(_, r)| r.flap.as_ref() == Some(name))
-            .filter_map(|(i, r)| Some((i, r.placed.as_ref()?.station.frame.origin_ac().y)))
+            .filter(|(_, (flap, _))| *flap == Some(name.as_str()))
+            .filter_map(|(i, (_, placed))| placed.map(|p| (i, p, p.station.frame.origin_ac().y)))
             .collect();
-        stations.sort_by(|a, b| a.1.total_cmp(&b.1));
+        carriers.sort_by(|a, b| a.2.total_cmp(&b.2));
         let area: f64 = elements.iter().map(|e| e.normal_force_n).sum();
-        let areas: Vec<f64> = match stations.len() {
+        let areas: Vec<f64> = match carriers.len() {
             0 => continue,
             1 => vec![area],
             _ => {
-                let positions: Vec<f64> = stations.iter().map(|s| s.1).collect();
+                let positions: Vec<f64> = carriers.iter().map(|s| s.2).collect();
                 distribute_to_stations(&elements, &positions)
                     .map_err(|source| Error::SharingLoad {
                         flap: name.clone(),
@@ -69,28 +88,24 @@ pub fn shares(scene: &Scene, model: &WingModel, records: &mut [StationRecord]) -
                     .collect()
             }
         };
-        for (&(i, _), share) in stations.iter().zip(areas) {
-            let record = &mut records[i];
-            let placed = record.placed.as_ref().ok_or_else(|| Error::LoadStationNotPlaced {
-                station: record.station.clone(),
-            })?;
+        for (&(i, placed, _), share) in carriers.iter().zip(areas) {
             let polygons = placed.flap_polygons(name);
             let misses = || Error::PlaneMissesFlap {
-                station: record.station.clone(),
+                station: placed.station.name.clone(),
                 flap: name.clone(),
             };
             let (te, le) = extent_x(&polygons).ok_or_else(misses)?;
             let x = le - 0.25 * (le - te);
             let (lo, hi) = vertical_span(&polygons, x).ok_or_else(misses)?;
             let normal = chord_normal(&polygons).ok_or_else(misses)?;
-            record.flap_load_share = Some(FlapLoadShare {
+            found[i] = Some(FlapLoadShare {
                 flap_area_share_m2: share,
                 quarter_chord_st_m: [x, 0.5 * (lo + hi)],
                 chord_normal_st: [normal.x, normal.y],
             });
         }
     }
-    Ok(())
+    Ok(found)
 }
 
 /// The unit upward normal of a flap section's chord line: the chord runs from the trailing
@@ -112,17 +127,18 @@ pub fn chord_normal(polygons: &[Vec<Point2<f64>>]) -> Option<Vector2<f64>> {
 /// The load case `case` at `record`: its moments, or its flight condition's normal force on
 /// the record's share of the flap.
 pub fn load_case(case: &LoadCaseScene, record: &StationRecord) -> LoadCase {
+    load_case_on(case, record.flap_load_share)
+}
+
+/// The load case `case` on a station carrying `share` of its flap (see [`load_case`]).
+pub fn load_case_on(case: &LoadCaseScene, share: Option<FlapLoadShare>) -> LoadCase {
     let external_moment = match (case.moment_nm, case.moment_stowed_nm, case.moment_deployed_nm) {
         (Some(moment), _, _) => ExternalMoment::Constant(moment),
         (None, Some(stowed_nm), Some(deployed_nm)) => ExternalMoment::Linear { stowed_nm, deployed_nm },
         // A flight condition, or (validation guarantees one form) no moment.
         _ => ExternalMoment::Constant(0.0),
     };
-    let flap_normal_force = match (
-        case.dynamic_pressure(),
-        &case.normal_force_coefficient,
-        record.flap_load_share,
-    ) {
+    let flap_normal_force = match (case.dynamic_pressure(), &case.normal_force_coefficient, share) {
         (Some(q), Some(rows), Some(share)) => Some(FlapNormalForce {
             coefficients: rows.iter().map(|[deg, c]| (deg.to_radians(), *c)).collect(),
             newtons_per_coefficient: q * case.load_factor.unwrap_or(1.0) * share.flap_area_share_m2,

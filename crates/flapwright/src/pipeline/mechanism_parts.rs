@@ -14,7 +14,7 @@ use std::sync::Arc;
 
 use flapwright_interference::{station_parts, Motion, StationParts};
 use flapwright_mechanism::seam::BodyRole;
-use flapwright_mechanism::urdf::RigidInertia;
+use flapwright_urdf::RigidInertia;
 
 use crate::error::{Error, Result};
 use crate::pipeline::record::StationRecord;

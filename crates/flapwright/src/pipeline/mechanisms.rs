@@ -8,16 +8,35 @@ use flapwright_mechanism::{sweep_deployment, ExternalMoment, FlapMechanism, Load
 use crate::error::Result;
 use crate::kinds::SynthesisContext;
 use crate::pipeline::flap_position;
-use crate::pipeline::flight_loads::weight_only;
+use crate::pipeline::flight_loads::{self, weight_only};
 use crate::pipeline::record::{flaps_on_several_stations, MechanismReport, PlacedStation, StationRecord};
 use crate::scene::{Problem, Scene, SceneError};
+use flapwright_geom::parts::WingModel;
 
 /// Synthesises every station, each with its placed plane where the scene has a wing
 /// (`placed`, in station order; empty without one); a mechanism that cannot be built from
 /// its dimensions or the flap settings is bad input, reported with the station's path like
 /// any other scene problem.
-pub fn synthesise_all(scene: &Scene, placed: Vec<PlacedStation>) -> Result<Vec<StationRecord>> {
+pub fn synthesise_all(
+    scene: &Scene,
+    model: Option<&WingModel>,
+    placed: Vec<PlacedStation>,
+) -> Result<Vec<StationRecord>> {
     let mut problems = Vec::new();
+    // Each station's share of its flap's flight load, before synthesis: the searches weigh
+    // the actuator's load under the scene's load cases.
+    let shares = match model {
+        Some(model) if scene.loads.cases.iter().any(|c| c.is_flight_condition()) => {
+            let stations: Vec<(Option<&str>, Option<&PlacedStation>)> = scene
+                .station
+                .iter()
+                .enumerate()
+                .map(|(i, s)| (s.flap.as_deref(), placed.get(i)))
+                .collect();
+            flight_loads::station_shares(scene, model, &stations)?
+        }
+        _ => vec![None; scene.station.len()],
+    };
     // The synthesis inputs of every station first: the stations of one flap share its
     // rigid poses at the settings.
     let mut placed = placed.into_iter();
@@ -43,6 +62,18 @@ pub fn synthesise_all(scene: &Scene, placed: Vec<PlacedStation>) -> Result<Vec<S
                 }
             },
             _ => (SynthesisContext::default(), None),
+        };
+        let mut context = context;
+        let share = shares.get(i).copied().flatten();
+        context.design_loads = if scene.loads.cases.is_empty() {
+            vec![weight_only()]
+        } else {
+            scene
+                .loads
+                .cases
+                .iter()
+                .map(|case| flight_loads::load_case_on(case, share))
+                .collect()
         };
         inputs.push((placed, context, flap_behind_wing, Vec::new()));
     }
@@ -119,7 +150,7 @@ pub fn synthesise_all(scene: &Scene, placed: Vec<PlacedStation>) -> Result<Vec<S
                     rigid_flap,
                     fairing: None,
                     kinematics: None,
-                    flap_load_share: None,
+                    flap_load_share: shares.get(i).copied().flatten(),
                 })
             }
             Err(message) => problems.push(Problem { path, message }),

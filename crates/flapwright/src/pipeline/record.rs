@@ -86,7 +86,7 @@ pub fn flaps_on_several_stations(records: &[StationRecord]) -> Vec<(&str, Vec<&S
 #[derive(Debug, Clone)]
 pub struct PlacedStation {
     /// The plane, frame, skew and residuals (the residuals once the mechanism is known:
-    /// [`attachment_residuals`](super::stations::attachment_residuals)).
+    /// `stations::attachment_residuals`).
     pub station: Station,
     /// Section cuts of every part in the station plane.
     pub sections: Vec<Section>,
@@ -94,7 +94,7 @@ pub struct PlacedStation {
     pub deployment: FlapDeployment,
     /// The flap's take-off and landing 3D poses (aircraft frame) its settings ask for,
     /// where several stations carry it or this one's plane is skew-corrected
-    /// ([`apply_flap_motion`](super::stations::apply_flap_motion)); the station's precision positions are these as its plane
+    /// (`stations::apply_flap_motion`); the station's precision positions are these as its plane
     /// sees them.
     pub setting_poses_ac: Option<[Isometry3<f64>; 2]>,
 }
@@ -201,7 +201,7 @@ pub struct FlapPositionReport {
     /// Stowed, take-off and landing.
     pub settings: Vec<SettingPosition>,
     /// Where the flap's other stations move the settings from this station's own (see
-    /// [`rigid_flap_settings`](super::flap_position::rigid_flap_settings)); empty for a flap with one station.
+    /// `flap_position::rigid_flap_settings`); empty for a flap with one station.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub rigid_flap: Vec<RigidFlapSetting>,
     /// A two-element flap's second slot: the aft element behind the main element.

@@ -210,13 +210,8 @@ pub fn size_all(
 /// screw runs is known only once the mechanism is synthesised (the attachment is searched
 /// for the first that keeps clear).
 fn input_runs_backwards(scene: &Scene, record: &StationRecord) -> crate::scene::SceneError {
-    use crate::kinds::MechanismScene;
     let station = &scene.station[record.index.min(scene.station.len().saturating_sub(1))];
-    let given_mount = match &station.mechanism {
-        MechanismScene::FourBar(m) => m.actuator_mount_m.is_some(),
-        MechanismScene::DroppedHinge(m) => m.actuator_mount_m.is_some(),
-        _ => false,
-    };
+    let given_mount = station.mechanism.kind().gives_actuator_mount();
     let key = if given_mount {
         format!("station[{}].mechanism.actuator_mount_m", record.index)
     } else {

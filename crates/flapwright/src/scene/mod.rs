@@ -10,6 +10,7 @@ mod airfoil_ref;
 mod dynamics;
 mod files;
 mod key_path;
+pub(crate) mod nested_error;
 pub(crate) mod parse;
 mod problem;
 mod settings;

@@ -15,59 +15,11 @@ use serde_path_to_error::{Path as KeyPath, Segment};
 use toml::{Table, Value};
 
 use super::key_path::{KeyPathBuf, Step};
+use super::nested_error::{split_nested, DECIDES_MARK};
 use super::problem::Problem;
 
 /// Deserialisation rounds before the search gives up (each round finds one problem).
 pub const MAX_ROUNDS: usize = 200;
-
-/// Marks an error raised inside a nested deserialisation (see [`nested_error`]): the text
-/// between the first two markers is the inner key path.
-const NESTED_MARK: char = '\u{1}';
-
-/// Starts the text of an error after which the rest of its table is moot (see
-/// [`deciding_error_at`]).
-const DECIDES_MARK: char = '\u{2}';
-
-/// An error message naming the key `key` that decides what the rest of its table means (a
-/// mechanism's `kind`): once it is wrong, the table's other keys are not reported, since
-/// they would be judged against a table the user did not mean (a misspelt kind would
-/// otherwise be followed by every missing key of the stand-in kind).
-pub fn deciding_error_at(key: &str, message: &str) -> String {
-    nested_error_at(key, &format!("{DECIDES_MARK}{message}"))
-}
-
-/// An error message that carries the key path of a nested deserialisation, so that a
-/// custom `Deserialize` (the mechanism kinds) does not hide which key failed.
-pub fn nested_error(inner_path: &KeyPath, message: &str) -> String {
-    // A nested error of a nested deserialisation is already marked: join the paths.
-    let (deeper, message) = split_nested(message);
-    let mut path = inner_path.to_string();
-    if let Some(deeper) = deeper {
-        if path == "." || path.is_empty() {
-            path = deeper;
-        } else if deeper.starts_with('[') {
-            path.push_str(&deeper);
-        } else {
-            path = format!("{path}.{deeper}");
-        }
-    }
-    format!("{NESTED_MARK}{path}{NESTED_MARK}{message}")
-}
-
-/// An error message naming the key `key` of the table being deserialised.
-pub fn nested_error_at(key: &str, message: &str) -> String {
-    format!("{NESTED_MARK}{key}{NESTED_MARK}{message}")
-}
-
-/// Splits a message made by [`nested_error`] into its inner path and text.
-fn split_nested(message: &str) -> (Option<String>, &str) {
-    if let Some(rest) = message.strip_prefix(NESTED_MARK) {
-        if let Some((path, text)) = rest.split_once(NESTED_MARK) {
-            return (Some(path.to_string()), text);
-        }
-    }
-    (None, message)
-}
 
 /// Deserialises `T` from `table`, returning every structural problem (paths only; the
 /// caller adds line and column).
@@ -148,7 +100,7 @@ enum Patch {
 /// Values tried, in order, in place of a missing or mistyped one.
 const STAND_INS: &[fn() -> Value] = &[
     || Value::Float(1.0),
-    || Value::String("circular-arc-track".into()),
+    || Value::String(crate::kinds::MechanismScene::KINDS[0].into()),
     || Value::Boolean(true),
     || Value::Integer(1),
     || Value::Table(Table::new()),

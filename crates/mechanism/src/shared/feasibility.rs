@@ -9,7 +9,7 @@ use crate::shared::outline::StationOutline;
 
 /// A candidate loop at one sample of its deployment.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct LoopSample {
+pub struct LoopSample {
     /// The driving link's turn from stowed (rad): named in messages.
     pub turn_rad: f64,
     /// The flap's displacement from stowed.
@@ -21,7 +21,7 @@ pub(crate) struct LoopSample {
 }
 
 /// What the loop must keep over the deployment.
-pub(crate) struct DeploymentRules<'a> {
+pub struct DeploymentRules<'a> {
     /// The station's sections.
     pub outline: &'a StationOutline,
     /// Smallest transmission angle (rad).
@@ -44,7 +44,7 @@ pub(crate) struct DeploymentRules<'a> {
 /// defect: a loop that cannot close (no real solution), the flap through or within the
 /// lip clearance of the wing's trailing edge or over a fixed pivot (region), the
 /// transmission angle below the minimum (toggle), the flap turning back (order).
-pub(crate) fn check_deployment(
+pub fn check_deployment(
     rules: &DeploymentRules,
     samples: impl IntoIterator<Item = Option<LoopSample>>,
 ) -> Result<f64, (SynthesisDefect, String)> {
@@ -101,7 +101,7 @@ pub(crate) fn check_deployment(
 /// The parameter in [0, `end`] where the monotone `deflection` reaches `target` (rad), by
 /// bisection to rounding; the nearer end when `target` lies outside the range.
 /// `sense` is the sign of the deflection's change from 0 to `end`.
-pub(crate) fn parameter_at_deflection(end: f64, deflection: impl Fn(f64) -> f64, target: f64, sense: f64) -> f64 {
+pub fn parameter_at_deflection(end: f64, deflection: impl Fn(f64) -> f64, target: f64, sense: f64) -> f64 {
     let (mut lo, mut hi) = (0.0, end);
     if (target - deflection(hi)) * sense >= 0.0 {
         return hi;
@@ -126,7 +126,7 @@ pub(crate) fn parameter_at_deflection(end: f64, deflection: impl Fn(f64) -> f64,
 /// The flap chord of a synthesis's station, after checking its settings are finite: the
 /// first step of every kind synthesised from the flap settings. Errors: a setting that is
 /// not finite, or no flap section, as [`SynthesisDefect::MissingPositions`] with `detail`.
-pub(crate) fn settings_and_flap_chord(
+pub fn settings_and_flap_chord(
     positions: &[crate::shared::precision::PrecisionPosition],
     outline: &StationOutline,
 ) -> Result<f64, (SynthesisDefect, String)> {

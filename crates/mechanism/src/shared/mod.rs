@@ -17,20 +17,23 @@
 //! | `feasibility` | loop checks over a deployment | four-bar, link-track, hooked-track |
 //! | [`outline`] | the station's section outlines and their distance queries | the synthesised kinds |
 //! | `members` | members to size and their loads | the seam ([`Member`](crate::seam::Member)), the kinds |
+//! | [`objective`] | what the searches weigh besides depth: the actuator's load under the load cases, by virtual work | the synthesised kinds, [`placement`] |
 //!
-//! The modules that were public at the crate root stay public here; the others are
-//! crate-private, their public types re-exported at the crate root.
+//! Every module is public: the kinds live in their own crate (`flapwright-kinds`) and
+//! reach the toolbox from there; the types the other stages name are also re-exported at
+//! this crate's root.
 
-pub(crate) mod angle;
-pub(crate) mod feasibility;
+pub mod angle;
+pub mod feasibility;
 pub mod flap_load;
-pub(crate) mod geometry;
-pub(crate) mod load_case;
-pub(crate) mod members;
+pub mod geometry;
+pub mod load_case;
+pub mod members;
+pub mod objective;
 pub mod outline;
 pub mod placement;
 pub mod precision;
 pub mod rocker_drive;
-pub(crate) mod rotary_actuator;
-pub(crate) mod screw_jack;
-pub(crate) mod slider_crank;
+pub mod rotary_actuator;
+pub mod screw_jack;
+pub mod slider_crank;

@@ -8,6 +8,7 @@
 use nalgebra::{Isometry2, Point2};
 
 use crate::shared::geometry::turn_about;
+use crate::shared::objective::LoadWeighing;
 use crate::shared::outline::StationOutline;
 use crate::shared::rocker_drive::{mount_square_at_mid_travel, RockerDrive};
 
@@ -30,11 +31,14 @@ pub struct JackSize {
     pub body_radius_m: f64,
 }
 
-/// A screw jack turning a body about `pivot` by `rotation_rad`: the shallowest (attachment,
-/// mount) pair of `attachments` x `standoffs` (mounts square at mid-travel) whose drive
-/// keeps the transmission angle above `min_transmission_rad` and whose screw (as long as
-/// the longest stroke plus the nut) and jack body keep `margin` clear of `outline` with the
-/// flap at `flap_at(ψ)` for sampled body rotations ψ. None when no pair is clear.
+/// A screw jack turning a body about `pivot` by `rotation_rad`: of the (attachment, mount)
+/// pairs of `attachments` x `standoffs` (mounts square at mid-travel, turned about the
+/// attachment) whose drive keeps the transmission angle above `min_transmission_rad` and
+/// whose screw (as long as the longest stroke plus the nut) and jack body keep `margin`
+/// clear of `outline` with the flap at `flap_at(ψ)` for sampled body rotations ψ, the one
+/// of least cost: the depth its lowest point reaches in flap chords, plus, with
+/// `weighing`, its peak screw force under the load cases in reference forces
+/// ([`LoadWeighing::cost`]); without, the shallowest. None when no pair is clear.
 #[allow(clippy::too_many_arguments)]
 pub fn screw_jack_placement(
     pivot: Point2<f64>,
@@ -46,12 +50,19 @@ pub fn screw_jack_placement(
     margin: f64,
     outline: &StationOutline,
     flap_at: &dyn Fn(f64) -> Option<Isometry2<f64>>,
+    weighing: Option<&LoadWeighing>,
 ) -> Result<AttachmentAndMount, Option<AttachmentAndMount>> {
     let rotations: Vec<f64> = (0..=PLACEMENT_SAMPLES)
         .map(|k| rotation_rad * k as f64 / PLACEMENT_SAMPLES as f64)
         .collect();
     let flap_poses: Option<Vec<Isometry2<f64>>> = rotations.iter().map(|&psi| flap_at(psi)).collect();
     let flap_poses = flap_poses.ok_or(None)?;
+    // What the load asks of the body, the same for every candidate.
+    let flap_chord = outline.flap_chord().map_or(1.0, |(_, _, chord)| chord);
+    let loading = weighing.map(|w| {
+        let torques = w.body_torques(&rotations, rotation_rad, flap_at);
+        (w, torques, w.reference_force_n(&flap_poses))
+    });
     let mut fallback = None;
     let mut best: Option<(Point2<f64>, Point2<f64>, f64)> = None;
     // The screw square to the arm at mid-travel first, then turned either way about the
@@ -104,8 +115,26 @@ pub fn screw_jack_placement(
                     .filter_map(|&psi| drive.state(drive.stroke_at(psi)).ok())
                     .map(|state| (mount + (state.attachment - mount).normalize() * length).y)
                     .fold(mount.y - size.body_radius_m - 0.5 * size.body_length_m, f64::min);
-                if best.is_none_or(|(_, _, y)| lowest > y) {
-                    best = Some((attachment, mount, lowest));
+                let depth = pivot.y - lowest;
+                let cost = match &loading {
+                    Some((w, torques, reference)) => {
+                        // The screw's force: the body's torque times dψ/ds.
+                        let peak = rotations
+                            .iter()
+                            .zip(torques)
+                            .map(|(&psi, torque)| {
+                                let rate = drive
+                                    .state(drive.stroke_at(psi))
+                                    .map_or(f64::INFINITY, |state| state.rotation_per_stroke.abs());
+                                torque.map_or(f64::INFINITY, |t| t * rate)
+                            })
+                            .fold(0.0, f64::max);
+                        w.cost(depth, flap_chord, peak, *reference)
+                    }
+                    None => depth / flap_chord,
+                };
+                if best.is_none_or(|(_, _, c)| cost < c) {
+                    best = Some((attachment, mount, cost));
                 }
             }
         }
@@ -137,12 +166,13 @@ pub struct ScrewJackChoice {
 }
 
 /// The screw jack of a body turning by `rotation_rad` about `pivot`: the designer's mount,
-/// or the first clear candidate of [`screw_jack_placement`] over attachments (the
+/// or the least costly clear candidate of [`screw_jack_placement`] over attachments (the
 /// designer's `choice.attachment_fraction` alone, or [`DEFAULT_ATTACHMENT_FRACTION`] then
 /// `choice.other_fractions` of the arm) and standoffs 1, 1.6, 2.4 and 0.7 times
 /// `choice.standoff_m`; when none is clear, the first that transmits well enough (or the
 /// first candidate) and `false`.
 /// Returns (attachment, mount, clear).
+#[allow(clippy::too_many_arguments)]
 pub fn place_screw_jack(
     pivot: Point2<f64>,
     rotation_rad: f64,
@@ -151,6 +181,7 @@ pub fn place_screw_jack(
     margin: f64,
     outline: &StationOutline,
     flap_at: &dyn Fn(f64) -> Option<Isometry2<f64>>,
+    weighing: Option<&LoadWeighing>,
 ) -> (Point2<f64>, Point2<f64>, bool) {
     let (from, to) = choice.arm;
     let on_arm = |fraction: f64| from + (to - from) * fraction;
@@ -177,6 +208,7 @@ pub fn place_screw_jack(
         margin,
         outline,
         flap_at,
+        weighing,
     ) {
         Ok((attachment, mount)) => (attachment, mount, true),
         Err(Some((attachment, mount))) => (attachment, mount, false),

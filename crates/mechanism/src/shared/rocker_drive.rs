@@ -186,7 +186,7 @@ impl RockerDrive {
 /// for every kind that turns a body with one: the screw with its jack body, turning about
 /// the mount B0, and the nut at the attachment, pivoting on the driven body and riding
 /// along the screw.
-pub(crate) struct ScrewJackParts<'a> {
+pub struct ScrewJackParts<'a> {
     /// The drive.
     pub drive: &'a RockerDrive,
     /// The driven body's rotation over the deployment (rad).

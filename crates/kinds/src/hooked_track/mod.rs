@@ -1,0 +1,652 @@
+//! The hooked-track (Zaccai, Bertels & Vos `003_...` section 3, Figs. 6 and 10): a carriage
+//! at the flap's forward pin F slides on a straight rail, driven along it by a screw jack
+//! parallel to the rail; the flap's aft roller G runs first in a straight lead-in parallel to
+//! the rail (the flap translates, `003_...` Fig. 17) and then in a hook, a circular arc that
+//! turns the flap to its landing deflection. `003_...` models the straight part and the
+//! hook as links; here they are the rails those links stand for, which give the same motion
+//! and keep the roller's lead-in.
+//!
+//! Synthesis is motion generation for two precision positions, stowed and landing (the
+//! `search` module): the rail runs from F to its landing place and the hook is the one circle
+//! tangent to the lead-in through G's landing place. Take-off is not a precision position:
+//! its miss is reported ([`HookedTrackSynthesis::takeoff_miss_m`]). The free choices, F, G
+//! and the lead-in's share of the stroke, are the designer's or searched for the shallowest
+//! mechanism plus take-off miss.
+//!
+//! Pose in closed form (the `rail` module). Statics: the rail holds the carriage square to
+//! itself and the screw pushes it along (Q d + N_F n at F); the lead-in holds G square to the
+//! rail (N_G n), the hook along its radius (N_G u, u = (G - K) / |G - K|). Moments of the
+//! flap about F give N_G = -M_F / ((G - F) x m) with m = n or u, then the force balance
+//! Q = -(P + N_G m) · d and N_F = -(P + N_G m) · n. Virtual work, independently, from the
+//! rail's velocity analysis.
+
+use nalgebra::{Isometry2, Point2, Vector2};
+use serde::Serialize;
+
+mod bodies;
+mod members;
+mod rail;
+mod search;
+
+use rail::{Rail, RailPose};
+
+use flapwright_mechanism::seam::{
+    Actuator, Body, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, Kinetostatics, MechanismPose,
+    NamedPoint, PoseHealth,
+};
+use flapwright_mechanism::shared::flap_load::{FlapMass, FlapWrench, LinkHardware};
+use flapwright_mechanism::shared::geometry::cross;
+use flapwright_mechanism::shared::load_case::LoadCase;
+use flapwright_mechanism::shared::outline::StationOutline;
+use flapwright_mechanism::shared::precision::PrecisionPosition;
+use flapwright_mechanism::shared::screw_jack::{ScrewDrive, ScrewJack};
+use flapwright_mechanism::{Error, Result, SynthesisDefect};
+
+const KIND: &str = "hooked-track";
+
+/// Rails checked in full at a time (in parallel) between updates of the search's bound:
+/// large enough to keep two cores busy, small enough to stop soon after the best is found.
+const SEARCH_BATCH: usize = 32;
+
+/// The designer's choices for a hooked-track at one station (station frame, m).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HookedTrackSpec {
+    /// Take-off: not a precision position; its miss is reported.
+    pub takeoff: PrecisionPosition,
+    /// Landing, where the deployment ends.
+    pub landing: PrecisionPosition,
+    /// The carriage's pin F on the flap, stowed; `None`: searched.
+    pub forward_attachment: Option<Point2<f64>>,
+    /// The roller's pin G on the flap, stowed; `None`: searched.
+    pub aft_attachment: Option<Point2<f64>>,
+    /// The lead-in's share of the stroke, in [0, 1); `None`: searched.
+    pub lead_fraction: Option<f64>,
+    /// Smallest transmission angle over the deployment (rad).
+    pub min_transmission_angle_rad: f64,
+    /// The flap share this station carries.
+    pub flap_mass: FlapMass,
+    /// The screw's thread and the shared drive.
+    pub screw_drive: ScrewDrive,
+    /// Solid sizes.
+    pub hardware: LinkHardware,
+    /// The station's sections.
+    pub outline: StationOutline,
+}
+
+/// Counts of what the search rejected.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+pub struct HookedTrackSearch {
+    /// Carriage, roller and lead-in triples tried.
+    pub candidates: usize,
+    /// ... with no rail or hook (the flap's line square to the rail, no hook needed, or
+    /// the carriage and roller too close).
+    pub no_hook: usize,
+    /// ... whose hook is too tight or too flat.
+    pub hook_radius: usize,
+    /// ... whose rail or hook cuts the wing, the structure or the stowed flap.
+    pub rail_through_section: usize,
+    /// ... that failed the deployment check, by defect: toggle, branch or order, region.
+    pub toggle: usize,
+    /// See [`Self::toggle`].
+    pub branch_or_order: usize,
+    /// See [`Self::toggle`].
+    pub region: usize,
+    /// ... not checked further: the depth of their rail's ends and roller and their
+    /// take-off miss, known before the deployment check, already cost more than the best
+    /// rail found (branch and bound: the choice is the exhaustive search's).
+    pub pruned: usize,
+    /// ... feasible.
+    pub feasible: usize,
+}
+
+impl HookedTrackSearch {
+    /// Adds another search's counts to these.
+    fn add(&mut self, other: &Self) {
+        self.candidates += other.candidates;
+        self.no_hook += other.no_hook;
+        self.hook_radius += other.hook_radius;
+        self.rail_through_section += other.rail_through_section;
+        self.toggle += other.toggle;
+        self.branch_or_order += other.branch_or_order;
+        self.region += other.region;
+        self.pruned += other.pruned;
+        self.feasible += other.feasible;
+    }
+}
+
+/// What synthesis computed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HookedTrackSynthesis {
+    /// The carriage's pin F on the flap, stowed (m).
+    pub forward_attachment_m: Point2<f64>,
+    /// The roller's pin G on the flap, stowed (m).
+    pub aft_attachment_m: Point2<f64>,
+    /// The rail's direction (unit, towards deployment).
+    pub rail_direction: Vector2<f64>,
+    /// The rail's slope below the aft direction (rad).
+    pub rail_slope_rad: f64,
+    /// The screw's stroke to landing (m).
+    pub stroke_m: f64,
+    /// The lead-in's stroke (m): the flap translates over it.
+    pub lead_m: f64,
+    /// The hook's centre K (m).
+    pub hook_centre_m: Point2<f64>,
+    /// The hook's radius (m).
+    pub hook_radius_m: f64,
+    /// Smallest transmission angle over the deployment (rad, sampled).
+    pub min_transmission_angle_rad: f64,
+    /// A certified lower bound on it between samples (rad).
+    pub certified_min_transmission_angle_rad: f64,
+    /// How far the mechanism reaches below the stowed sections' lower contour (m).
+    pub depth_below_section_m: f64,
+    /// Largest distance between the mechanism's flap and the landing position at F and G
+    /// (m).
+    pub precision_miss_m: f64,
+    /// The stroke where the flap reaches the take-off deflection (m).
+    pub takeoff_stroke_m: f64,
+    /// Largest distance at F and G between the flap there and the take-off setting (m).
+    pub takeoff_miss_m: f64,
+    /// The rail's ends (m), stowed carriage first.
+    pub rail_ends_m: [Point2<f64>; 2],
+    /// The screw jack's mount on the rail's line (m): ahead of the stowed carriage
+    /// (pushing) or behind the rail's aft end (pulling) where the flap would pass through
+    /// a jack ahead.
+    pub jack_mount_m: Point2<f64>,
+    /// The screw, its length (m) and nominal nut speed (m/s).
+    pub screw: ScrewJack,
+    /// Screw length, the mount to the far end of the rail (m).
+    pub screw_length_m: f64,
+    /// Nominal nut speed (m/s).
+    pub nominal_speed_mps: f64,
+    /// Where the hook's strut leaves it (m).
+    pub hook_strut_foot_m: Point2<f64>,
+    /// Where the struts from the rail's forward end and from the hook meet the lower skin
+    /// (m).
+    pub strut_tops_m: [Point2<f64>; 2],
+    /// False when no default strut kept clear of the structure and the flap.
+    pub placement_clear: bool,
+    /// What the search rejected.
+    pub search: HookedTrackSearch,
+}
+
+/// A hooked-track synthesised for one station.
+#[derive(Debug, Clone)]
+pub struct HookedTrack {
+    spec: HookedTrackSpec,
+    synthesis: HookedTrackSynthesis,
+    rail: Rail,
+    /// The hook's centre line (`bodies::hook_centre_line`), found once: the members' loads
+    /// ask for it at every sample.
+    hook_line: Vec<Point2<f64>>,
+    bodies: Vec<Body>,
+    joints: Vec<Joint>,
+}
+
+/// Where the rail's strut meets the rear spar's web when no strut to the lower skin keeps
+/// clear: the rail starts at the stowed carriage under the flap, in the cove, where the
+/// flap's nose leaves no room for a strut up or forward to the skin; this one runs forward
+/// at the rail's height (within the web's, two strut radii from either skin) through the
+/// cove wall into the trailing-edge bay, as a track beam does, and stops short of the web
+/// by one and a half strut radii (its end fitting). Taken when, in the plane, it crosses
+/// the wing only through the bay with one and a half radii below the upper skin, keeps more
+/// than a radius from other structure (a torque tube, an intermediate spar), and its centre
+/// line stays out of the flap at every sampled pose beyond the foot it shares with the rail.
+/// Only the centre line: near the rail the strut runs, with the rail and the carriage, in
+/// the flap's lower-side slot, which the plane's outline does not show; the interference
+/// check judges the solid against the slotted flap (on the transport scene it clears the
+/// flap and the wing by 13 mm).
+fn web_strut_top(
+    spec: &HookedTrackSpec,
+    rail_start: Point2<f64>,
+    flap_poses: &[Isometry2<f64>],
+) -> Option<Point2<f64>> {
+    let outline = &spec.outline;
+    let radius = spec.hardware.link_radius_m;
+    let (face, lo, hi) = outline.rear_web()?;
+    if hi - lo <= 4.0 * radius || face <= rail_start.x {
+        return None;
+    }
+    let top = Point2::new(
+        face - 1.5 * radius,
+        rail_start.y.clamp(lo + 2.0 * radius, hi - 2.0 * radius),
+    );
+    let shared = spec.hardware.nut_radius_m + radius;
+    let length = (top - rail_start).norm();
+    if length <= shared {
+        return None;
+    }
+    let free = rail_start + (top - rail_start) * (shared / length);
+    let clear_of_flap = flap_poses.iter().all(|pose| {
+        let back = pose.inverse();
+        !outline.flap.segment_meets(back * free, back * top)
+    });
+    let clear_of_structure =
+        flapwright_mechanism::shared::outline::segment_distance(&outline.structure, free, top) > radius;
+    (outline.through_bay_only(rail_start, top, 1.5 * radius) && clear_of_structure && clear_of_flap).then_some(top)
+}
+
+fn failure(defect: SynthesisDefect, detail: String) -> Error {
+    Error::Synthesis {
+        kind: KIND,
+        defect,
+        detail,
+    }
+}
+
+impl HookedTrack {
+    /// Synthesises the rail and the hook through stowed and landing. Errors
+    /// ([`Error::Synthesis`]): no feasible rail, with the dominant defect and the counts;
+    /// given choices that fail, with their defect.
+    pub fn synthesise(spec: HookedTrackSpec) -> Result<Self> {
+        let flap_chord = flapwright_mechanism::shared::feasibility::settings_and_flap_chord(
+            &[spec.takeoff, spec.landing],
+            &spec.outline,
+        )
+        .map_err(|(defect, detail)| failure(defect, detail))?;
+        use rayon::prelude::*;
+        let mut counts = HookedTrackSearch::default();
+        let candidates = search::candidates(&spec);
+        counts.candidates = candidates.len();
+        // The quick tests of every candidate, in parallel, each with its own counts.
+        let prepared: Vec<_> = candidates
+            .par_iter()
+            .map(|candidate| {
+                let mut own = HookedTrackSearch::default();
+                let outcome = search::prepare(&spec, *candidate, flap_chord, &mut own);
+                (own, outcome)
+            })
+            .collect();
+        let mut last_failure = None;
+        let mut open = Vec::new();
+        for (index, (own, outcome)) in prepared.into_iter().enumerate() {
+            counts.add(&own);
+            match outcome {
+                Ok(rail) => open.push((index, rail)),
+                Err(failure) => last_failure = Some(failure),
+            }
+        }
+        // Branch and bound: the survivors checked in full in order of their cost's lower
+        // bound, a batch at a time in parallel, until the next bound cannot beat the best
+        // rail (the least cost, the first candidate among equal ones: the exhaustive
+        // search's choice, whatever the threads and batches).
+        open.sort_by(|(i, a), (j, b)| a.lower_bound.total_cmp(&b.lower_bound).then(i.cmp(j)));
+        let mut best: Option<(usize, search::Found)> = None;
+        let beats_best = |best: &Option<(usize, search::Found)>, index: usize, cost: f64| {
+            best.as_ref()
+                .is_none_or(|(b, found)| cost < found.cost() || (cost == found.cost() && index < *b))
+        };
+        let mut next = 0;
+        while next < open.len() {
+            let batch: Vec<&(usize, search::Prepared)> = open[next..]
+                .iter()
+                .take(SEARCH_BATCH)
+                .take_while(|(index, rail)| beats_best(&best, *index, rail.lower_bound))
+                .collect();
+            if batch.is_empty() {
+                break;
+            }
+            next += batch.len();
+            let outcomes: Vec<_> = batch
+                .par_iter()
+                .map(|(index, rail)| {
+                    let mut own = HookedTrackSearch::default();
+                    (*index, search::check(&spec, rail, &mut own), own)
+                })
+                .collect();
+            for (index, outcome, own) in outcomes {
+                counts.add(&own);
+                match outcome {
+                    Ok(found) => {
+                        counts.feasible += 1;
+                        if beats_best(&best, index, found.cost()) {
+                            best = Some((index, found));
+                        }
+                    }
+                    Err(failure) => last_failure = Some(failure),
+                }
+            }
+        }
+        counts.pruned = open.len() - next;
+        let best = best.map(|(_, found)| found);
+        let Some(found) = best else {
+            return Err(match (last_failure, counts.candidates) {
+                (Some((defect, detail)), 1) => failure(defect, detail),
+                _ => failure(dominant(&counts), describe(&counts)),
+            });
+        };
+        Self::build(spec, found, counts)
+    }
+
+    fn build(spec: HookedTrackSpec, found: search::Found, counts: HookedTrackSearch) -> Result<Self> {
+        let rail = found.rail;
+        let hw = &spec.hardware;
+        let d = rail.d.into_inner();
+        let attachments = [rail.f, rail.g];
+        let miss_at = |pose: &RailPose, target: &Isometry2<f64>| {
+            attachments
+                .iter()
+                .map(|p| (pose.flap * p - target * p).norm())
+                .fold(0.0, f64::max)
+        };
+        let landing_pose = rail
+            .at(rail.stroke_m)
+            .ok_or_else(|| failure(SynthesisDefect::NoRealSolution, "the flap cannot reach landing".into()))?;
+        let (takeoff_stroke, takeoff_miss) = search::takeoff(&spec, &rail);
+        // Certified transmission: between samples h apart, sin μ falls at most at
+        // (1 + 1 / sin μ) / ℓ + 1 / (|ρ| sin μ) per metre (d/ds of |(G - F) x (G - K)| / (ℓ |ρ|)
+        // with |F'| = 1, |G'| <= 1 / sin μ; see `rail`).
+        let step = rail.stroke_m / search::RAIL_SAMPLES as f64;
+        let floor = (0.5 * found.min_transmission).sin();
+        let rate = (1.0 + 1.0 / floor) / rail.span + 1.0 / (rail.radius_m * floor);
+        let certified_sine = found.min_transmission.sin() - 0.5 * step * rate;
+        let certified = if certified_sine >= floor {
+            certified_sine.asin()
+        } else {
+            0.0
+        };
+        let flap_poses: Vec<Isometry2<f64>> = (0..=flapwright_mechanism::shared::placement::PLACEMENT_SAMPLES)
+            .filter_map(|k| {
+                rail.at(rail.stroke_m * k as f64 / flapwright_mechanism::shared::placement::PLACEMENT_SAMPLES as f64)
+            })
+            .map(|p| p.flap)
+            .collect();
+        let rail_ends = [
+            rail.f - d * hw.nut_radius_m,
+            rail.f + d * (rail.stroke_m + hw.nut_radius_m),
+        ];
+        let hook_line = bodies::hook_centre_line(&rail, spec.landing.flap * rail.g);
+        let hook_foot = hook_line[hook_line.len() / 2];
+        let ahead = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
+        let margin = hw.link_radius_m;
+        let strut = |from: Point2<f64>, avoid| {
+            flapwright_mechanism::shared::placement::strut_top(
+                &spec.outline,
+                from,
+                &ahead,
+                margin,
+                margin,
+                &flap_poses,
+                avoid,
+            )
+        };
+        let first = strut(rail_ends[0], None).or_else(|| web_strut_top(&spec, rail_ends[0], &flap_poses));
+        let second = strut(hook_foot, first);
+        let fallback = |p: Point2<f64>| {
+            spec.outline
+                .wing_lower_point(p.x)
+                .unwrap_or(Point2::new(p.x, p.y + 0.1))
+        };
+        let (screw, nominal_speed_mps) = spec.screw_drive.screw_for(rail.stroke_m);
+        let synthesis = HookedTrackSynthesis {
+            forward_attachment_m: rail.f,
+            aft_attachment_m: rail.g,
+            rail_direction: d,
+            rail_slope_rad: (-d.y).atan2(-d.x),
+            stroke_m: rail.stroke_m,
+            lead_m: rail.lead_m,
+            hook_centre_m: rail.k,
+            hook_radius_m: rail.radius_m,
+            min_transmission_angle_rad: found.min_transmission,
+            certified_min_transmission_angle_rad: certified,
+            depth_below_section_m: found.depth,
+            precision_miss_m: miss_at(&landing_pose, &spec.landing.flap),
+            takeoff_stroke_m: takeoff_stroke,
+            takeoff_miss_m: takeoff_miss,
+            rail_ends_m: rail_ends,
+            jack_mount_m: found.mount,
+            screw,
+            screw_length_m: rail_ends
+                .iter()
+                .map(|end| (end - found.mount).norm())
+                .fold(0.0, f64::max),
+            nominal_speed_mps,
+            hook_strut_foot_m: hook_foot,
+            strut_tops_m: [
+                first.unwrap_or_else(|| fallback(rail_ends[0])),
+                second.unwrap_or_else(|| fallback(hook_foot)),
+            ],
+            placement_clear: first.is_some() && second.is_some(),
+            search: counts,
+        };
+        let (bodies, joints) = bodies::bodies_and_joints(&spec, &synthesis, &rail, certified);
+        Ok(Self {
+            spec,
+            synthesis,
+            rail,
+            hook_line,
+            bodies,
+            joints,
+        })
+    }
+
+    /// The designer's choices.
+    pub fn spec(&self) -> &HookedTrackSpec {
+        &self.spec
+    }
+
+    /// What synthesis computed.
+    pub fn synthesis(&self) -> &HookedTrackSynthesis {
+        &self.synthesis
+    }
+
+    /// The rail at stroke `input` (m).
+    fn rail_pose(&self, input: f64) -> Result<RailPose> {
+        if !input.is_finite() {
+            return Err(Error::NonFinite {
+                quantity: "hooked-track stroke",
+                input_m: input,
+            });
+        }
+        self.rail.at(input).ok_or(Error::Synthesis {
+            kind: KIND,
+            defect: SynthesisDefect::NoRealSolution,
+            detail: format!("the roller cannot reach the hook at {:.1} mm of stroke", input * 1e3),
+        })
+    }
+}
+
+/// The defect most rejections had.
+fn dominant(c: &HookedTrackSearch) -> SynthesisDefect {
+    let region = c.hook_radius + c.rail_through_section + c.region;
+    if c.no_hook >= region.max(c.toggle).max(c.branch_or_order) {
+        SynthesisDefect::NoRealSolution
+    } else if c.toggle >= region.max(c.branch_or_order) {
+        SynthesisDefect::Toggle
+    } else if c.branch_or_order >= region {
+        SynthesisDefect::BranchOrOrder
+    } else {
+        SynthesisDefect::PivotOutsideRegion
+    }
+}
+
+fn describe(c: &HookedTrackSearch) -> String {
+    format!(
+        "no hooked-track found: of {} carriage, roller and lead-in choices, {} have no rail or hook, {} a hook too tight or too flat, {} a rail or hook through a section; {} fall below the minimum transmission angle, {} change branch or turn back, {} pass the trailing edge or a pivot",
+        c.candidates, c.no_hook, c.hook_radius, c.rail_through_section, c.toggle, c.branch_or_order, c.region
+    )
+}
+
+impl FlapMechanism for HookedTrack {
+    fn kind(&self) -> &'static str {
+        KIND
+    }
+
+    fn input_range(&self) -> InputRange {
+        InputRange {
+            quantity: InputQuantity::Stroke,
+            stowed: 0.0,
+            deployed: self.rail.stroke_m,
+        }
+    }
+
+    fn deflection_range_rad(&self) -> f64 {
+        self.spec.landing.deflection_rad
+    }
+
+    /// The first stroke where the flap reaches `deflection_rad`, by bisection (the flap
+    /// holds its deflection over the lead-in and turns forwards on the hook, checked at
+    /// synthesis).
+    fn input_at_deflection(&self, deflection_rad: f64) -> Result<f64> {
+        Ok(search::stroke_at_deflection(&self.spec, &self.rail, deflection_rad))
+    }
+
+    fn deflection_at_input(&self, input: f64) -> Result<f64> {
+        Ok(self.rail_pose(input)?.flap.rotation.angle())
+    }
+
+    /// The carriage's pin F and the roller G.
+    fn flap_attachments(&self) -> Vec<NamedPoint> {
+        [("F", self.rail.f), ("G", self.rail.g)]
+            .into_iter()
+            .map(|(name, position)| NamedPoint {
+                name,
+                position,
+                fixed: false,
+            })
+            .collect()
+    }
+
+    fn bodies(&self) -> &[Body] {
+        &self.bodies
+    }
+
+    fn joints(&self) -> &[Joint] {
+        &self.joints
+    }
+
+    fn pose(&self, input: f64) -> Result<MechanismPose> {
+        let pose = self.rail_pose(input)?;
+        let carriage = Isometry2::translation(pose.f.x - self.rail.f.x, pose.f.y - self.rail.f.y);
+        let points = [
+            ("K", self.rail.k, true),
+            ("F", pose.f, false),
+            ("G", pose.g, false),
+            ("D", pose.flap * self.spec.flap_mass.centre_of_mass_stowed_m, false),
+        ]
+        .into_iter()
+        .map(|(name, position, fixed)| NamedPoint { name, position, fixed })
+        .collect();
+        Ok(MechanismPose {
+            deflection_rad: pose.flap.rotation.angle(),
+            input,
+            bodies: vec![pose.flap, carriage, Isometry2::identity()],
+            flap: pose.flap,
+            points,
+        })
+    }
+
+    fn kinetostatics(&self, input: f64, load: &LoadCase) -> Result<Kinetostatics> {
+        let pose = self.rail_pose(input)?;
+        let rail = &self.rail;
+        let fraction = self.input_range().fraction(input).clamp(0.0, 1.0);
+        let wrench = FlapWrench::new(&self.spec.flap_mass, &pose.flap, load, fraction);
+        let d = rail.d.into_inner();
+        let n = rail.normal();
+        // The roller's reaction: square to the lead-in, or along the hook's radius.
+        let m = if pose.on_hook {
+            (pose.g - rail.k) / rail.radius_m
+        } else {
+            n
+        };
+        let roller = -wrench.moment_about(pose.f) / cross(pose.g - pose.f, m);
+        let rest = wrench.force_n() + m * roller;
+        let screw_force = -rest.dot(&d);
+        let rail_force = -rest.dot(&n);
+        // Virtual work: the screw's power balances the flap's wrench.
+        let (_, flap_rate) = rail.rates(&pose);
+        let velocity_of = |point: Point2<f64>| {
+            let r = point - pose.f;
+            d + Vector2::new(-r.y, r.x) * flap_rate
+        };
+        let force_virtual_work = -wrench.power(velocity_of, flap_rate);
+        let closure = if pose.on_hook {
+            ((pose.g - pose.f).norm() - rail.span)
+                .abs()
+                .max(((pose.g - rail.k).norm() - rail.radius_m).abs())
+        } else {
+            ((pose.g - pose.f).norm() - rail.span).abs()
+        };
+        Ok(Kinetostatics {
+            input,
+            deflection_rad: pose.flap.rotation.angle(),
+            actuator_load: screw_force,
+            actuator_load_virtual_work: force_virtual_work,
+            reactions: vec![
+                ("rail".into(), rail_force),
+                ("F".into(), (d * screw_force + n * rail_force).norm()),
+                ("G".into(), roller),
+            ],
+            transmission_angle_rad: pose.transmission,
+            health: PoseHealth {
+                closure_residual_m: closure,
+                jacobian_condition_number: 1.0 / pose.transmission.sin().max(1e-300),
+                distance_to_toggle_rad: pose.transmission,
+            },
+            actuator_torques: Some(self.synthesis.screw.torques(screw_force)),
+            members: self.member_loads(pose.f, n * rail_force, pose.g, m * roller),
+        })
+    }
+
+    fn drawing_notes(&self) -> DrawingNotes {
+        let s = &self.synthesis;
+        let g1 = s.aft_attachment_m + s.rail_direction * s.lead_m;
+        let (from, to) = (
+            g1 - s.hook_centre_m,
+            self.spec.landing.flap * s.aft_attachment_m - s.hook_centre_m,
+        );
+        let start = from.y.atan2(from.x);
+        DrawingNotes {
+            summary: format!(
+                "hooked-track with screw jack along the rail; stroke {:.1} mm ({:.1} mm lead-in) at {:.1} deg, hook radius {:.1} mm",
+                s.stroke_m * 1e3,
+                s.lead_m * 1e3,
+                s.rail_slope_rad.to_degrees(),
+                s.hook_radius_m * 1e3
+            ),
+            dimensions: vec![
+                ("rail".into(), s.rail_ends_m[0], s.rail_ends_m[1]),
+                ("F-G".into(), s.forward_attachment_m, s.aft_attachment_m),
+            ],
+            arcs: vec![(
+                "hook about K".into(),
+                s.hook_centre_m,
+                s.hook_radius_m,
+                start,
+                start + cross(from, to).atan2(from.dot(&to)),
+            )],
+        }
+    }
+
+    fn details(&self) -> serde_json::Value {
+        serde_json::json!({
+            "hardware": self.spec.hardware,
+            "synthesis": self.synthesis,
+        })
+    }
+
+    fn actuator(&self) -> Actuator {
+        Actuator::ScrewJack {
+            screw: self.synthesis.screw,
+            screw_length_m: self.synthesis.screw_length_m,
+            nominal_speed_mps: self.synthesis.nominal_speed_mps,
+        }
+    }
+
+    /// The rail and the hook, each a cantilever from its strut, and the struts (see the
+    /// `members` module).
+    fn members(&self) -> Vec<flapwright_mechanism::seam::Member> {
+        self.member_list()
+    }
+
+    fn flap_mass(&self) -> Option<FlapMass> {
+        Some(self.spec.flap_mass)
+    }
+
+    fn warnings(&self) -> Vec<String> {
+        let mut warnings = Vec::new();
+        if !self.synthesis.placement_clear {
+            warnings.push("no default strut from the rail or the hook to the wing's lower skin kept clear of the structure and the flap at the sampled poses".into());
+        }
+        warnings
+    }
+}

@@ -1,0 +1,170 @@
+//! The hooked-track's motion in closed form, per metre of stroke s of the forward
+//! carriage F along the straight rail (direction d, towards deployment).
+//!
+//! - **Lead-in** (0 <= s <= s1): the aft roller G runs in a straight lead-in parallel to the
+//!   rail, so the flap translates by s d without turning (`003_...` Fig. 17: gap and
+//!   overlap change before the flap deflects).
+//! - **Hook** (s1 < s <= s_L): G runs on a circular arc of radius ρ about K, tangent to the
+//!   lead-in at G1 = G + s1 d (K = G1 + ρ n, n = d turned +90 deg, ρ signed). With F(s) =
+//!   F + s d on the rail and |G - F| = ℓ (the flap is rigid), G is an intersection of the
+//!   circle about F(s) of radius ℓ with the hook: with e = K - F(s), D = |e|,
+//!   a = (ℓ² - ρ² + D²) / (2 D), h = σ sqrt(ℓ² - a²), G = F(s) + (a e + h e⊥) / D, σ the
+//!   branch through G1. The flap's displacement follows from F and G.
+//!
+//! Transmission: in the lead-in the flap's line F-G against the rail's normal,
+//! sin μ = |d · (G - F)| / ℓ (two parallel slots hold the flap's rotation only while its line
+//! is not square to them); on the hook the coupler F-G against the hook's radius K-G,
+//! sin μ = |(G - F) x (G - K)| / (ℓ |ρ|), the same value at G1 (the arc is tangent to d).
+//!
+//! Rates per metre of stroke: F' = d; on the hook G' = g (G - K)⊥ with
+//! g = d · (F - G) / ((G - K)⊥ · (F - G)) (from d/ds |F - G|² = 0), the flap's rotation
+//! rate ω = (F - G) x (F' - G') / ℓ². At G1 g ρ = 1 in magnitude and ω = 0: the motion has
+//! no velocity jump where the hook begins.
+
+use nalgebra::{Isometry2, Point2, Translation2, Unit, Vector2};
+
+use flapwright_mechanism::shared::geometry::cross;
+
+/// The rail, the lead-in and the hook.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Rail {
+    /// The carriage's pin F on the flap, stowed (m).
+    pub(super) f: Point2<f64>,
+    /// The roller's pin G on the flap, stowed (m).
+    pub(super) g: Point2<f64>,
+    /// The rail's direction, towards deployment.
+    pub(super) d: Unit<Vector2<f64>>,
+    /// Stroke of the lead-in s1 (m).
+    pub(super) lead_m: f64,
+    /// Stroke to landing s_L (m).
+    pub(super) stroke_m: f64,
+    /// The hook's centre K (m).
+    pub(super) k: Point2<f64>,
+    /// The hook's radius |ρ| (m).
+    pub(super) radius_m: f64,
+    /// |G - F| (m).
+    pub(super) span: f64,
+    /// The branch σ of the circle intersection through G1.
+    branch: f64,
+}
+
+/// The rail at one stroke.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct RailPose {
+    pub(super) f: Point2<f64>,
+    pub(super) g: Point2<f64>,
+    pub(super) flap: Isometry2<f64>,
+    /// μ (rad).
+    pub(super) transmission: f64,
+    /// True on the hook (past the lead-in).
+    pub(super) on_hook: bool,
+}
+
+impl Rail {
+    /// The rail through F, G and their landing places `f_landing`, `g_landing` with a
+    /// lead-in of `lead_m`; None where the flap's line lies along the rail's normal, the
+    /// landing roller needs no hook (it lies on the lead-in's line), or the lead-in is not
+    /// shorter than the stroke.
+    pub(super) fn new(
+        f: Point2<f64>,
+        g: Point2<f64>,
+        f_landing: Point2<f64>,
+        g_landing: Point2<f64>,
+        lead_m: f64,
+    ) -> Option<Self> {
+        let run = f_landing - f;
+        let stroke_m = run.norm();
+        let span = (g - f).norm();
+        if !(stroke_m > 0.0 && span > 0.0 && lead_m >= 0.0 && lead_m < stroke_m) {
+            return None;
+        }
+        let d = Unit::new_normalize(run);
+        let n = Vector2::new(-d.y, d.x);
+        let g1 = g + d.into_inner() * lead_m;
+        let w = g_landing - g1;
+        let across = w.dot(&n);
+        if across.abs() <= 1e-9 * span {
+            return None;
+        }
+        let rho = w.norm_squared() / (2.0 * across);
+        let k = g1 + n * rho;
+        let f1 = f + d.into_inner() * lead_m;
+        let branch = cross(k - f1, g1 - f1).signum();
+        let rail = Self {
+            f,
+            g,
+            d,
+            lead_m,
+            stroke_m,
+            k,
+            radius_m: rho.abs(),
+            span,
+            branch,
+        };
+        (rail.d.dot(&(g - f)).abs() > 1e-9 * span && branch != 0.0).then_some(rail)
+    }
+
+    /// The rail's normal n (d turned +90 deg).
+    pub(super) fn normal(&self) -> Vector2<f64> {
+        Vector2::new(-self.d.y, self.d.x)
+    }
+
+    /// Where G is at stroke `s` on the hook; None where the flap cannot reach it.
+    fn roller_on_hook(&self, f: Point2<f64>) -> Option<Point2<f64>> {
+        let e = self.k - f;
+        let distance = e.norm();
+        if distance <= 0.0 {
+            return None;
+        }
+        let along = (self.span * self.span - self.radius_m * self.radius_m + distance * distance) / (2.0 * distance);
+        let h2 = self.span * self.span - along * along;
+        if h2.is_nan() || h2 < 0.0 {
+            return None;
+        }
+        let e_perp = Vector2::new(-e.y, e.x);
+        Some(f + (e * along + e_perp * (self.branch * h2.sqrt())) / distance)
+    }
+
+    /// The rail at stroke `s` (m from stowed); None where the flap cannot reach the hook.
+    pub(super) fn at(&self, s: f64) -> Option<RailPose> {
+        let f = self.f + self.d.into_inner() * s;
+        if s <= self.lead_m {
+            let flap = Isometry2::from(Translation2::from(self.d.into_inner() * s));
+            return Some(RailPose {
+                f,
+                g: self.g + self.d.into_inner() * s,
+                flap,
+                transmission: (self.d.dot(&(self.g - self.f)).abs() / self.span)
+                    .clamp(0.0, 1.0)
+                    .asin(),
+                on_hook: false,
+            });
+        }
+        let g = self.roller_on_hook(f)?;
+        let (stowed, now) = (self.g - self.f, g - f);
+        let rotation = Isometry2::rotation(cross(stowed, now).atan2(stowed.dot(&now)));
+        let flap = Translation2::from(f.coords - (rotation * self.f).coords) * rotation;
+        let sine = cross(g - f, g - self.k).abs() / (self.span * self.radius_m);
+        Some(RailPose {
+            f,
+            g,
+            flap,
+            transmission: sine.clamp(0.0, 1.0).asin(),
+            on_hook: true,
+        })
+    }
+
+    /// Velocity of G and the flap's rotation rate per metre of stroke at `pose` (F moves
+    /// at d).
+    pub(super) fn rates(&self, pose: &RailPose) -> (Vector2<f64>, f64) {
+        if !pose.on_hook {
+            return (self.d.into_inner(), 0.0);
+        }
+        let r = pose.f - pose.g;
+        let radial = pose.g - self.k;
+        let tangent = Vector2::new(-radial.y, radial.x);
+        let v_g = tangent * (self.d.dot(&r) / tangent.dot(&r));
+        let flap_rate = cross(r, self.d.into_inner() - v_g) / (self.span * self.span);
+        (v_g, flap_rate)
+    }
+}

@@ -1,0 +1,355 @@
+//! The hooked-track's synthesis from two precision positions (stowed, landing) and the
+//! search over its free choices.
+//!
+//! For a forward carriage point F and an aft roller point G on brackets under the flap and
+//! a lead-in fraction of the stroke, the rail is the line from F to its landing place
+//! (d = (T F - F) / |T F - F|) and the hook the circle tangent to the lead-in at
+//! G1 = G + s1 d through T G: with w = T G - G1 and n the rail's normal,
+//! |G1 + ρ n - T G|² = ρ² gives ρ = |w|² / (2 w · n), linear in the one unknown. Both
+//! settings are then met exactly (landing at F on the rail and at G on the hook); take-off
+//! is not a precision position and its miss is reported.
+//!
+//! The search takes F and G on grids of brackets and the lead-in on a grid of fractions,
+//! keeps the rails that stay out of the sections and reach landing on one branch with the
+//! flap turning forwards only, above the minimum transmission angle and off the wing's
+//! trailing edge, and picks the one with the least fairing depth (as the fairing stage
+//! measures it) plus take-off miss ([`Found::cost`]). Every rejection is counted ([`HookedTrackSearch`]).
+//!
+//! Branch and bound: [`prepare`] runs the quick tests and bounds a rail's cost from below
+//! by what it knows before the deployment is sampled (the depth of the rail's ends and of
+//! the roller stowed and at landing, all part of the final depth, plus the exact take-off
+//! miss); [`check`] samples the deployment only for rails whose bound can still beat the
+//! best found, so the choice is the exhaustive search's (on the transport scene's
+//! outboard station about 1 500 of the 16 600 candidates that pass the quick tests are
+//! sampled).
+
+use nalgebra::Point2;
+
+use super::rail::Rail;
+use super::{HookedTrackSearch, HookedTrackSpec};
+use flapwright_mechanism::shared::feasibility::{
+    check_deployment, parameter_at_deflection, DeploymentRules, LoopSample,
+};
+use flapwright_mechanism::shared::outline::FlapPoint;
+use flapwright_mechanism::SynthesisDefect;
+
+/// Samples of the deployment in the feasibility check.
+pub(super) const RAIL_SAMPLES: usize = 48;
+/// Forward carriage: chord fractions from the flap's leading edge.
+const FORWARD_FRACTIONS: [f64; 8] = [0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4];
+/// Aft roller: chord fractions.
+const AFT_FRACTIONS: [f64; 12] = [0.35, 0.4, 0.45, 0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9];
+/// Bracket depths below the flap's lower surface, fractions of its chord.
+const DEPTHS: [f64; 5] = [0.02, 0.05, 0.1, 0.15, 0.25];
+/// Lead-in fractions of the stroke.
+const LEADS: [f64; 9] = [0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.5];
+/// The shortest fitting from the carriage to the roller, fraction of the flap chord: a
+/// shorter one turns the flap fast for its stroke and holds it with little lever.
+const MIN_SPAN: f64 = 0.2;
+/// How close the sampled roller must come to its landing place, fraction of the rail's
+/// span (the fitting from the carriage to the roller).
+const LANDING_MATCH: f64 = 1e-6;
+/// The hook's radius, fractions of the flap chord.
+const HOOK_RADIUS: (f64, f64) = (0.05, 20.0);
+
+/// A feasible rail and what it measures.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Found {
+    pub(super) rail: Rail,
+    /// The screw jack's mount on the rail's line (m): ahead of the stowed carriage,
+    /// pushing, or behind the rail's aft end, pulling, where the flap would pass through a
+    /// jack ahead.
+    pub(super) mount: Point2<f64>,
+    /// Sampled smallest transmission angle (rad).
+    pub(super) min_transmission: f64,
+    /// How far the rail, the hook, the pins and the jack reach below the stowed sections'
+    /// lower contour (m).
+    pub(super) depth: f64,
+    /// Largest distance at F and G between the flap at the take-off deflection and the
+    /// take-off setting (m).
+    pub(super) takeoff_miss: f64,
+}
+
+impl Found {
+    /// What the search minimises: the fairing's depth plus the take-off miss, a metre of
+    /// either as bad as a metre of the other (the lead-in is the one choice that moves
+    /// the take-off pose; F and G mostly set the depth).
+    pub(super) fn cost(&self) -> f64 {
+        self.depth + self.takeoff_miss
+    }
+}
+
+/// The first stroke of `rail` where the flap reaches `deflection_rad`, by bisection (the
+/// flap holds its deflection over the lead-in and turns forwards on the hook).
+pub(super) fn stroke_at_deflection(spec: &HookedTrackSpec, rail: &Rail, deflection_rad: f64) -> f64 {
+    let deflection = |s: f64| rail.at(s).map_or(f64::NAN, |p| p.flap.rotation.angle());
+    parameter_at_deflection(
+        rail.stroke_m,
+        deflection,
+        deflection_rad,
+        spec.landing.deflection_rad.signum(),
+    )
+}
+
+/// The first stroke of `rail` where the flap reaches the take-off deflection, and the miss
+/// there at F and G.
+pub(super) fn takeoff(spec: &HookedTrackSpec, rail: &Rail) -> (f64, f64) {
+    let stroke = stroke_at_deflection(spec, rail, spec.takeoff.deflection_rad);
+    let miss = rail.at(stroke).map_or(f64::INFINITY, |pose| {
+        [rail.f, rail.g]
+            .iter()
+            .map(|p| (pose.flap * p - spec.takeoff.flap * p).norm())
+            .fold(0.0, f64::max)
+    });
+    (stroke, miss)
+}
+
+/// Attachment candidates: the given point, or a grid of brackets at `fractions`.
+fn attachments(spec: &HookedTrackSpec, given: Option<Point2<f64>>, fractions: &[f64]) -> Vec<Point2<f64>> {
+    match given {
+        Some(p) => vec![p],
+        None => fractions
+            .iter()
+            .flat_map(|&chord_fraction| {
+                DEPTHS.iter().filter_map(move |&depth_fraction| {
+                    spec.outline.flap_point(FlapPoint {
+                        chord_fraction,
+                        depth_fraction,
+                    })
+                })
+            })
+            .collect(),
+    }
+}
+
+/// Every (F, G, lead-in fraction) the search tries.
+pub(super) fn candidates(spec: &HookedTrackSpec) -> Vec<(Point2<f64>, Point2<f64>, f64)> {
+    let leads: Vec<f64> = spec.lead_fraction.map_or(LEADS.to_vec(), |l| vec![l]);
+    let mut out = Vec::new();
+    for f in attachments(spec, spec.forward_attachment, &FORWARD_FRACTIONS) {
+        for g in attachments(spec, spec.aft_attachment, &AFT_FRACTIONS) {
+            for &lead in &leads {
+                out.push((f, g, lead));
+            }
+        }
+    }
+    out
+}
+
+/// A rail through the quick tests, and a lower bound of its cost: what the search checks
+/// in full only while the bound can still beat the best rail found.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Prepared {
+    rail: Rail,
+    /// The take-off miss (m), part of the bound and of the cost.
+    takeoff_miss: f64,
+    /// The depth of the rail's ends and of the roller stowed and at landing below the
+    /// sections (all part of [`Found::depth`]) plus the take-off miss: at most
+    /// [`Found::cost`].
+    pub(super) lower_bound: f64,
+}
+
+/// The quick tests of the rail through `f`, `g` with lead-in fraction `lead`: the span, the
+/// rail and its hook, and the rail clear of the sections.
+pub(super) fn prepare(
+    spec: &HookedTrackSpec,
+    (f, g, lead): (Point2<f64>, Point2<f64>, f64),
+    flap_chord: f64,
+    search: &mut HookedTrackSearch,
+) -> Result<Prepared, (SynthesisDefect, String)> {
+    if (g - f).norm() < MIN_SPAN * flap_chord {
+        search.no_hook += 1;
+        return Err((
+            SynthesisDefect::PivotOutsideRegion,
+            format!(
+                "the carriage and the roller are {:.0} mm apart, less than {:.0} % of the flap chord",
+                (g - f).norm() * 1e3,
+                MIN_SPAN * 100.0
+            ),
+        ));
+    }
+    let landing = spec.landing.flap;
+    let stroke = (landing * f - f).norm();
+    let rail = Rail::new(f, g, landing * f, landing * g, lead * stroke).ok_or_else(|| {
+        search.no_hook += 1;
+        (
+            SynthesisDefect::NoRealSolution,
+            "no rail: the flap's line stands square to the rail, or the roller needs no hook".to_string(),
+        )
+    })?;
+    if rail.radius_m < HOOK_RADIUS.0 * flap_chord || rail.radius_m > HOOK_RADIUS.1 * flap_chord {
+        search.hook_radius += 1;
+        return Err((
+            SynthesisDefect::PivotOutsideRegion,
+            format!(
+                "the hook's radius {:.0} mm lies outside {:.0}-{:.0} mm",
+                rail.radius_m * 1e3,
+                HOOK_RADIUS.0 * flap_chord * 1e3,
+                HOOK_RADIUS.1 * flap_chord * 1e3
+            ),
+        ));
+    }
+    let hw = &spec.hardware;
+    let outline = &spec.outline;
+    let [start, end] = rail_ends(spec, &rail);
+    if fixed_blocked(spec, start, end) {
+        search.rail_through_section += 1;
+        return Err((
+            SynthesisDefect::PivotOutsideRegion,
+            "the rail cuts the wing, the structure or the stowed flap".into(),
+        ));
+    }
+    let below = |p: Point2<f64>, radius: f64| outline.depth_below(p).map_or(0.0, |depth| depth + radius);
+    let depth = below(start, hw.link_radius_m)
+        .max(below(end, hw.link_radius_m))
+        .max(below(g, hw.nut_radius_m))
+        .max(below(landing * g, hw.nut_radius_m))
+        .max(0.0);
+    // The deployment check takes the roller's landing place from the sampled pose, which
+    // meets the exact one to 1e-6 of the span (its `reached` test): the bound gives that
+    // much away, so that it stays at most the cost.
+    let takeoff_miss = takeoff(spec, &rail).1;
+    Ok(Prepared {
+        rail,
+        takeoff_miss,
+        lower_bound: depth + takeoff_miss - LANDING_MATCH * rail.span,
+    })
+}
+
+/// The rail's ends, padded by the nut: from the stowed carriage to its landing place.
+fn rail_ends(spec: &HookedTrackSpec, rail: &Rail) -> [Point2<f64>; 2] {
+    let (d, nut) = (rail.d.into_inner(), spec.hardware.nut_radius_m);
+    [rail.f - d * nut, rail.f + d * (rail.stroke_m + nut)]
+}
+
+/// True where the segment `a`-`b` cuts the wing, the structure or the stowed flap.
+fn fixed_blocked(spec: &HookedTrackSpec, a: Point2<f64>, b: Point2<f64>) -> bool {
+    let outline = &spec.outline;
+    outline.wing.segment_meets(a, b) || outline.structure.segment_meets(a, b) || outline.flap.segment_meets(a, b)
+}
+
+/// The rest of the check of a rail `prepare` let through: the deployment sampled (branch,
+/// order, transmission, trailing edge), the hook and the screw jack clear, the depth.
+pub(super) fn check(
+    spec: &HookedTrackSpec,
+    prepared: &Prepared,
+    search: &mut HookedTrackSearch,
+) -> Result<Found, (SynthesisDefect, String)> {
+    let rail = prepared.rail;
+    let (f, g) = (rail.f, rail.g);
+    let landing = spec.landing.flap;
+    let stroke = rail.stroke_m;
+    let hw = &spec.hardware;
+    let d = rail.d.into_inner();
+    let outline = &spec.outline;
+    let rail_ends = rail_ends(spec, &rail);
+    let jack_offset = 0.5 * hw.jack_body_length_m + hw.nut_radius_m;
+    let ahead = f - d * jack_offset;
+    let behind = f + d * (stroke + jack_offset);
+    let fixed_blocked = |a: Point2<f64>, b: Point2<f64>| fixed_blocked(spec, a, b);
+    let rules = DeploymentRules {
+        outline,
+        min_transmission_rad: spec.min_transmission_angle_rad,
+        // The jack sits ahead of the carriage on the rail's line: the interference check
+        // keeps the flap off its body.
+        fixed_pivots: &[],
+        deflection_sense: spec.landing.deflection_rad.signum(),
+        turn_sense: 1.0,
+        driver: "stroke",
+        may_dwell: true,
+    };
+    let below = |p: Point2<f64>, radius: f64| outline.depth_below(p).map_or(0.0, |depth| depth + radius);
+    let mut depth = below(rail_ends[0], hw.link_radius_m)
+        .max(below(rail_ends[1], hw.link_radius_m))
+        .max(0.0);
+    let mut hook_blocked = false;
+    let mut previous_g = g;
+    let mut last = None;
+    let strokes = stroke_samples(&rail);
+    let samples = strokes.iter().map(|&s| {
+        rail.at(s).map(|pose| {
+            depth = depth.max(below(pose.g, hw.nut_radius_m));
+            if pose.on_hook {
+                hook_blocked |= fixed_blocked(previous_g, pose.g);
+            }
+            previous_g = pose.g;
+            last = Some(pose);
+            LoopSample {
+                turn_rad: s,
+                flap: pose.flap,
+                transmission_rad: pose.transmission,
+                flap_rate: rail.rates(&pose).1,
+            }
+        })
+    });
+    let min_transmission = check_deployment(&rules, samples).inspect_err(|(defect, _)| match defect {
+        SynthesisDefect::Toggle => search.toggle += 1,
+        SynthesisDefect::BranchOrOrder => search.branch_or_order += 1,
+        _ => search.region += 1,
+    })?;
+    if hook_blocked {
+        search.rail_through_section += 1;
+        return Err((
+            SynthesisDefect::PivotOutsideRegion,
+            "the hook cuts the wing, the structure or the stowed flap".into(),
+        ));
+    }
+    // The jack and the screw ahead of the carriage must stay out of the moving flap.
+    let half = d * (0.5 * hw.jack_body_length_m);
+    let clear_of_flap = |mount: Point2<f64>| {
+        strokes.iter().filter_map(|&s| rail.at(s)).all(|pose| {
+            let back = pose.flap.inverse();
+            !outline.flap.segment_meets(back * (mount - half), back * (mount + half))
+                && !outline.flap.segment_meets(back * mount, back * pose.f)
+        })
+    };
+    let mount = if clear_of_flap(ahead) {
+        ahead
+    } else if clear_of_flap(behind) {
+        behind
+    } else {
+        search.region += 1;
+        return Err((
+            SynthesisDefect::PivotOutsideRegion,
+            "the flap passes through the screw jack ahead of the carriage and behind the rail".into(),
+        ));
+    };
+    depth = depth
+        .max(below(mount - half, hw.jack_body_radius_m))
+        .max(below(mount + half, hw.jack_body_radius_m));
+    let reached = last.is_some_and(|pose| (pose.g - landing * g).norm() <= LANDING_MATCH * rail.span);
+    if !reached {
+        search.branch_or_order += 1;
+        return Err((
+            SynthesisDefect::BranchOrOrder,
+            "the roller reaches landing on the hook's other branch".into(),
+        ));
+    }
+    let found = Found {
+        rail,
+        mount,
+        min_transmission,
+        depth,
+        takeoff_miss: prepared.takeoff_miss,
+    };
+    // The branch and bound's premise, checked on every rail of every debug run (the
+    // tests'): the bound never exceeds the cost.
+    debug_assert!(
+        found.cost() >= prepared.lower_bound,
+        "bound {} above cost {}",
+        prepared.lower_bound,
+        found.cost()
+    );
+    Ok(found)
+}
+
+/// The strokes the deployment is sampled at: evenly from stowed to landing, with the end
+/// of the lead-in among them.
+pub(super) fn stroke_samples(rail: &Rail) -> Vec<f64> {
+    let mut strokes: Vec<f64> = (0..=RAIL_SAMPLES)
+        .map(|k| rail.stroke_m * k as f64 / RAIL_SAMPLES as f64)
+        .collect();
+    strokes.push(rail.lead_m);
+    strokes.sort_by(f64::total_cmp);
+    strokes
+}

@@ -1,0 +1,184 @@
+//! What a synthesis search weighs besides the fairing's depth: the actuator's load under
+//! the station's load cases, so that a search does not pick a mechanism with almost no
+//! mechanical advantage because its fairing is a few millimetres shallower (issue 37).
+//!
+//! A candidate's cost is
+//!
+//! ```text
+//! cost = depth / c_f + w · L_peak / L_ref
+//! ```
+//!
+//! with the fairing's depth below the stowed sections, the flap chord c_f, the actuator's
+//! peak load L_peak over the deployment and the load cases, and the reference L_ref: the
+//! largest force the load cases put on the flap (N) for a linear actuator, that force
+//! times the flap chord (N m) for a rotary one. `003_...` Table 1's mechanisms carry
+//! 0.3-0.55 of the air load in their actuators; the weight [`DEFAULT_LOAD_WEIGHT`] = 0.2
+//! makes a fairing one tenth of the flap chord deeper worth half the air load off the
+//! actuator (a judgement: a deeper fairing costs drag in cruise, a heavier actuator and
+//! structure cost weight; both of the order of each other on a transport flap).
+//!
+//! The load a body needs is found by virtual work from the flap's poses alone, whatever
+//! the kind: the torque about the body's pivot is minus the power of the flap's wrench
+//! ([`FlapWrench`]) per unit body rotation, the flap's velocity by central differences of
+//! its pose. It is independent of each kind's own statics, which the tests compare it
+//! with.
+
+use nalgebra::{Isometry2, Point2, Vector2};
+
+use crate::shared::flap_load::{FlapMass, FlapWrench};
+use crate::shared::load_case::LoadCase;
+
+/// Default weight of the actuator's peak load, in reference loads, against the fairing's
+/// depth in flap chords (see the module's docs).
+pub const DEFAULT_LOAD_WEIGHT: f64 = 0.2;
+
+/// Relative step of the central differences of the flap's pose (of the body's rotation
+/// range): the truncation error is of the step squared, the rounding of 1e-16 over it.
+const DIFFERENCE_STEP: f64 = 1e-4;
+
+/// The load cases a search weighs its actuator under, and how much.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadWeighing {
+    /// The station's load cases (the flap's weight alone when the scene gives none).
+    pub loads: Vec<LoadCase>,
+    /// The flap share the station carries.
+    pub flap_mass: FlapMass,
+    /// Weight of the peak load in reference loads against the depth in flap chords.
+    pub weight: f64,
+}
+
+impl LoadWeighing {
+    /// The torque (N m, magnitude, the largest over the load cases) that the body turning
+    /// the flap needs about its pivot at each rotation of `rotations` (rad, from 0 to
+    /// `range_rad`), where `flap_at(ψ)` is the flap's displacement with the body turned by
+    /// ψ. `None` where the flap cannot be posed round a rotation.
+    pub fn body_torques(
+        &self,
+        rotations: &[f64],
+        range_rad: f64,
+        flap_at: &dyn Fn(f64) -> Option<Isometry2<f64>>,
+    ) -> Vec<Option<f64>> {
+        let h = DIFFERENCE_STEP * range_rad.abs().max(1e-9);
+        rotations
+            .iter()
+            .map(|&psi| {
+                let here = flap_at(psi)?;
+                let (before, after, span) = match (flap_at(psi - h), flap_at(psi + h)) {
+                    (Some(b), Some(a)) => (b, a, 2.0 * h),
+                    (None, Some(a)) => (here, a, h),
+                    (Some(b), None) => (b, here, h),
+                    (None, None) => return None,
+                };
+                let to_stowed = here.inverse();
+                let velocity_of = |p: Point2<f64>| -> Vector2<f64> {
+                    let stowed = to_stowed * p;
+                    (after * stowed - before * stowed) / span
+                };
+                let angular = (after.rotation.angle() - before.rotation.angle()) / span;
+                let fraction = if range_rad == 0.0 {
+                    0.0
+                } else {
+                    (psi / range_rad).clamp(0.0, 1.0)
+                };
+                let torque = self
+                    .loads
+                    .iter()
+                    .map(|load| {
+                        FlapWrench::new(&self.flap_mass, &here, load, fraction)
+                            .power(velocity_of, angular)
+                            .abs()
+                    })
+                    .fold(0.0, f64::max);
+                Some(torque)
+            })
+            .collect()
+    }
+
+    /// The largest force the load cases put on the flap over `flap_poses` (N): the weight
+    /// times the load factor plus the air load, the reference of a linear actuator's load.
+    pub fn reference_force_n(&self, flap_poses: &[Isometry2<f64>]) -> f64 {
+        flap_poses
+            .iter()
+            .enumerate()
+            .flat_map(|(k, pose)| {
+                let fraction = k as f64 / (flap_poses.len().max(2) - 1) as f64;
+                self.loads
+                    .iter()
+                    .map(move |load| FlapWrench::new(&self.flap_mass, pose, load, fraction).force_n().norm())
+            })
+            .fold(0.0, f64::max)
+    }
+
+    /// The cost of a candidate: `depth_m / flap_chord_m + weight · peak / reference`.
+    pub fn cost(&self, depth_m: f64, flap_chord_m: f64, peak: f64, reference: f64) -> f64 {
+        let load = if reference > 0.0 && peak.is_finite() {
+            peak / reference
+        } else {
+            0.0
+        };
+        depth_m / flap_chord_m.max(1e-9) + self.weight * load
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shared::geometry::turn_about;
+    use crate::shared::load_case::{ExternalMoment, FlapNormalForce};
+
+    fn weighing(loads: Vec<LoadCase>) -> LoadWeighing {
+        LoadWeighing {
+            loads,
+            flap_mass: FlapMass {
+                mass_kg: 50.0,
+                centre_of_mass_stowed_m: Point2::new(-0.4, 0.05),
+                gravity_mps2: Vector2::new(0.0, -9.81),
+            },
+            weight: DEFAULT_LOAD_WEIGHT,
+        }
+    }
+
+    /// A flap turning about a fixed hinge: the torque is the wrench's moment about the
+    /// hinge (an analytic case), for a normal force that turns with the flap and its weight.
+    #[test]
+    fn the_torque_of_a_hinged_flap_is_the_moment_about_its_hinge() {
+        let hinge = Point2::new(-0.1, -0.2);
+        let load = LoadCase {
+            name: "landing".into(),
+            external_moment: ExternalMoment::Constant(150.0),
+            include_inertia: false,
+            flap_normal_force: Some(FlapNormalForce {
+                coefficients: vec![(0.0, 0.5), (0.7, 1.3)],
+                newtons_per_coefficient: 20_000.0,
+                at_stowed_m: Point2::new(-0.35, 0.02),
+                normal_stowed: Vector2::new(0.05, 1.0).normalize(),
+            }),
+            load_factor: 2.0,
+        };
+        let w = weighing(vec![load.clone()]);
+        let range = -0.6;
+        let rotations: Vec<f64> = (0..=6).map(|k| range * k as f64 / 6.0).collect();
+        let flap_at = |psi: f64| Some(turn_about(hinge, psi));
+        let torques = w.body_torques(&rotations, range, &flap_at);
+        for (&psi, torque) in rotations.iter().zip(torques) {
+            let pose = turn_about(hinge, psi);
+            let fraction = psi / range;
+            let moment = FlapWrench::new(&w.flap_mass, &pose, &load, fraction).moment_about(hinge);
+            let torque = torque.unwrap();
+            assert!(
+                (torque - moment.abs()).abs() <= 1e-6 * moment.abs(),
+                "{torque} against {moment}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_cost_adds_depth_in_chords_and_load_in_reference_loads() {
+        let w = weighing(Vec::new());
+        assert!((w.cost(0.2, 1.0, 50.0, 100.0) - (0.2 + 0.5 * DEFAULT_LOAD_WEIGHT)).abs() < 1e-15);
+        // No reference (no load at all): depth alone.
+        assert_eq!(w.cost(0.3, 1.0, 0.0, 0.0), 0.3);
+        let poses = [Isometry2::identity()];
+        assert_eq!(w.reference_force_n(&poses), 0.0, "no load cases, no force");
+    }
+}

@@ -142,7 +142,7 @@ struct Failure {
 impl<E: Into<anyhow::Error>> From<E> for Failure {
     fn from(error: E) -> Self {
         let error = error.into();
-        let input_problem = error.downcast_ref::<SceneError>().is_some()
+        let input_problem = scene_error(&error).is_some()
             || error
                 .downcast_ref::<OutputError>()
                 .is_some_and(OutputError::is_input_problem);
@@ -153,6 +153,14 @@ impl<E: Into<anyhow::Error>> From<E> for Failure {
             summary: None,
         }
     }
+}
+
+/// The scene's problems behind `error`: the error itself, or what a stage of the library met
+/// (found through the stages that wrapped it).
+fn scene_error(error: &anyhow::Error) -> Option<&SceneError> {
+    error
+        .downcast_ref::<SceneError>()
+        .or_else(|| error.downcast_ref::<flapwright::Error>()?.scene_error())
 }
 
 fn main() -> ExitCode {
@@ -173,7 +181,7 @@ fn main() -> ExitCode {
 /// (each scene problem as `{file, line, col, key, message}`, when the scene was at fault)
 /// and, for a run that ended in a failed verdict, its `summary`.
 fn json_error(failure: &Failure) -> String {
-    let scene_error = failure.error.downcast_ref::<SceneError>().or_else(|| {
+    let scene_error = scene_error(&failure.error).or_else(|| {
         failure
             .error
             .downcast_ref::<flapwright::study::Unstudiable>()
@@ -358,7 +366,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         bar.finish_and_clear();
     }
     // Input problems found by a stage (after validation) are located in the file too.
-    let outcome = outcome.map_err(|error| match error.downcast::<SceneError>() {
+    let outcome = outcome.map_err(|error| match error.into_scene_error() {
         Ok(scene_error) => bad_input(
             anyhow::Error::new(scene_error.locate(&text, &file_label)).context(format!("invalid scene {file_label}")),
         ),
@@ -518,13 +526,13 @@ fn study(
     print_notices(cli, &staged.take_notices());
     let study =
         flapwright::study::run(&scene, &text, files.as_ref(), &label, &kinds, stations, &staged).map_err(|error| {
-            let code = match error.downcast_ref::<flapwright::study::NoKindDesigned>() {
-                Some(none) if none.input_problem => EXIT_BAD_INPUT,
+            let code = match &error {
+                flapwright::Error::NoKindDesigned(none) if none.input_problem => EXIT_BAD_INPUT,
                 _ => EXIT_FAILED,
             };
             Failure {
                 code,
-                error,
+                error: error.into(),
                 summary: None,
             }
         })?;

@@ -89,7 +89,7 @@ fn test_case(name: String, class: String, outcome: Outcome) -> TestCase {
 }
 
 /// The JUnit document of an interference report.
-pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> anyhow::Result<String> {
+pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> crate::Result<String> {
     let mut suite = TestSuite::new(format!("flapwright interference: {scene_name}"));
     for pair in &report.pairs {
         let c = &pair.clearance;

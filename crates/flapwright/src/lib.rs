@@ -14,10 +14,13 @@
 //! - [`report`]: the `report.json` schema (documented in the README).
 //! - [`junit`]: JUnit XML of the interference check, for CI.
 //! - [`study`]: the trade study of mechanism kinds at the scene's stations.
+//! - [`error`]: the crate's one error type ([`Error`], [`Result`]): each variant names what
+//!   failed and wraps the lower crate's error, so the command line prints the chain.
 //!
 //! Libraries below return typed errors; the command line alone decides wording and exit
 //! codes.
 
+pub mod error;
 pub mod junit;
 pub mod kinds;
 pub mod pipeline;
@@ -26,4 +29,5 @@ pub mod scene;
 pub mod sink;
 pub mod study;
 
+pub use error::{Error, Result};
 pub use sink::{MemorySink, Sink};

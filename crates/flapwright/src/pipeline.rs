@@ -2,10 +2,10 @@
 
 use std::time::Instant;
 
-use anyhow::{Context, Result};
 use serde::Serialize;
 use sha2::{Digest, Sha256};
 
+use crate::error::{Error, Result};
 use crate::report::{Exports, PartReport, Report, SceneInfo, StageTiming, StationReport, SCHEMA_VERSION};
 use crate::scene::{FileSource, Scene};
 use crate::sink::Sink;
@@ -81,7 +81,10 @@ impl Stages<'_> {
     fn run<T>(&mut self, name: &str, work: impl FnOnce() -> Result<T>) -> Result<T> {
         (self.on_stage)(name);
         let start = Instant::now();
-        let value = work().with_context(|| format!("stage `{name}`"))?;
+        let value = work().map_err(|source| Error::Stage {
+            stage: name.to_string(),
+            source: Box::new(source),
+        })?;
         self.names.push(name.to_string());
         self.timings.push(StageTiming {
             stage: name.to_string(),
@@ -321,9 +324,12 @@ pub fn design_with_progress(
         warnings,
         timings: stages.timings,
     };
-    let json = serde_json::to_string_pretty(&report).context("serialising the report")?;
+    let json = serde_json::to_string_pretty(&report).map_err(Error::SerialisingReport)?;
     out.write("report.json", (json + "\n").as_bytes())
-        .context("writing report.json")?;
+        .map_err(|source| Error::Write {
+            file: "report.json".into(),
+            source,
+        })?;
     let summary = Summary {
         scene: scene.name.clone(),
         parts: report.parts.len(),

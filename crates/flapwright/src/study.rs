@@ -17,7 +17,6 @@
 //! no kind: a new kind is studied by naming it. Every problem a variant meets is located in
 //! the user's file, with the station and flap indices of that file.
 
-use anyhow::{anyhow, Context, Result};
 use flapwright_drawing::{Plot, Series};
 use flapwright_interference::InterferenceReport;
 use flapwright_mechanism::seam::InputQuantity;
@@ -25,6 +24,7 @@ use flapwright_mechanism::Deployment;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+use crate::error::{Error, Result};
 use crate::kinds::MechanismScene;
 use crate::pipeline::record::FlapPositionReport;
 use crate::pipeline::WingCache;
@@ -181,11 +181,11 @@ impl StudiedScene {
     /// `scene` the flap mass of a station whose table names it otherwise (the five-bar's
     /// two elements).
     pub fn new(text: &str, scene: &Scene, stations: &[String]) -> Result<Self> {
-        let table: toml::Table = text.parse().context("parsing the scene as TOML")?;
+        let table: toml::Table = text.parse().map_err(Error::StudySceneToml)?;
         let written = table
             .get("station")
             .and_then(|v| v.as_array())
-            .ok_or_else(|| anyhow!("the scene has no [[station]] to study"))?;
+            .ok_or(Error::NoStationToStudy)?;
         let studied = |name: &str| stations.is_empty() || stations.iter().any(|w| w == name);
         let station_index: Vec<usize> = scene
             .station
@@ -195,12 +195,12 @@ impl StudiedScene {
             .map(|(i, _)| i)
             .collect();
         if station_index.is_empty() {
-            return Err(anyhow!("no station named {}", stations.join(", ")));
+            return Err(Error::NoSuchStation {
+                names: stations.to_vec(),
+            });
         }
         if written.len() != scene.station.len() {
-            return Err(anyhow!(
-                "the scene's [[station]] tables are not the scene it was parsed into"
-            ));
+            return Err(Error::StudyStationsMismatch);
         }
         let carried = station_index
             .iter()
@@ -405,10 +405,10 @@ impl std::fmt::Display for NoKindDesigned {
 impl std::error::Error for NoKindDesigned {}
 
 /// A kind's failure as one line: a scene's problems joined, any other error's chain.
-fn one_line(error: &anyhow::Error) -> String {
-    match error.downcast_ref::<SceneError>() {
+fn one_line(error: &Error) -> String {
+    match error.scene_error() {
         Some(scene_error) => scene_error.lines().join("; "),
-        None => format!("{error:#}").replace('\n', " "),
+        None => error.chain_message().replace('\n', " "),
     }
 }
 
@@ -452,7 +452,7 @@ pub fn run(
                 outcomes.push(KindOutcome {
                     kind: kind.clone(),
                     stations: Vec::new(),
-                    error: Some(format!("{error:#}")),
+                    error: Some(error.chain_message()),
                 });
                 failures.push((kind.clone(), error));
             }
@@ -461,7 +461,7 @@ pub fn run(
     if !kinds.is_empty() && failures.len() == kinds.len() {
         return Err(NoKindDesigned {
             scene: scene.name.clone(),
-            input_problem: failures.iter().all(|(_, e)| e.downcast_ref::<SceneError>().is_some()),
+            input_problem: failures.iter().all(|(_, e)| e.scene_error().is_some()),
             reasons: failures.iter().map(|(kind, e)| (kind.clone(), one_line(e))).collect(),
         }
         .into());
@@ -494,13 +494,20 @@ pub fn run(
             &format!("{}: kinds at {station}", study.scene),
             &charts(&study, station),
         )
-        .with_context(|| format!("drawing the study charts of {station}"))?;
-        out.write(&format!("study-{station}.svg"), svg.as_bytes())
-            .context("writing the study charts")?;
+        .map_err(|source| Error::StudyCharts {
+            station: station.clone(),
+            source,
+        })?;
+        let file = format!("study-{station}.svg");
+        out.write(&file, svg.as_bytes())
+            .map_err(|source| Error::WritingStudyCharts { file, source })?;
     }
-    let json = serde_json::to_string_pretty(&study).context("serialising the study")?;
+    let json = serde_json::to_string_pretty(&study).map_err(Error::SerialisingStudy)?;
     out.write("study.json", (json + "\n").as_bytes())
-        .context("writing study.json")?;
+        .map_err(|source| Error::Write {
+            file: "study.json".into(),
+            source,
+        })?;
     Ok(study)
 }
 
@@ -527,10 +534,12 @@ fn design_kind(
         files,
         wing_cache: Some(cache),
     };
+    // The scene's problems are the kind's outcome, located in the user's file without the
+    // stage that met them.
     let outcome =
-        pipeline::design(&inputs, Mode::Design, &written).map_err(|error| match error.downcast::<SceneError>() {
-            Ok(SceneError::Invalid(problems)) => anyhow::Error::new(studied.locate(problems, text, file)),
-            Ok(other) => anyhow::Error::new(other),
+        pipeline::design(&inputs, Mode::Design, &written).map_err(|error| match error.into_scene_error() {
+            Ok(SceneError::Invalid(problems)) => Error::Scene(studied.locate(problems, text, file)),
+            Ok(other) => Error::Scene(other),
             Err(error) => error,
         })?;
     let report = &outcome.report;
@@ -540,7 +549,10 @@ fn design_kind(
         .map(|station| station_figures(report, station))
         .collect::<Result<Vec<_>, _>>()?;
     out.write_folder(kind, &written)
-        .with_context(|| format!("writing the {kind} folder"))?;
+        .map_err(|source| Error::WritingKindFolder {
+            kind: kind.to_string(),
+            source,
+        })?;
     Ok(figures)
 }
 

@@ -4,7 +4,6 @@
 //! sweeps (each solid with its body's pose from the seam; a flap with its one station's
 //! flap displacement, or the rigid motion fitted to its stations).
 
-use anyhow::{Context, Result};
 use flapwright_geom::parts::{Part as MeshPart, PartKind};
 use flapwright_geom::{CollisionShape, TriMesh};
 use flapwright_gltf::{interpolated_displacement, to_glb, Body, Material, Model};
@@ -12,6 +11,7 @@ use flapwright_interference::Motion;
 use flapwright_mechanism::seam::BodyRole;
 use nalgebra::Isometry3;
 
+use crate::error::{Error, Result};
 use crate::pipeline::mechanism_parts::MechanismSolid;
 use crate::pipeline::record::StationRecord;
 use crate::report::GltfExport;
@@ -69,7 +69,7 @@ fn material_of_role(role: BodyRole) -> usize {
 
 /// A body's displacement from stowed at each drive fraction: its local frame's pose there
 /// times the inverse of its stowed pose.
-fn displacements(motion: &dyn Motion, fractions: &[f64]) -> Result<Vec<Isometry3<f64>>> {
+fn displacements(motion: &dyn Motion, fractions: &[f64]) -> flapwright_mechanism::Result<Vec<Isometry3<f64>>> {
     let stowed_inverse = motion.pose_ac(0.0)?.inverse();
     fractions
         .iter()
@@ -112,8 +112,10 @@ pub fn write_gltf(
     let mut motions: Vec<Option<std::sync::Arc<dyn Motion>>> = Vec::new();
     for part in meshed {
         let motion: Option<std::sync::Arc<dyn Motion>> = if part.flap_element().is_some() {
-            let shape =
-                CollisionShape::from_mesh(&part.mesh).with_context(|| format!("collision shape of {}", part.name))?;
+            let shape = CollisionShape::from_mesh(&part.mesh).map_err(|source| Error::CollisionShape {
+                part: part.name.clone(),
+                source,
+            })?;
             let flap = crate::pipeline::interference::moving_flap(part, shape, records)?;
             Some(flap.motion)
         } else {
@@ -140,7 +142,10 @@ pub fn write_gltf(
     let mut worst = (0.0_f64, String::new());
     for (body, motion) in bodies.iter_mut().zip(&motions) {
         let Some(motion) = motion else { continue };
-        let keys = displacements(motion.as_ref(), &fractions).with_context(|| format!("posing {}", body.name))?;
+        let keys = displacements(motion.as_ref(), &fractions).map_err(|source| Error::Posing {
+            part: body.name.clone(),
+            source,
+        })?;
         let error = interpolation_error(&body.mesh, &body.anchor(), motion.as_ref(), &fractions, &keys)?;
         if error > worst.0 {
             worst = (error, body.name.clone());
@@ -155,7 +160,10 @@ pub fn write_gltf(
     let nodes = model.bodies.len();
     let glb = to_glb(&model)?;
     let file = format!("{}.glb", scene.name);
-    out.write(&file, &glb).with_context(|| format!("writing {file}"))?;
+    out.write(&file, &glb).map_err(|source| Error::Write {
+        file: file.clone(),
+        source,
+    })?;
     Ok(GltfExport {
         file,
         nodes,

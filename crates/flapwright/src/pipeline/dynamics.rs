@@ -7,7 +7,6 @@
 //! scene's first load case (weight only without one). Each run's time history goes into the
 //! report and onto a plot page, `dynamics-<station>.svg`.
 
-use anyhow::{anyhow, Context, Result};
 use flapwright_drawing::{Plot, Series};
 use flapwright_dynamics::{integrate, DynamicsRun};
 use flapwright_mechanism::generalised::OneInputDynamics;
@@ -15,6 +14,7 @@ use flapwright_mechanism::RigidFlapDynamics;
 use nalgebra::Point2;
 use serde::Serialize;
 
+use crate::error::{Error, Result};
 use crate::pipeline::flight_loads::{load_cases, weight_only};
 use crate::pipeline::record::StationRecord;
 use crate::scene::{DynamicsScene, Scene};
@@ -64,8 +64,10 @@ pub fn run_all(
         .iter()
         .map(|record| {
             let deploy = |system: &dyn OneInputDynamics, model: EquationOfMotion| -> Result<(String, DynamicsReport)> {
-                let run = integrate(system, &drive, &supply, &integration)
-                    .with_context(|| format!("station {}: deploying under the motor", record.station))?;
+                let run = integrate(system, &drive, &supply, &integration).map_err(|source| Error::Deploying {
+                    station: record.station.clone(),
+                    source,
+                })?;
                 Ok((
                     record.station.clone(),
                     DynamicsReport {
@@ -80,12 +82,10 @@ pub fn run_all(
             if let Some(system) = mechanism.dynamics() {
                 return deploy(system, EquationOfMotion::Kind);
             }
-            let named = |what: &str| {
-                anyhow!(
-                    "station {} ({}): [dynamics] needs {what}",
-                    record.station,
-                    mechanism.kind()
-                )
+            let named = |needs: &'static str| Error::DynamicsNeeds {
+                station: record.station.clone(),
+                kind: mechanism.kind(),
+                needs,
             };
             let mass = mechanism
                 .flap_mass()
@@ -99,8 +99,12 @@ pub fn run_all(
                 .ok_or_else(|| named("the flap's section in the station plane (a moment of inertia from its area)"))?;
             let inertia_kgm2 = mass.mass_kg * radius_of_gyration_squared;
             let load = load_cases(scene, record).into_iter().next().unwrap_or_else(weight_only);
-            let system = RigidFlapDynamics::new(mechanism, mass, inertia_kgm2, &load)
-                .with_context(|| format!("station {}: the rigid flap's equation of motion", record.station))?;
+            let system = RigidFlapDynamics::new(mechanism, mass, inertia_kgm2, &load).map_err(|source| {
+                Error::RigidFlapDynamics {
+                    station: record.station.clone(),
+                    source,
+                }
+            })?;
             deploy(
                 &system,
                 EquationOfMotion::RigidFlap {
@@ -167,10 +171,15 @@ pub fn write_plots(scene_name: &str, runs: &[(String, DynamicsReport)], out: &dy
             ),
             &plots,
         )
-        .with_context(|| format!("drawing the dynamics plots of {station}"))?;
+        .map_err(|source| Error::DynamicsPlots {
+            station: station.clone(),
+            source,
+        })?;
         let name = format!("dynamics-{station}.svg");
-        out.write(&name, svg.as_bytes())
-            .with_context(|| format!("writing {name}"))?;
+        out.write(&name, svg.as_bytes()).map_err(|source| Error::Write {
+            file: name.clone(),
+            source,
+        })?;
         files.push(name);
     }
     Ok(files)

@@ -1,7 +1,6 @@
 //! Exports for viewers and people: URDF + trajectory (mechanism crate's `urdf` module),
 //! SVG drawings and plots per station (drawing crate).
 
-use anyhow::{Context, Result};
 use flapwright_drawing::{
     convex_hull, render_plots_svg, render_station_svg, Clash, Dimension, Joint, Link, MechanismSnapshot, PartStyle,
     SectionOutline, SlotArc, StationDrawing,
@@ -15,6 +14,7 @@ use flapwright_urdf::{
 };
 use nalgebra::Point2;
 
+use crate::error::{Error, Result};
 use crate::pipeline::mechanism_parts::MechanismSolid;
 use crate::pipeline::plots::{station_plots, SettingTarget};
 use crate::pipeline::record::StationRecord;
@@ -53,10 +53,9 @@ pub fn write_urdf(
     let stations: Vec<StationMechanism3d> = records
         .iter()
         .map(|record| {
-            let place = record
-                .placed
-                .as_ref()
-                .with_context(|| format!("station {} is not placed", record.station))?;
+            let place = record.placed.as_ref().ok_or_else(|| Error::StationNotPlaced {
+                station: record.station.clone(),
+            })?;
             let flap_name = record.flap.clone().unwrap_or_default();
             let owns_flap = !owner_seen.contains(&flap_name);
             owner_seen.push(flap_name.clone());
@@ -104,7 +103,10 @@ pub fn write_urdf(
     let model = build_robot(&robot_name, &base, &stations)?;
     let file = format!("{}.urdf", scene.name);
     out.write(&file, to_xml(&model)?.as_bytes())
-        .with_context(|| format!("writing {file}"))?;
+        .map_err(|source| Error::Write {
+            file: file.clone(),
+            source,
+        })?;
     // The report's deployment samples, so each trajectory sample is a report sample.
     let trajectory = trajectory(&stations, scene.resolution.deployment_samples)?;
     let trajectory_file = "trajectory.json".to_string();
@@ -112,7 +114,10 @@ pub fn write_urdf(
         &trajectory_file,
         (serde_json::to_string_pretty(&trajectory)? + "\n").as_bytes(),
     )
-    .context("writing trajectory.json")?;
+    .map_err(|source| Error::Write {
+        file: trajectory_file.clone(),
+        source,
+    })?;
     Ok(UrdfExport {
         file,
         trajectory_file,
@@ -177,7 +182,10 @@ fn flap_inertia(
         let Some(part) = meshed.iter().find(|p| p.name == name) else {
             return Ok(None);
         };
-        let shape = CollisionShape::from_mesh(&part.mesh).with_context(|| format!("the mesh of {name}"))?;
+        let shape = CollisionShape::from_mesh(&part.mesh).map_err(|source| Error::FlapMesh {
+            part: name.to_string(),
+            source,
+        })?;
         Ok(shape.compute_mass_properties(1.0).filter(|u| u.mass_kg > 0.0))
     };
     let scaled = |unit: Option<flapwright_geom::MassProperties>, mass_kg: f64| {
@@ -467,9 +475,14 @@ pub fn write_svgs(
             clashes,
         };
         let name = format!("station-{}.svg", record.station);
-        let svg = render_station_svg(&drawing).with_context(|| format!("drawing station {}", record.station))?;
-        out.write(&name, svg.as_bytes())
-            .with_context(|| format!("writing {name}"))?;
+        let svg = render_station_svg(&drawing).map_err(|source| Error::DrawingStation {
+            station: record.station.clone(),
+            source,
+        })?;
+        out.write(&name, svg.as_bytes()).map_err(|source| Error::Write {
+            file: name.clone(),
+            source,
+        })?;
         files.push(name);
         if let Some(cases) = record.kinematics.as_ref().map(|k| k.load_cases.as_slice()) {
             let name = format!("plots-{}.svg", record.station);
@@ -502,10 +515,16 @@ pub fn write_svgs(
             );
             // A station whose every sweep stopped at once has nothing to plot.
             if !plots.is_empty() {
-                let svg = render_plots_svg(&format!("{}: station {}", scene.name, record.station), &plots)
-                    .with_context(|| format!("plotting station {}", record.station))?;
-                out.write(&name, svg.as_bytes())
-                    .with_context(|| format!("writing {name}"))?;
+                let svg = render_plots_svg(&format!("{}: station {}", scene.name, record.station), &plots).map_err(
+                    |source| Error::PlottingStation {
+                        station: record.station.clone(),
+                        source,
+                    },
+                )?;
+                out.write(&name, svg.as_bytes()).map_err(|source| Error::Write {
+                    file: name.clone(),
+                    source,
+                })?;
                 files.push(name);
             }
         }

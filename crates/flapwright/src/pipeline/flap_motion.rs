@@ -2,9 +2,9 @@
 //! mechanisms move them: the interference check, the synthesis and the stations' attachment
 //! residuals all use it.
 
-use anyhow::{Context, Result};
 use flapwright_interference::{fit_points, FittedFlapMotion, FlapCarrier, FlapElement};
 
+use crate::error::{Error, Result};
 use crate::pipeline::record::StationRecord;
 
 /// The rigid motion of a flap element (the part `part`: the flap, or its aft element)
@@ -19,10 +19,9 @@ pub fn fitted_flap_motion(
     let carriers = carriers
         .iter()
         .map(|record| {
-            let placed = record
-                .placed
-                .as_ref()
-                .with_context(|| format!("station {} is not placed", record.station))?;
+            let placed = record.placed.as_ref().ok_or_else(|| Error::StationNotPlaced {
+                station: record.station.clone(),
+            })?;
             Ok(FlapCarrier {
                 station: record.station.clone(),
                 aircraft_from_station: *placed.station.frame.aircraft_from_station(),

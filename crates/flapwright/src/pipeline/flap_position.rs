@@ -2,11 +2,11 @@
 //! definitions, measured in the station plane by `flapwright_planes::FlapBehindWing`) at the
 //! scene's flap settings.
 
-use anyhow::{Context, Result};
 use flapwright_mechanism::{PrecisionPosition, StationOutline};
 use flapwright_planes::FlapBehindWing;
 use nalgebra::{Isometry2, Isometry3, Point2, Point3};
 
+use crate::error::{Error, Result};
 use crate::kinds::SynthesisContext;
 use crate::pipeline::record::{
     structural_gap_m, AftSlotReport, AftSlotSetting, FlapPositionReport, PlacedStation, RigidFlapSetting,
@@ -40,7 +40,11 @@ pub fn rigid_flap_settings(
             let moved: Vec<Point3<f64>> = points.iter().map(|p| seen * lift(p)).collect();
             let in_plane: Vec<Point2<f64>> = moved.iter().map(|q| Point2::new(q.x, q.y)).collect();
             let displacement = flapwright_mechanism::shared::precision::fit_displacement(&points, &in_plane)
-                .with_context(|| format!("flap {flap}: its {setting} pose in station {}", placed.station.name))?;
+                .ok_or_else(|| Error::RigidFlapSetting {
+                    flap: flap.to_string(),
+                    setting,
+                    station: placed.station.name.clone(),
+                })?;
             let own = position.flap;
             change.push(RigidFlapSetting {
                 setting,
@@ -103,8 +107,11 @@ pub fn setting_poses(
         let mut both = [Isometry3::identity(); 2];
         for (which, setting) in ["takeoff", "landing"].into_iter().enumerate() {
             let setting_asks: Vec<(usize, Isometry2<f64>)> = asked.iter().map(|&(i, d)| (i, d[which])).collect();
-            both[which] = fitted_pose(&points, &frames, &setting_asks)
-                .with_context(|| format!("flap {}: the rigid flap's {setting} pose", flap.name))?;
+            both[which] = fitted_pose(&points, &frames, &setting_asks).map_err(|source| Error::RigidFlapPose {
+                flap: flap.name.clone(),
+                setting,
+                source,
+            })?;
         }
         for &(i, _) in &asked {
             poses[i] = Some(both);
@@ -126,7 +133,7 @@ fn fitted_pose(
     points: &[Vec<Point2<f64>>],
     frames: &[Isometry3<f64>],
     asked: &[(usize, Isometry2<f64>)],
-) -> Result<Isometry3<f64>> {
+) -> flapwright_geom::Result<Isometry3<f64>> {
     let lift = |p: &Point2<f64>| Point3::new(p.x, p.y, 0.0);
     if let [(i, d)] = asked {
         let planar = Isometry3::from_parts(
@@ -158,7 +165,10 @@ pub fn flap_behind_wing(placed: &PlacedStation, flap_name: &str) -> Result<Optio
     Ok(Some(
         FlapBehindWing::new(&wing, &flap)
             .and_then(|measure| measure.with_chord_to(&placed.flap_polygons(flap_name)))
-            .with_context(|| format!("gap and overlap at station {}", placed.station.name))?,
+            .map_err(|source| Error::GapAndOverlap {
+                station: placed.station.name.clone(),
+                source,
+            })?,
     ))
 }
 
@@ -220,8 +230,12 @@ pub fn synthesis_context(
                 )])
                 .into());
             }
-            other => other
-                .with_context(|| format!("flap {} {name} setting at station {}", flap.name, placed.station.name))?,
+            other => other.map_err(|source| Error::SettingPosition {
+                flap: flap.name.clone(),
+                setting: name,
+                station: placed.station.name.clone(),
+                source,
+            })?,
         };
         Ok(Some(PrecisionPosition {
             name,
@@ -352,10 +366,11 @@ fn second_slot(flap: &FlapScene, record: &StationRecord) -> Result<Option<FlapBe
             if main.is_empty() || aft.is_empty() {
                 None
             } else {
-                Some(
-                    FlapBehindWing::new(&main, &aft)
-                        .with_context(|| format!("second slot of flap {} at station {}", flap.name, record.station))?,
-                )
+                Some(FlapBehindWing::new(&main, &aft).map_err(|source| Error::SecondSlot {
+                    flap: flap.name.clone(),
+                    station: record.station.clone(),
+                    source,
+                })?)
             }
         }
         _ => None,

@@ -13,13 +13,13 @@
 //! share acts at its own quarter-chord point (the moment the elements' quarter-chord line
 //! makes about the station's, over a tapered flap, is not carried across).
 
-use anyhow::{Context, Result};
 use flapwright_geom::parts::WingModel;
 use flapwright_mechanism::shared::outline::{extent_x, vertical_span};
 use flapwright_mechanism::{ExternalMoment, FlapNormalForce, LoadCase};
 use flapwright_sizing::{distribute_to_stations, ElementLoad};
 use nalgebra::{Point2, Vector2};
 
+use crate::error::{Error, Result};
 use crate::pipeline::record::{FlapLoadShare, PlacedStation, StationRecord};
 use crate::scene::{LoadCaseScene, Scene};
 
@@ -79,7 +79,10 @@ pub fn station_shares(
             _ => {
                 let positions: Vec<f64> = carriers.iter().map(|s| s.2).collect();
                 distribute_to_stations(&elements, &positions)
-                    .with_context(|| format!("sharing flap {name}'s load among its stations"))?
+                    .map_err(|source| Error::SharingLoad {
+                        flap: name.clone(),
+                        source,
+                    })?
                     .iter()
                     .map(|s| s.normal_force_n)
                     .collect()
@@ -87,10 +90,14 @@ pub fn station_shares(
         };
         for (&(i, placed, _), share) in carriers.iter().zip(areas) {
             let polygons = placed.flap_polygons(name);
-            let (te, le) = extent_x(&polygons).context("the station plane misses its flap")?;
+            let misses = || Error::PlaneMissesFlap {
+                station: placed.station.name.clone(),
+                flap: name.clone(),
+            };
+            let (te, le) = extent_x(&polygons).ok_or_else(misses)?;
             let x = le - 0.25 * (le - te);
-            let (lo, hi) = vertical_span(&polygons, x).context("the station plane misses its flap")?;
-            let normal = chord_normal(&polygons).context("the station plane misses its flap")?;
+            let (lo, hi) = vertical_span(&polygons, x).ok_or_else(misses)?;
+            let normal = chord_normal(&polygons).ok_or_else(misses)?;
             found[i] = Some(FlapLoadShare {
                 flap_area_share_m2: share,
                 quarter_chord_st_m: [x, 0.5 * (lo + hi)],

@@ -1,12 +1,12 @@
 //! Geometry stages: scene -> `flapwright_geom` model -> meshes -> STL files.
 
-use anyhow::{Context, Result};
 use flapwright_geom::flap::{AftElementSpec, FlapSectionSpec, FlapSpec, HingeSpec};
 use flapwright_geom::parts::{MeshResolution, Part, PartKind, WingModel};
 use flapwright_geom::structure::{SparSpec, TorqueTubeSpec};
 use flapwright_geom::wing::{PanelSpec, SweepReference, WingSectionSpec, WingSpec};
 use nalgebra::Point3;
 
+use crate::error::{Error, Result};
 use crate::report::PartReport;
 use crate::scene::{FileSource, ResolutionScene, Scene, SweepReferenceScene, WingScene};
 use crate::sink::Sink;
@@ -27,8 +27,10 @@ pub fn build_model(scene: &Scene, wing: &WingScene, files: &dyn FileSource) -> R
                 y_m: s.y_m,
                 chord_m: s.chord_m,
                 twist_deg: s.twist_deg,
-                airfoil: crate::scene::load_airfoil(&s.airfoil, files, pps)
-                    .with_context(|| format!("wing.sections[{i}].airfoil"))?,
+                airfoil: crate::scene::load_airfoil(&s.airfoil, files, pps).map_err(|source| Error::SceneAirfoil {
+                    key: format!("wing.sections[{i}].airfoil"),
+                    source: Box::new(source),
+                })?,
             })
         })
         .collect::<Result<Vec<_>>>()?;
@@ -67,20 +69,31 @@ pub fn build_model(scene: &Scene, wing: &WingScene, files: &dyn FileSource) -> R
                     chord_fraction: fraction,
                     depth_below_chord_fraction: f.hinge.depth_below_chord_fraction.unwrap_or(0.0),
                 },
-                _ => anyhow::bail!("flap[{i}].hinge: incomplete (validation should have caught this)"),
+                _ => {
+                    return Err(Error::Unvalidated {
+                        key: format!("flap[{i}].hinge"),
+                        problem: "incomplete",
+                    })
+                }
             };
             let section = match &f.airfoil {
                 None => FlapSectionSpec::CutOut,
                 Some(text) => FlapSectionSpec::OwnSection {
-                    airfoil: crate::scene::load_airfoil(text, files, pps)
-                        .with_context(|| format!("flap[{i}].airfoil"))?,
+                    airfoil: crate::scene::load_airfoil(text, files, pps).map_err(|source| Error::SceneAirfoil {
+                        key: format!("flap[{i}].airfoil"),
+                        source: Box::new(source),
+                    })?,
                 },
             };
             let aft_element = match &f.aft_element {
                 None => None,
                 Some(aft) => Some(AftElementSpec {
-                    airfoil: crate::scene::load_airfoil(&aft.airfoil, files, pps)
-                        .with_context(|| format!("flap[{i}].aft_element.airfoil"))?,
+                    airfoil: crate::scene::load_airfoil(&aft.airfoil, files, pps).map_err(|source| {
+                        Error::SceneAirfoil {
+                            key: format!("flap[{i}].aft_element.airfoil"),
+                            source: Box::new(source),
+                        }
+                    })?,
                     chord_fraction: aft.chord_fraction,
                     shroud_chord_fraction: aft.shroud_chord_fraction.unwrap_or(0.0),
                 }),
@@ -117,12 +130,17 @@ pub fn build_model(scene: &Scene, wing: &WingScene, files: &dyn FileSource) -> R
             path_ac: match (&t.path_m, t.chord_fraction) {
                 (Some(points), _) => points.iter().copied().map(point).collect(),
                 (None, Some(fraction)) => tube_path_on_the_wing(scene, wing, &wing_spec, t, fraction)?,
-                (None, None) => anyhow::bail!("structure.torque_tube: no axis (validation should have caught this)"),
+                (None, None) => {
+                    return Err(Error::Unvalidated {
+                        key: "structure.torque_tube".into(),
+                        problem: "no axis",
+                    })
+                }
             },
             radius_m: t.radius_m,
         }),
     };
-    WingModel::try_new(wing_spec, flaps, spars, torque_tube).context("building the wing model")
+    WingModel::try_new(wing_spec, flaps, spars, torque_tube).map_err(Error::BuildingWingModel)
 }
 
 /// The torque tube's axis through chord fraction `fraction` (and its depth below the chord
@@ -139,7 +157,7 @@ fn tube_path_on_the_wing(
     tube: &crate::scene::TorqueTubeScene,
     fraction: f64,
 ) -> Result<Vec<Point3<f64>>> {
-    let model = flapwright_geom::wing::Wing::try_new(wing_spec.clone()).context("building the wing")?;
+    let model = flapwright_geom::wing::Wing::try_new(wing_spec.clone()).map_err(Error::BuildingWing)?;
     let start = tube.y_start_m.unwrap_or(wing.sections[0].y_m);
     let end = tube
         .y_end_m
@@ -156,7 +174,7 @@ fn tube_path_on_the_wing(
         Ok(model.section_point_ac(&section, nalgebra::Point2::new(fraction, -depth)))
     })
     .collect::<flapwright_geom::Result<Vec<_>>>()
-    .context("structure.torque_tube: placing the axis on the wing")
+    .map_err(Error::PlacingTorqueTube)
 }
 
 /// Meshes every part once.
@@ -165,7 +183,7 @@ pub fn mesh_parts(model: &WingModel, resolution: &ResolutionScene) -> Result<Vec
         points_per_side: resolution.airfoil_points_per_side,
         ..MeshResolution::default()
     };
-    model.compute_parts(resolution).context("meshing the parts")
+    model.compute_parts(resolution).map_err(Error::MeshingParts)
 }
 
 /// Writes one binary STL per part (when asked) and returns the parts' report entries.
@@ -211,9 +229,14 @@ fn part_report(part: &Part) -> PartReport {
 pub(crate) fn write_stl_file(mesh: &flapwright_geom::TriMesh, name: &str, out: &dyn Sink) -> Result<String> {
     let file_name = format!("{name}.stl");
     let mut bytes = Vec::new();
-    flapwright_geom::io::stl::write_binary(mesh, name, &mut bytes).with_context(|| format!("writing {file_name}"))?;
-    out.write(&file_name, &bytes)
-        .with_context(|| format!("writing {file_name}"))?;
+    flapwright_geom::io::stl::write_binary(mesh, name, &mut bytes).map_err(|source| Error::EncodingStl {
+        file: file_name.clone(),
+        source,
+    })?;
+    out.write(&file_name, &bytes).map_err(|source| Error::Write {
+        file: file_name.clone(),
+        source,
+    })?;
     Ok(file_name)
 }
 

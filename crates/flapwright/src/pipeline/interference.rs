@@ -2,7 +2,6 @@
 //! structure over the deployment, with a certified sampling bound; fairing depth per
 //! station.
 
-use anyhow::{Context, Result};
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::parts::{Part as MeshPart, PartKind};
 use flapwright_interference::{
@@ -10,6 +9,7 @@ use flapwright_interference::{
     InterferenceReport, Part, Requirements, SweepSettings,
 };
 
+use crate::error::{Error, Result};
 use crate::pipeline::flap_motion::fitted_flap_motion;
 use crate::pipeline::record::{PlacedStation, StationRecord};
 use crate::pipeline::WingCache;
@@ -40,10 +40,9 @@ pub fn assembly(
     shapes: &WingCache,
 ) -> Result<(Assembly, Requirements, SweepSettings)> {
     fn placed(record: &StationRecord) -> Result<&PlacedStation> {
-        record
-            .placed
-            .as_ref()
-            .with_context(|| format!("station {} is not placed", record.station))
+        record.placed.as_ref().ok_or_else(|| Error::StationNotPlaced {
+            station: record.station.clone(),
+        })
     }
     let mut fixed = Vec::new();
     let mut skins = Vec::new();
@@ -54,9 +53,10 @@ pub fn assembly(
     let mut flap_meshes: Vec<&flapwright_geom::TriMesh> = Vec::new();
     let mut aft_meshes: Vec<&flapwright_geom::TriMesh> = Vec::new();
     for part in meshed {
-        let shape = shapes
-            .shape_of(&part.mesh)
-            .with_context(|| format!("collision shape of {}", part.name))?;
+        let shape = shapes.shape_of(&part.mesh).map_err(|source| Error::CollisionShape {
+            part: part.name.clone(),
+            source,
+        })?;
         match part.kind {
             PartKind::Flap => {
                 flaps.push(moving_flap(part, shape, records)?);
@@ -171,13 +171,12 @@ pub fn moving_flap(part: &MeshPart, shape: CollisionShape, records: &[StationRec
         .filter(|record| record.flap.as_deref() == Some(flap))
         .collect();
     let Some(first) = carriers.first() else {
-        anyhow::bail!("flap {flap} has no station");
+        return Err(Error::FlapWithoutStation { flap: flap.to_string() });
     };
     if carriers.len() == 1 {
-        let placed = first
-            .placed
-            .as_ref()
-            .with_context(|| format!("station {} is not placed", first.station))?;
+        let placed = first.placed.as_ref().ok_or_else(|| Error::StationNotPlaced {
+            station: first.station.clone(),
+        })?;
         // One station: the flap follows its planar displacement exactly.
         Ok(flap_part(
             &part.name,
@@ -198,7 +197,9 @@ fn flap_element(part: &MeshPart) -> Result<(&str, FlapElement)> {
     match part.flap_element() {
         Some((flap, false)) => Ok((flap, FlapElement::Main)),
         Some((flap, true)) => Ok((flap, FlapElement::Aft)),
-        None => anyhow::bail!("part {} is not a flap element", part.name),
+        None => Err(Error::NotAFlapElement {
+            part: part.name.clone(),
+        }),
     }
 }
 
@@ -241,7 +242,10 @@ pub fn fairing_depths(
         let depth = fairing_depth(&contour, flap_chord_m, &parameters, points, |t| {
             planar_parts(mechanism, t)
         })
-        .with_context(|| format!("fairing depth at station {}", record.station))?;
+        .map_err(|source| Error::FairingDepth {
+            station: record.station.clone(),
+            source,
+        })?;
         record.fairing = Some(depth);
         Ok(())
     })

@@ -9,7 +9,6 @@
 //! material's density (the actuator's solids at `sizing.screw_material`, every other solid
 //! at `sizing.link_material`), marked [`MassBasis::Drawn`].
 
-use anyhow::{Context, Result};
 use flapwright_geom::TriMesh;
 use std::sync::Arc;
 
@@ -17,6 +16,7 @@ use flapwright_interference::{station_parts, Motion, StationParts};
 use flapwright_mechanism::seam::BodyRole;
 use flapwright_urdf::RigidInertia;
 
+use crate::error::{Error, Result};
 use crate::pipeline::record::StationRecord;
 use crate::report::{MassBasis, MechanismPartReport};
 use crate::scene::{Scene, StlSetting};
@@ -63,7 +63,11 @@ pub fn setting_fractions(scene: &Scene, records: &[StationRecord], setting: StlS
             let mechanism = record.mechanism.as_ref();
             let input = mechanism
                 .input_at_deflection(deflection_deg.to_radians())
-                .with_context(|| format!("station {} at {deflection_deg} deg", record.station))?;
+                .map_err(|source| Error::SettingInput {
+                    station: record.station.clone(),
+                    deflection_deg,
+                    source,
+                })?;
             Ok(mechanism.input_range().fraction(input))
         })
         .collect()
@@ -82,10 +86,9 @@ pub fn build(
     let link = crate::pipeline::sizing::material(scene, &scene.sizing.link_material)?;
     let mut solids = Vec::new();
     for (record, &fraction) in records.iter().zip(fractions) {
-        let placed = record
-            .placed
-            .as_ref()
-            .with_context(|| format!("station {} is not placed", record.station))?;
+        let placed = record.placed.as_ref().ok_or_else(|| Error::StationNotPlaced {
+            station: record.station.clone(),
+        })?;
         let parts: StationParts = station_parts(
             &record.station,
             record.flap.as_deref(),
@@ -102,7 +105,7 @@ pub fn build(
             let properties = part
                 .part
                 .compute_mass_properties_ac(density, fraction)?
-                .with_context(|| format!("{name} holds no volume"))?;
+                .ok_or_else(|| Error::NoVolume { part: name.clone() })?;
             let solid_name = name.strip_prefix(&format!("{}.", record.station)).unwrap_or(&name);
             let sized_mass = sized
                 .and_then(|s| {
@@ -179,8 +182,10 @@ pub fn move_flap_files(
         let Some(first) = records.iter().position(|r| r.flap.as_deref() == Some(flap)) else {
             continue;
         };
-        let shape = flapwright_geom::CollisionShape::from_mesh(&part.mesh)
-            .with_context(|| format!("collision shape of {}", part.name))?;
+        let shape = flapwright_geom::CollisionShape::from_mesh(&part.mesh).map_err(|source| Error::CollisionShape {
+            part: part.name.clone(),
+            source,
+        })?;
         let motion = crate::pipeline::interference::moving_flap(part, shape, records)?.motion;
         let displacement = motion.pose_ac(fractions[first])? * motion.pose_ac(0.0)?.inverse();
         let mesh = part.mesh.transformed(&displacement);

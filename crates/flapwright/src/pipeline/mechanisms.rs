@@ -1,11 +1,11 @@
 //! Mechanism stage: synthesise each station's mechanism and sweep it under every load case.
 
-use anyhow::Result;
 use std::f64::consts::TAU;
 
 use flapwright_mechanism::seam::{Actuator, InputQuantity};
 use flapwright_mechanism::{sweep_deployment, ExternalMoment, FlapMechanism, LoadCase};
 
+use crate::error::Result;
 use crate::kinds::SynthesisContext;
 use crate::pipeline::flap_position;
 use crate::pipeline::flight_loads::{self, weight_only};
@@ -57,7 +57,7 @@ pub fn synthesise_all(
             ) {
                 Ok(found) => found,
                 Err(error) => {
-                    problems.push(Problem::new(path, format!("{error:#}")));
+                    problems.push(Problem::new(path, error.chain_message()));
                     (SynthesisContext::default(), None)
                 }
             },

@@ -2,7 +2,6 @@
 //! Euler buckling), each kind's members (rods, or beams where they bend), the torque-tube
 //! line between the stations, drive power and masses.
 
-use anyhow::{Context, Result};
 use flapwright_mechanism::seam::{Actuator, MemberLoad, MemberLoading};
 use flapwright_mechanism::DeploymentSample;
 use flapwright_sizing::{
@@ -11,6 +10,7 @@ use flapwright_sizing::{
 };
 use nalgebra::{Point3, Vector3};
 
+use crate::error::{Error, Result};
 use crate::pipeline::record::{MechanismReport, StationRecord};
 use crate::scene::Scene;
 
@@ -25,7 +25,9 @@ pub(crate) fn material(scene: &Scene, name: &str) -> Result<Material> {
                 .materials
                 .iter()
                 .find(|m| m.name == custom)
-                .with_context(|| format!("material {custom} (validation should have caught this)"))?;
+                .ok_or_else(|| Error::UnknownMaterial {
+                    material: custom.to_string(),
+                })?;
             Material::try_new(
                 m.name.clone(),
                 m.density_kg_m3,

@@ -2,7 +2,6 @@
 //! perpendicular to the hinge axis at A0 = P + d), its skew and residuals, and the section
 //! cut of every part in it.
 
-use anyhow::{Context, Result};
 use flapwright_geom::parts::{Part, WingModel};
 use flapwright_planes::{
     compute_station, cut_mesh, dihedral_up_vector_ac, out_of_plane_residual_m, skew_direction_ac,
@@ -11,6 +10,7 @@ use flapwright_planes::{
 };
 use nalgebra::{Isometry3, Point3, Vector3};
 
+use crate::error::{Error, Result};
 use crate::pipeline::flap_position;
 use crate::pipeline::record::{PlacedStation, StationRecord};
 use crate::scene::Scene;
@@ -52,7 +52,10 @@ pub fn attachment_residuals(records: &mut [StationRecord]) -> Result<()> {
             &carriers,
             &attachments_ac,
         )
-        .with_context(|| format!("the fitted motion of flap {flap}"))?;
+        .map_err(|source| Error::FittedFlapMotion {
+            flap: flap.to_string(),
+            source: Box::new(source),
+        })?;
         let poses = (0..=RESIDUAL_SAMPLES)
             .map(|k| Ok(motion.fit_at(k as f64 / RESIDUAL_SAMPLES as f64)?.motion))
             .collect::<Result<Vec<_>>>()?;
@@ -82,12 +85,17 @@ pub fn attachment_residuals(records: &mut [StationRecord]) -> Result<()> {
 
 fn place(scene: &Scene, model: &WingModel, parts: &[Part], index: usize, dihedral_rad: f64) -> Result<PlacedStation> {
     let station = &scene.station[index];
-    let flap_name = station.flap.as_deref().context("station has no flap")?;
+    let flap_name = station.flap.as_deref().ok_or_else(|| Error::StationWithoutFlap {
+        station: station.name.clone(),
+    })?;
     let flap_index = scene
         .flap
         .iter()
         .position(|f| f.name == flap_name)
-        .context("station names an unknown flap")?;
+        .ok_or_else(|| Error::UnknownFlap {
+            station: station.name.clone(),
+            flap: flap_name.to_string(),
+        })?;
     let flap_scene = &scene.flap[flap_index];
     let flap = &model.flaps()[flap_index];
     let (point_ac, direction_ac) = flap.hinge_axis_ac();
@@ -97,8 +105,10 @@ fn place(scene: &Scene, model: &WingModel, parts: &[Part], index: usize, dihedra
     let (inboard_y, _) = flap.body_span_m(model.wing())?;
     let inner_side = Plane::try_new(Point3::new(0.0, inboard_y, 0.0), Vector3::y())?;
     let offset = station.axis_offset_m.unwrap_or(0.0);
-    let constructed = thesis_stations(&axis, &inner_side, offset, &[0.0])
-        .with_context(|| format!("placing station {}", station.name))?;
+    let constructed = thesis_stations(&axis, &inner_side, offset, &[0.0]).map_err(|source| Error::PlacingStation {
+        station: station.name.clone(),
+        source,
+    })?;
     let a0_ac = constructed.a0_ac;
     let settings = [0.0, flap_scene.settings.takeoff_deg, flap_scene.settings.landing_deg]
         .map(|deg| FlapSetting {
@@ -125,7 +135,10 @@ fn place(scene: &Scene, model: &WingModel, parts: &[Part], index: usize, dihedra
         dihedral_rad,
         RESIDUAL_SAMPLES,
     )
-    .with_context(|| format!("station {}", station.name))?;
+    .map_err(|source| Error::ComputingStation {
+        station: station.name.clone(),
+        source,
+    })?;
     Ok(PlacedStation {
         sections: cut_parts(parts, &placed)?,
         station: placed,
@@ -141,7 +154,10 @@ fn cut_parts(parts: &[Part], station: &Station) -> Result<Vec<Section>> {
         .map(|part| cut_mesh(&part.mesh, &station.frame, &part.name))
         .filter(|cut| !matches!(cut, Ok(section) if section.polygons.is_empty()))
         .collect::<flapwright_planes::Result<Vec<_>>>()
-        .with_context(|| format!("cutting the parts at station {}", station.name))
+        .map_err(|source| Error::CuttingParts {
+            station: station.name.clone(),
+            source,
+        })
 }
 
 /// Gives every station the 3D poses its flap's settings ask for
@@ -166,15 +182,19 @@ pub fn apply_flap_motion(
             continue;
         }
         let name = &scene.station[i].name;
-        let [_, landing] = poses.with_context(|| {
-            format!("station {name}: a skew-corrected plane needs its flap's take-off and landing gap and overlap")
-        })?;
+        let [_, landing] = poses.ok_or_else(|| Error::SkewWithoutSettings { station: name.clone() })?;
         let origin = station.station.frame.origin_ac();
         let dihedral_rad = model.wing().dihedral_rad_at(origin.y)?;
-        let skew = skew_direction_ac(&origin, &(landing * origin))
-            .with_context(|| format!("station {name}: the skew direction of its landing motion"))?;
-        let normal = skewed_plane_normal_ac(&skew, &dihedral_up_vector_ac(dihedral_rad))
-            .with_context(|| format!("station {name}: the skew-corrected plane"))?;
+        let skew = skew_direction_ac(&origin, &(landing * origin)).map_err(|source| Error::SkewDirection {
+            station: name.clone(),
+            source,
+        })?;
+        let normal = skewed_plane_normal_ac(&skew, &dihedral_up_vector_ac(dihedral_rad)).map_err(|source| {
+            Error::SkewCorrectedPlane {
+                station: name.clone(),
+                source,
+            }
+        })?;
         let moved = Station::try_with_normal(name, PlaneConstruction::SkewCorrected, origin, &normal)?;
         station.sections = cut_parts(parts, &moved)?;
         station.station = moved;

@@ -7,11 +7,11 @@
 
 use std::sync::{Mutex, MutexGuard};
 
-use anyhow::Result;
 use flapwright_geom::collision::CollisionShape;
 use flapwright_geom::parts::Part as MeshPart;
 use flapwright_geom::{TriMesh, WingModel};
 
+use crate::error::Result;
 use crate::pipeline::geometry;
 use crate::report::PartReport;
 use crate::scene::ResolutionScene;

@@ -3,8 +3,8 @@
 use std::path::Path;
 
 use super::files::FileSource;
+use crate::error::{Error, Result};
 
-use anyhow::{Context, Result};
 use flapwright_geom::airfoil::{Airfoil, TrailingEdge};
 
 /// Airfoil files shipped with Flapwright (`data/airfoils/`, UIUC database; see its README),
@@ -89,34 +89,41 @@ pub const AIRFOIL_COORDINATE_MARGIN: f64 = 0.1;
 /// coordinates must be of a unit-chord section: x within `AIRFOIL_COORDINATE_MARGIN` (0.1) of [0, 1], y in
 /// [-0.5, 0.5].
 pub fn load_airfoil(text: &str, files: &dyn FileSource, points_per_side: usize) -> Result<Airfoil> {
-    let airfoil = match AirfoilRef::parse(text).map_err(anyhow::Error::msg)? {
+    let airfoil = match AirfoilRef::parse(text).map_err(|message| Error::AirfoilReference { message })? {
         AirfoilRef::Naca(digits) => Airfoil::naca(&digits, points_per_side, TrailingEdge::Closed)
-            .with_context(|| format!("building NACA {digits}"))?,
+            .map_err(|source| Error::NacaAirfoil { digits, source })?,
         AirfoilRef::File(name) => {
-            let source = AirfoilRef::locate(&name, files).with_context(|| format!("airfoil file {name} not found"))?;
+            let source =
+                AirfoilRef::locate(&name, files).ok_or_else(|| Error::AirfoilFileNotFound { file: name.clone() })?;
             let parsed = match source {
                 AirfoilSource::Given(bytes) => {
-                    let bytes = bytes.with_context(|| format!("opening {name}"))?;
+                    let bytes = bytes.map_err(|source| Error::OpeningAirfoil {
+                        file: name.clone(),
+                        source,
+                    })?;
                     Airfoil::from_dat(bytes.as_slice())
                 }
                 AirfoilSource::Bundled(text) => Airfoil::from_dat(text.as_bytes()),
             };
-            let parsed = parsed.with_context(|| format!("reading airfoil file {name}"))?;
+            let parsed = parsed.map_err(|source| Error::ReadingAirfoil {
+                file: name.clone(),
+                source,
+            })?;
             let (lo, hi) = (-AIRFOIL_COORDINATE_MARGIN, 1.0 + AIRFOIL_COORDINATE_MARGIN);
             if let Some(p) = parsed
                 .points
                 .iter()
                 .find(|p| !(lo..=hi).contains(&p.x) || !(-0.5..=0.5).contains(&p.y))
             {
-                anyhow::bail!(
-                    "{name} has the point ({}, {}): an airfoil file holds a unit-chord section, x in [{lo}, {hi}] and y in [-0.5, 0.5]",
-                    crate::scene::number(p.x),
-                    crate::scene::number(p.y)
-                );
+                return Err(Error::AirfoilOffUnitChord {
+                    file: name,
+                    x: p.x,
+                    y: p.y,
+                });
             }
             parsed
                 .resampled(points_per_side)
-                .with_context(|| format!("resampling airfoil {name}"))?
+                .map_err(|source| Error::ResamplingAirfoil { file: name, source })?
         }
     };
     Ok(airfoil)

@@ -18,7 +18,7 @@ mod station;
 mod validate;
 mod wing;
 
-pub use airfoil_ref::{load_airfoil, AirfoilRef, AirfoilSource};
+pub use airfoil_ref::{load_airfoil, AirfoilRef, AirfoilSource, AIRFOIL_COORDINATE_MARGIN};
 pub use dynamics::DynamicsScene;
 pub use files::{FileSource, Folder, MemoryFiles, NoFiles};
 pub use key_path::Location;

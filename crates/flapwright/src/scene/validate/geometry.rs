@@ -69,7 +69,7 @@ impl Checker<'_> {
     /// without thickness (`NACA 0000`), is a problem at its key.
     fn airfoil_loads(&mut self, path: &str, text: &str) {
         match load_airfoil(text, self.files, self.airfoil_points_per_side) {
-            Err(error) => self.fail(path, format!("= \"{text}\": {error:#}")),
+            Err(error) => self.fail(path, format!("= \"{text}\": {}", error.chain_message())),
             Ok(airfoil) => {
                 if let Some(reason) = outline_defect(&airfoil.points) {
                     self.fail(path, format!("= \"{text}\": {reason}"));

@@ -13,7 +13,6 @@ use std::fmt;
 use std::io;
 
 use crate::scene::SceneError;
-use crate::study::{MissingSection, NoKindDesigned};
 
 /// Result with the crate's [`Error`].
 pub type Result<T, E = Error> = std::result::Result<T, E>;
@@ -639,3 +638,57 @@ mod tests {
         assert!(matches!(other.into_scene_error(), Err(Error::NoStationToStudy)));
     }
 }
+
+/// No kind could be designed: each kind's reason, on one line.
+#[derive(Debug)]
+pub struct NoKindDesigned {
+    /// The scene's name.
+    pub scene: String,
+    /// Each kind and its reason, as one line.
+    pub reasons: Vec<(String, String)>,
+    /// Every reason is a problem of the input (the scene), not of Flapwright.
+    pub input_problem: bool,
+}
+
+impl std::fmt::Display for NoKindDesigned {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let reasons: Vec<String> = self
+            .reasons
+            .iter()
+            .map(|(kind, why)| format!("{kind}: {why}"))
+            .collect();
+        write!(
+            f,
+            "study of \"{}\": no kind could be designed; {}",
+            self.scene,
+            reasons.join("; ")
+        )
+    }
+}
+
+impl std::error::Error for NoKindDesigned {}
+
+/// A section of a kind's report that a station's figures are read from is absent. Every
+/// variant is designed with a wing, kinematics, sizing and the interference check, so each
+/// section is there for every station a kind designs; one missing means a stage broke
+/// that promise, and the study says so rather than report a figure it never read (a
+/// station without sweeps would otherwise show no load, and one without pairs "clears").
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct MissingSection {
+    /// The station whose figures were being read.
+    pub station: String,
+    /// The report's key that is absent (`mechanism`, `interference`, ...).
+    pub section: &'static str,
+}
+
+impl std::fmt::Display for MissingSection {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "station {}: the kind's report has no `{}`, which the study's figures are read from",
+            self.station, self.section
+        )
+    }
+}
+
+impl std::error::Error for MissingSection {}

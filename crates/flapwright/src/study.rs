@@ -24,6 +24,8 @@ use flapwright_mechanism::Deployment;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+pub use crate::error::{MissingSection, NoKindDesigned};
+
 use crate::error::{Error, Result};
 use crate::kinds::MechanismScene;
 use crate::pipeline::record::FlapPositionReport;
@@ -375,35 +377,6 @@ pub fn requirements(scene: &Scene, text: &str, file: &str, stations: &[String]) 
     Ok(())
 }
 
-/// No kind could be designed: each kind's reason, on one line.
-#[derive(Debug)]
-pub struct NoKindDesigned {
-    /// The scene's name.
-    pub scene: String,
-    /// Each kind and its reason, as one line.
-    pub reasons: Vec<(String, String)>,
-    /// Every reason is a problem of the input (the scene), not of Flapwright.
-    pub input_problem: bool,
-}
-
-impl std::fmt::Display for NoKindDesigned {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let reasons: Vec<String> = self
-            .reasons
-            .iter()
-            .map(|(kind, why)| format!("{kind}: {why}"))
-            .collect();
-        write!(
-            f,
-            "study of \"{}\": no kind could be designed; {}",
-            self.scene,
-            reasons.join("; ")
-        )
-    }
-}
-
-impl std::error::Error for NoKindDesigned {}
-
 /// A kind's failure as one line: a scene's problems joined, any other error's chain.
 fn one_line(error: &Error) -> String {
     match error.scene_error() {
@@ -555,31 +528,6 @@ fn design_kind(
         })?;
     Ok(figures)
 }
-
-/// A section of a kind's report that a station's figures are read from is absent. Every
-/// variant is designed with a wing, kinematics, sizing and the interference check, so each
-/// section is there for every station a kind designs; one missing means a stage broke
-/// that promise, and the study says so rather than report a figure it never read (a
-/// station without sweeps would otherwise show no load, and one without pairs "clears").
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct MissingSection {
-    /// The station whose figures were being read.
-    pub station: String,
-    /// The report's key that is absent (`mechanism`, `interference`, ...).
-    pub section: &'static str,
-}
-
-impl std::fmt::Display for MissingSection {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(
-            f,
-            "station {}: the kind's report has no `{}`, which the study's figures are read from",
-            self.station, self.section
-        )
-    }
-}
-
-impl std::error::Error for MissingSection {}
 
 /// One station's figures from its kind's report.
 fn station_figures(report: &Report, station: &StationReport) -> Result<StationFigures, MissingSection> {

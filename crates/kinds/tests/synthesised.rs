@@ -615,7 +615,10 @@ fn a_link_track_weighed_by_its_load_carries_less_than_the_shallowest() {
     // not be deeper by more than the load it saves is worth at the default weight (half the
     // reference load off the actuator is worth a tenth of the flap chord).
     let flap_chord = link_track_spec().outline.flap_chord().unwrap().2;
-    assert!(weighed_depth <= depth + 0.1 * flap_chord, "{weighed_depth} against {depth}");
+    assert!(
+        weighed_depth <= depth + 0.1 * flap_chord,
+        "{weighed_depth} against {depth}"
+    );
     assert!(
         peak(&weighed) <= peak(&shallowest),
         "{} against {}",

@@ -37,4 +37,4 @@ pub use dropped_hinge::{DroppedHinge, DroppedHingeActuator, DroppedHingeSpec};
 pub use five_bar::{DoubleFlapLoads, FiveBarDimensions, FiveBarDoubleFlap, FiveBarKind, FiveBarPose, LoadedFiveBar};
 pub use four_bar::{FourBar, FourBarSpec};
 pub use hooked_track::{HookedTrack, HookedTrackSpec};
-pub use link_track::{LinkTrack, LinkTrackSpec};
+pub use link_track::{LinkTrack, LinkTrackSpec, PivotPlace};

@@ -110,11 +110,26 @@ pub struct LinkTrackSearch {
     pub feasible: usize,
 }
 
+/// Where a link-track's fixed pivot stands.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum PivotPlace {
+    /// In the wing's trailing-edge bay behind the rear spar (`003_...` Fig. 6): the link
+    /// reaches down through the lower skin and turns far (100-150 deg).
+    TrailingEdgeBay,
+    /// Outside the wing section, on a strut: below its lower skin, or aft of its lower lip
+    /// under the cove; the link hangs in the fairing.
+    OutsideWing,
+}
+
 /// What synthesis computed.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LinkTrackSynthesis {
     /// The link's fixed pivot O (m).
     pub link_pivot_m: Point2<f64>,
+    /// Where the fixed pivot stands: the mechanism's topology, which a change of input may
+    /// switch (and with it the actuator's load, by several times).
+    pub link_pivot_place: PivotPlace,
     /// The link's pivot A on the flap, stowed (m).
     pub link_flap_pivot_m: Point2<f64>,
     /// The carriage's pin C on the flap, stowed (m).
@@ -280,6 +295,11 @@ impl LinkTrack {
         let carriage_travel = found.turns.map(|t| loop_.at(t).map_or(f64::NAN, |p| p.travel));
         let synthesis = LinkTrackSynthesis {
             link_pivot_m: loop_.o,
+            link_pivot_place: if search::on_web(&spec.outline, loop_.o) {
+                PivotPlace::TrailingEdgeBay
+            } else {
+                PivotPlace::OutsideWing
+            },
             link_flap_pivot_m: loop_.a,
             carriage_m: loop_.c,
             track_direction: loop_.d.into_inner(),

@@ -619,6 +619,19 @@ fn a_link_track_weighed_by_its_load_carries_less_than_the_shallowest() {
         weighed_depth <= depth + 0.1 * flap_chord,
         "{weighed_depth} against {depth}"
     );
+    // The trade it chose from: non-dominated (deeper only where lighter-loaded), shallowest
+    // first, the chosen one of least cost among them; none without load cases.
+    let trade = &weighed.synthesis().trade;
+    assert!(!trade.is_empty() && trade.len() <= 8, "{}", trade.len());
+    for pair in trade.windows(2) {
+        assert!(pair[0].depth_below_section_m <= pair[1].depth_below_section_m);
+        assert!(pair[0].peak_torque_nm > pair[1].peak_torque_nm, "{pair:?}");
+    }
+    let chosen: Vec<_> = trade.iter().filter(|c| c.chosen).collect();
+    assert_eq!(chosen.len(), 1);
+    assert!(trade.iter().all(|c| c.cost >= chosen[0].cost));
+    assert!((chosen[0].depth_below_section_m - weighed_depth).abs() < 1e-12);
+    assert!(shallowest.synthesis().trade.is_empty());
     assert!(
         peak(&weighed) <= peak(&shallowest),
         "{} against {}",

@@ -162,6 +162,44 @@ pub struct LinkTrackSynthesis {
     pub actuator: Actuator,
     /// What the search rejected.
     pub search: LinkTrackSearch,
+    /// The refined candidates no other beats on both the fairing's depth and the
+    /// actuator's peak torque, shallowest first (at most eight; empty without load cases):
+    /// the trade the weight `[design] actuator_load_weight` chose from.
+    pub trade: Vec<LinkTrackCandidate>,
+}
+
+/// One of the non-dominated candidates of the link-track's search.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LinkTrackCandidate {
+    /// The link's fixed pivot O (m).
+    pub link_pivot_m: Point2<f64>,
+    /// The track's slope below the aft direction (rad).
+    pub track_slope_rad: f64,
+    /// The link's rotation to landing (rad).
+    pub link_rotation_rad: f64,
+    /// Depth below the stowed sections (m).
+    pub depth_below_section_m: f64,
+    /// The actuator's peak torque under the station's load cases, by virtual work (N m).
+    pub peak_torque_nm: f64,
+    /// The search's cost (depth in flap chords plus the weighted load).
+    pub cost: f64,
+    /// True for the candidate synthesis chose (the least cost).
+    pub chosen: bool,
+}
+
+impl LinkTrackCandidate {
+    fn of(candidate: &search::Found, chosen: &search::Found) -> Self {
+        let l = &candidate.loop_;
+        Self {
+            link_pivot_m: l.o,
+            track_slope_rad: (-l.d.y).atan2(-l.d.x),
+            link_rotation_rad: candidate.turns[1],
+            depth_below_section_m: candidate.depth,
+            peak_torque_nm: candidate.peak_load,
+            cost: candidate.cost,
+            chosen: candidate.cost == chosen.cost && candidate.loop_.o == chosen.loop_.o,
+        }
+    }
 }
 
 /// A link-track synthesised for one station.
@@ -218,16 +256,25 @@ impl LinkTrack {
                 }
             }
         }
-        let Some(found) = search::refine_best(&spec, feasible, flap_chord) else {
+        let Some((found, trade)) = search::refine_best(&spec, feasible, flap_chord) else {
             return Err(match (last_failure, counts.pairs) {
                 (Some((defect, detail)), 1) => failure(defect, detail),
                 _ => failure(dominant(&counts), describe(&counts)),
             });
         };
-        Self::build(spec, found, counts)
+        let trade = match spec.weighing() {
+            Some(_) => trade.iter().map(|c| LinkTrackCandidate::of(c, &found)).collect(),
+            None => Vec::new(),
+        };
+        Self::build(spec, found, counts, trade)
     }
 
-    fn build(spec: LinkTrackSpec, found: search::Found, counts: LinkTrackSearch) -> Result<Self> {
+    fn build(
+        spec: LinkTrackSpec,
+        found: search::Found,
+        counts: LinkTrackSearch,
+        trade: Vec<LinkTrackCandidate>,
+    ) -> Result<Self> {
         let loop_ = found.loop_;
         let travel = found.turns[1];
         let sense = travel.signum();
@@ -315,6 +362,7 @@ impl LinkTrack {
             placement_clear,
             actuator: spec.rotary.actuator_for(travel),
             search: counts,
+            trade,
         };
         // The flap's rate: certified on RATE_INTERVALS pieces of the deployment, or from the
         // transmission angle alone.

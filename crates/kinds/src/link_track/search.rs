@@ -74,6 +74,9 @@ pub(super) struct Found {
     /// the load cases in reference torques when the spec has them
     /// ([`flapwright_mechanism::shared::objective`]).
     pub(super) cost: f64,
+    /// The actuator's peak torque under the spec's load cases (N m, by virtual work), 0
+    /// without them.
+    pub(super) peak_load: f64,
 }
 
 /// The point whose three positions under `positions` lie on one line along `d`.
@@ -426,6 +429,7 @@ pub(super) fn check(
         }
     }
     let flap_chord = spec.outline.flap_chord().map_or(1.0, |(_, _, chord)| chord);
+    let mut peak_load = 0.0;
     let cost = match spec.weighing() {
         Some(weighing) => {
             let rotations: Vec<f64> = (0..=LOOP_SAMPLES)
@@ -436,6 +440,7 @@ pub(super) fn check(
             let peak = torques.iter().map(|t| t.unwrap_or(f64::INFINITY)).fold(0.0, f64::max);
             let poses: Vec<_> = rotations.iter().filter_map(|&phi| flap_at(phi)).collect();
             let reference = weighing.reference_force_n(&poses) * flap_chord;
+            peak_load = peak;
             weighing.cost(depth, flap_chord, peak, reference)
         }
         None => depth / flap_chord,
@@ -446,22 +451,29 @@ pub(super) fn check(
         min_transmission,
         depth,
         cost,
+        peak_load,
     })
 }
 
 /// Steps of the refinement: it halves its steps this many times at most.
 const REFINEMENTS: usize = 6;
 
-/// Grid candidates refined, the least costly of each basin (see [`refine_best`]): on the
-/// transport's landing-deflection sweep (34-36 deg by 0.2) 12 starts found `ob-inner` a
-/// 28.6 kN m link at 35 deg where 6 found 58.2, at the same study time.
-const REFINED_STARTS: usize = 12;
+/// Grid candidates refined, the least costly of each basin (see [`refine_best`]). Twelve
+/// found the transport's `ob-inner` a 28.6 kN m link at 35 deg where six find 58.2, at the
+/// same study time, but its outboard neighbour's own choice then moves their flap 2.8 mm
+/// from the wing (3 mm required): the stations of one flap must be searched together first
+/// (issue 37).
+const REFINED_STARTS: usize = 6;
 
 /// The least costly mechanism after refining the [`REFINED_STARTS`] least costly grid
 /// candidates that lie apart (pivots a tenth of the flap chord or track slopes 5 deg
 /// apart): the cost over the free choices has several basins, and the grid's best basin
 /// need not hold the best refined mechanism. `None` without a feasible candidate.
-pub(super) fn refine_best(spec: &LinkTrackSpec, mut feasible: Vec<Found>, flap_chord: f64) -> Option<Found> {
+pub(super) fn refine_best(
+    spec: &LinkTrackSpec,
+    mut feasible: Vec<Found>,
+    flap_chord: f64,
+) -> Option<(Found, Vec<Found>)> {
     feasible.sort_by(|a, b| a.cost.total_cmp(&b.cost));
     let mut starts: Vec<Found> = Vec::new();
     for found in feasible {
@@ -475,11 +487,34 @@ pub(super) fn refine_best(spec: &LinkTrackSpec, mut feasible: Vec<Found>, flap_c
             }
         }
     }
-    starts
+    let refined: Vec<Found> = starts
         .into_iter()
         .map(|start| refine(spec, start, flap_chord))
-        .min_by(|a, b| a.cost.total_cmp(&b.cost))
+        .collect();
+    let best = *refined.iter().min_by(|a, b| a.cost.total_cmp(&b.cost))?;
+    Some((best, non_dominated(refined)))
 }
+
+/// The candidates no other beats on both depth and peak load, shallowest first, at most
+/// [`TRADE_CANDIDATES`]: the trade between the fairing and the actuator a user may pick
+/// from.
+fn non_dominated(candidates: Vec<Found>) -> Vec<Found> {
+    let dominates = |a: &Found, b: &Found| {
+        a.depth <= b.depth && a.peak_load <= b.peak_load && (a.depth < b.depth || a.peak_load < b.peak_load)
+    };
+    let mut front: Vec<Found> = candidates
+        .iter()
+        .filter(|c| !candidates.iter().any(|o| dominates(o, c)))
+        .copied()
+        .collect();
+    front.sort_by(|a, b| a.depth.total_cmp(&b.depth));
+    front.dedup_by(|a, b| (a.depth - b.depth).abs() < 1e-9 && (a.peak_load - b.peak_load).abs() < 1e-9);
+    front.truncate(TRADE_CANDIDATES);
+    front
+}
+
+/// Non-dominated candidates kept for the report, at most.
+pub(super) const TRADE_CANDIDATES: usize = 8;
 
 /// The best grid candidate refined by a compass search over the free choices (the fixed
 /// pivot's two coordinates and the track's slope, each only when searched): a step either

@@ -1,9 +1,11 @@
 //! Mechanism kinds as the scene file gives them: `[station.mechanism]` picks a kind by its
 //! `kind` key, and each kind's module holds its table, the checks of its keys and its
 //! synthesis into a [`FlapMechanism`] (the seam every other stage uses). Adding a kind adds
-//! a module here, a variant, a `KINDS` name (and a `SYNTHESISED_KINDS` one if it is synthesised from
-//! the settings) and two match arms in this file, and its mechanism module in
-//! `flapwright-mechanism`: nothing that names another kind.
+//! a module here, a variant, a `KINDS` name (and a `SYNTHESISED_KINDS` one if it is
+//! synthesised from the settings) and three match arms in this file (`kind`,
+//! `is_synthesised`, the `Deserialize` impl), and its mechanism module in `flapwright-kinds`:
+//! nothing that names another kind (the README's "Adding a kind";
+//! `tests/kinds_named_once.rs` checks it).
 
 mod circular_arc_track;
 mod dropped_hinge;

@@ -6,6 +6,7 @@ mod finite_differences;
 mod five_bar;
 mod hooked_track;
 mod landing_gear;
+mod objective;
 mod planar;
 mod properties;
 mod rigid_flap;

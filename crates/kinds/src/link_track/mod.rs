@@ -235,12 +235,14 @@ impl LinkTrack {
         let mut counts = LinkTrackSearch::default();
         let carriages = search::carriages(&spec, &mut counts, flap_chord);
         let links = search::links(&spec, &mut counts, flap_chord);
+        // Built once: each candidate's cost weighs its torque under the same load cases.
+        let weighing = spec.weighing();
         let mut feasible: Vec<search::Found> = Vec::new();
         let mut last_failure = None;
         for link in &links {
             for carriage in &carriages {
                 counts.pairs += 1;
-                match search::check(&spec, *link, *carriage) {
+                match search::check(&spec, weighing.as_ref(), *link, *carriage) {
                     Ok(found) => {
                         counts.feasible += 1;
                         feasible.push(found);
@@ -256,13 +258,13 @@ impl LinkTrack {
                 }
             }
         }
-        let Some((found, trade)) = search::refine_best(&spec, feasible, flap_chord) else {
+        let Some((found, trade)) = search::refine_best(&spec, weighing.as_ref(), feasible, flap_chord) else {
             return Err(match (last_failure, counts.pairs) {
                 (Some((defect, detail)), 1) => failure(defect, detail),
                 _ => failure(dominant(&counts), describe(&counts)),
             });
         };
-        let trade = match spec.weighing() {
+        let trade = match weighing {
             Some(_) => trade.iter().map(|c| LinkTrackCandidate::of(c, &found)).collect(),
             None => Vec::new(),
         };

@@ -29,6 +29,7 @@ use super::linkage::Loop;
 use super::{LinkTrackSearch, LinkTrackSpec};
 use flapwright_mechanism::shared::feasibility::{check_deployment, DeploymentRules, LoopSample};
 use flapwright_mechanism::shared::geometry::turn_angle;
+use flapwright_mechanism::shared::objective::LoadWeighing;
 use flapwright_mechanism::shared::outline::boundary_distance;
 use flapwright_mechanism::shared::precision::PrecisionPosition;
 use flapwright_mechanism::SynthesisDefect;
@@ -317,9 +318,11 @@ pub(super) fn on_web(outline: &flapwright_mechanism::shared::outline::StationOut
 }
 
 /// The loop of a link and a carriage if it moves the flap through the settings in order,
-/// above the minimum transmission angle, clear of the trailing edge and the sections.
+/// above the minimum transmission angle, clear of the trailing edge and the sections; its
+/// cost weighs its torque by `weighing` (the spec's, built once per search) when given.
 pub(super) fn check(
     spec: &LinkTrackSpec,
+    weighing: Option<&LoadWeighing>,
     (o, a): (Point2<f64>, Point2<f64>),
     (d, c): (Unit<Vector2<f64>>, Point2<f64>),
 ) -> Result<Found, (SynthesisDefect, String)> {
@@ -430,7 +433,7 @@ pub(super) fn check(
     }
     let flap_chord = spec.outline.flap_chord().map_or(1.0, |(_, _, chord)| chord);
     let mut peak_load = 0.0;
-    let cost = match spec.weighing() {
+    let cost = match weighing {
         Some(weighing) => {
             let rotations: Vec<f64> = (0..=LOOP_SAMPLES)
                 .map(|k| turns[1] * k as f64 / LOOP_SAMPLES as f64)
@@ -471,6 +474,7 @@ const REFINED_STARTS: usize = 6;
 /// need not hold the best refined mechanism. `None` without a feasible candidate.
 pub(super) fn refine_best(
     spec: &LinkTrackSpec,
+    weighing: Option<&LoadWeighing>,
     mut feasible: Vec<Found>,
     flap_chord: f64,
 ) -> Option<(Found, Vec<Found>)> {
@@ -489,7 +493,7 @@ pub(super) fn refine_best(
     }
     let refined: Vec<Found> = starts
         .into_iter()
-        .map(|start| refine(spec, start, flap_chord))
+        .map(|start| refine(spec, weighing, start, flap_chord))
         .collect();
     let best = *refined.iter().min_by(|a, b| a.cost.total_cmp(&b.cost))?;
     Some((best, non_dominated(refined)))
@@ -522,7 +526,7 @@ pub(super) const TRADE_CANDIDATES: usize = 8;
 /// when none is, [`REFINEMENTS`] times. The grid's coarse steps make the chosen mechanism
 /// jump between neighbouring inputs (a 0.2 deg change of the landing deflection moved the
 /// transport's `ob-inner` link from 184 to 11 kN m); refined, it follows its inputs.
-pub(super) fn refine(spec: &LinkTrackSpec, best: Found, flap_chord: f64) -> Found {
+pub(super) fn refine(spec: &LinkTrackSpec, weighing: Option<&LoadWeighing>, best: Found, flap_chord: f64) -> Found {
     let l = &best.loop_;
     let mut x = [l.o.x, l.o.y, (-l.d.y).atan2(-l.d.x)];
     let free = [
@@ -535,7 +539,7 @@ pub(super) fn refine(spec: &LinkTrackSpec, best: Found, flap_chord: f64) -> Foun
     let evaluate = |x: [f64; 3]| -> Option<Found> {
         let pivot = link(spec, Point2::new(x[0], x[1]), flap_chord).ok()?;
         let track = carriage(spec, x[2], flap_chord).ok()?;
-        check(spec, pivot, track).ok()
+        check(spec, weighing, pivot, track).ok()
     };
     for _ in 0..REFINEMENTS {
         loop {

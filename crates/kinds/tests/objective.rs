@@ -1,0 +1,128 @@
+//! The synthesis objective (`flapwright_mechanism::shared::objective`): its load by virtual
+//! work against every kind's statics, and the link-track's search weighed by it.
+
+use flapwright_kinds::dropped_hinge::DroppedHinge;
+use flapwright_kinds::four_bar::FourBar;
+use flapwright_kinds::hooked_track::HookedTrack;
+use flapwright_kinds::link_track::{LinkTrack, LinkTrackSpec};
+use flapwright_mechanism::seam::FlapMechanism;
+use flapwright_mechanism::shared::objective::{LoadWeighing, DEFAULT_LOAD_WEIGHT};
+use flapwright_mechanism::{FlapNormalForce, LoadCase};
+use nalgebra::{Point2, Vector2};
+
+use crate::synthesised::model_section::{
+    dropped_hinge_spec, four_bar_spec, hooked_track_spec, link_track_spec, rotary_dropped_hinge_spec,
+};
+use crate::synthesised::{flight_load, landing_load};
+
+/// The search objective's load (`shared::objective`: minus the flap wrench's power per unit
+/// input, from central differences of the flap's poses alone) equals each kind's own
+/// statics at every sampled input: the searches weigh the load the report then prints.
+#[test]
+fn the_objectives_load_by_virtual_work_equals_each_kinds_statics() {
+    let kinds: Vec<Box<dyn FlapMechanism>> = vec![
+        Box::new(DroppedHinge::synthesise(dropped_hinge_spec()).unwrap()),
+        Box::new(DroppedHinge::synthesise(rotary_dropped_hinge_spec()).unwrap()),
+        Box::new(FourBar::synthesise(four_bar_spec()).unwrap()),
+        Box::new(LinkTrack::synthesise(link_track_spec()).unwrap()),
+        Box::new(HookedTrack::synthesise(hooked_track_spec()).unwrap()),
+    ];
+    let flight = flight_load();
+    for mechanism in &kinds {
+        let range = mechanism.input_range();
+        let weighing = LoadWeighing {
+            loads: vec![flight.clone()],
+            flap_mass: mechanism.flap_mass().unwrap(),
+            weight: DEFAULT_LOAD_WEIGHT,
+        };
+        // Inputs measured from stowed, as the objective's body rotations are.
+        let travel = range.travel();
+        let steps: Vec<f64> = (1..20).map(|k| travel * k as f64 / 20.0).collect();
+        let flap_at = |step: f64| {
+            mechanism
+                .pose(range.at_fraction(step / travel))
+                .ok()
+                .map(|pose| pose.flap)
+        };
+        let torques = weighing.body_torques(&steps, travel, &flap_at);
+        for (step, torque) in steps.iter().zip(torques) {
+            let statics = mechanism
+                .kinetostatics(range.at_fraction(step / travel), &flight)
+                .unwrap();
+            let torque = torque.unwrap();
+            let relative = (torque - statics.actuator_load.abs()).abs() / statics.actuator_load.abs();
+            // The hooked-track's flap starts turning where its roller leaves the straight
+            // lead-in for the hook (`hooked_track/rail.rs`): the flap's rate jumps there, so
+            // a central difference straddling the join is first order (4e-5 at one sample).
+            let tolerance = if mechanism.kind() == "hooked-track" { 1e-4 } else { 1e-6 };
+            assert!(
+                relative < tolerance,
+                "{}: {torque} against {}",
+                mechanism.kind(),
+                statics.actuator_load
+            );
+        }
+    }
+}
+
+/// Weighed by the load, the link-track's search may give up a little depth for a link that
+/// turns further, so its actuator carries less (the transport's `ob-inner` went from
+/// 212 kN m to 58 kN m this way).
+#[test]
+fn a_link_track_weighed_by_its_load_carries_less_than_the_shallowest() {
+    let flight = LoadCase {
+        flap_normal_force: Some(FlapNormalForce {
+            coefficients: vec![(0.0, 0.3), (35f64.to_radians(), 1.3)],
+            newtons_per_coefficient: 8000.0,
+            at_stowed_m: Point2::new(-0.12, 0.1),
+            normal_stowed: Vector2::new(0.0, 1.0),
+        }),
+        load_factor: 2.0,
+        ..landing_load()
+    };
+    let peak = |mechanism: &LinkTrack| {
+        mechanism
+            .input_range()
+            .samples(33)
+            .into_iter()
+            .map(|q| mechanism.kinetostatics(q, &flight).unwrap().actuator_load.abs())
+            .fold(0.0, f64::max)
+    };
+    let shallowest = LinkTrack::synthesise(link_track_spec()).unwrap();
+    let weighed = LinkTrack::synthesise(LinkTrackSpec {
+        design_loads: vec![flight.clone()],
+        ..link_track_spec()
+    })
+    .unwrap();
+    let (depth, weighed_depth) = (
+        shallowest.synthesis().depth_below_section_m,
+        weighed.synthesis().depth_below_section_m,
+    );
+    // Both searches refine locally, so the weighed one may even come out shallower; it may
+    // not be deeper by more than the load it saves is worth at the default weight (half the
+    // reference load off the actuator is worth a tenth of the flap chord).
+    let flap_chord = link_track_spec().outline.flap_chord().unwrap().2;
+    assert!(
+        weighed_depth <= depth + 0.1 * flap_chord,
+        "{weighed_depth} against {depth}"
+    );
+    // The trade it chose from: non-dominated (deeper only where lighter-loaded), shallowest
+    // first, the chosen one of least cost among them; none without load cases.
+    let trade = &weighed.synthesis().trade;
+    assert!(!trade.is_empty() && trade.len() <= 8, "{}", trade.len());
+    for pair in trade.windows(2) {
+        assert!(pair[0].depth_below_section_m <= pair[1].depth_below_section_m);
+        assert!(pair[0].peak_torque_nm > pair[1].peak_torque_nm, "{pair:?}");
+    }
+    let chosen: Vec<_> = trade.iter().filter(|c| c.chosen).collect();
+    assert_eq!(chosen.len(), 1);
+    assert!(trade.iter().all(|c| c.cost >= chosen[0].cost));
+    assert!((chosen[0].depth_below_section_m - weighed_depth).abs() < 1e-12);
+    assert!(shallowest.synthesis().trade.is_empty());
+    assert!(
+        peak(&weighed) <= peak(&shallowest),
+        "{} against {}",
+        peak(&weighed),
+        peak(&shallowest)
+    );
+}

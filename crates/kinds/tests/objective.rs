@@ -1,32 +1,21 @@
 //! The synthesis objective (`flapwright_mechanism::shared::objective`): its load by virtual
 //! work against every kind's statics, and the link-track's search weighed by it.
 
-use flapwright_kinds::dropped_hinge::DroppedHinge;
-use flapwright_kinds::four_bar::FourBar;
-use flapwright_kinds::hooked_track::HookedTrack;
 use flapwright_kinds::link_track::{LinkTrack, LinkTrackSpec};
 use flapwright_mechanism::seam::FlapMechanism;
 use flapwright_mechanism::shared::objective::{LoadWeighing, DEFAULT_LOAD_WEIGHT};
 use flapwright_mechanism::{FlapNormalForce, LoadCase};
 use nalgebra::{Point2, Vector2};
 
-use crate::synthesised::model_section::{
-    dropped_hinge_spec, four_bar_spec, hooked_track_spec, link_track_spec, rotary_dropped_hinge_spec,
-};
-use crate::synthesised::{flight_load, landing_load};
+use crate::synthesised::model_section::link_track_spec;
+use crate::synthesised::{flight_load, landing_load, synthesised_mechanisms};
 
 /// The search objective's load (`shared::objective`: minus the flap wrench's power per unit
 /// input, from central differences of the flap's poses alone) equals each kind's own
 /// statics at every sampled input: the searches weigh the load the report then prints.
 #[test]
 fn the_objectives_load_by_virtual_work_equals_each_kinds_statics() {
-    let kinds: Vec<Box<dyn FlapMechanism>> = vec![
-        Box::new(DroppedHinge::synthesise(dropped_hinge_spec()).unwrap()),
-        Box::new(DroppedHinge::synthesise(rotary_dropped_hinge_spec()).unwrap()),
-        Box::new(FourBar::synthesise(four_bar_spec()).unwrap()),
-        Box::new(LinkTrack::synthesise(link_track_spec()).unwrap()),
-        Box::new(HookedTrack::synthesise(hooked_track_spec()).unwrap()),
-    ];
+    let kinds = synthesised_mechanisms();
     let flight = flight_load();
     for mechanism in &kinds {
         let range = mechanism.input_range();

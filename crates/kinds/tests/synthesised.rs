@@ -27,6 +27,18 @@ pub(crate) fn landing_load() -> LoadCase {
     }
 }
 
+/// The synthesised kinds on the model section: both dropped hinges, the four-bar, the
+/// link-track and the hooked-track.
+pub(crate) fn synthesised_mechanisms() -> Vec<Box<dyn FlapMechanism>> {
+    vec![
+        Box::new(DroppedHinge::synthesise(dropped_hinge_spec()).unwrap()),
+        Box::new(DroppedHinge::synthesise(rotary_dropped_hinge_spec()).unwrap()),
+        Box::new(FourBar::synthesise(four_bar_spec()).unwrap()),
+        Box::new(LinkTrack::synthesise(link_track_spec()).unwrap()),
+        Box::new(HookedTrack::synthesise(hooked_track_spec()).unwrap()),
+    ]
+}
+
 /// A flight condition's normal force at the quarter chord, C_N rising with deflection,
 /// normal to a chord with 5 deg of incidence, at a load factor of 2.5.
 pub(crate) fn flight_load() -> LoadCase {
@@ -103,13 +115,7 @@ fn four_bar_meets_its_three_precision_positions() {
 /// (two independent routes: moments of the bodies, and the velocity analysis).
 #[test]
 fn statics_and_virtual_work_agree() {
-    let kinds: Vec<Box<dyn FlapMechanism>> = vec![
-        Box::new(DroppedHinge::synthesise(dropped_hinge_spec()).unwrap()),
-        Box::new(DroppedHinge::synthesise(rotary_dropped_hinge_spec()).unwrap()),
-        Box::new(FourBar::synthesise(four_bar_spec()).unwrap()),
-        Box::new(LinkTrack::synthesise(link_track_spec()).unwrap()),
-        Box::new(HookedTrack::synthesise(hooked_track_spec()).unwrap()),
-    ];
+    let kinds = synthesised_mechanisms();
     let flight = flight_load();
     for mechanism in &kinds {
         for (input, load) in mechanism
@@ -351,13 +357,7 @@ fn a_four_bar_driven_into_a_toggle_is_reported_with_its_input() {
 /// joints that name existing bodies and solids.
 #[test]
 fn synthesised_kinds_keep_the_seams_promises() {
-    let kinds: Vec<Box<dyn FlapMechanism>> = vec![
-        Box::new(DroppedHinge::synthesise(dropped_hinge_spec()).unwrap()),
-        Box::new(DroppedHinge::synthesise(rotary_dropped_hinge_spec()).unwrap()),
-        Box::new(FourBar::synthesise(four_bar_spec()).unwrap()),
-        Box::new(LinkTrack::synthesise(link_track_spec()).unwrap()),
-        Box::new(HookedTrack::synthesise(hooked_track_spec()).unwrap()),
-    ];
+    let kinds = synthesised_mechanisms();
     for mechanism in &kinds {
         crate::seam::speed_bounds_hold(mechanism.as_ref(), 0.25);
         crate::seam::joints_name_existing(mechanism.as_ref());

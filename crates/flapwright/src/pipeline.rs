@@ -161,7 +161,7 @@ pub fn design_with_progress(
     let mut records = stages.run("synthesis", || {
         mechanisms::synthesise_all(scene, wing_model.as_ref(), placed)
     })?;
-    warnings.extend(mechanisms::flap_agreement(&records));
+    warnings.extend(mechanisms::flap_agreement(&mut records));
     if wing_model.is_some() {
         stations::attachment_residuals(&mut records)?;
         let implausible = plausibility::station_problems(scene, &records);
@@ -299,6 +299,7 @@ pub fn design_with_progress(
                 name: record.station,
                 flap: record.flap,
                 flap_position: record.flap_position,
+                flap_motion_miss: record.flap_motion_miss,
                 mechanism: record.kinematics,
                 fairing: record.fairing,
                 dynamics,

@@ -83,6 +83,10 @@ pub struct StationReport {
     pub plane: Option<flapwright_planes::StationReport>,
     /// Gap and overlap behind the main wing at the flap settings (design only).
     pub flap_position: Option<crate::pipeline::record::FlapPositionReport>,
+    /// How far this station moves its flap off the rigid motion fitted to all the flap's
+    /// stations over the deployment (absent for a flap on one station).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub flap_motion_miss: Option<crate::pipeline::record::FlapMotionMiss>,
     /// Mechanism dimensions, synthesis and one sweep per load case.
     pub mechanism: Option<crate::pipeline::record::MechanismReport>,
     /// Fairing depth: how far the mechanism reaches below the lower wing/flap contour.

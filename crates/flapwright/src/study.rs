@@ -837,6 +837,7 @@ mod tests {
             name: name.into(),
             flap: Some(flap.into()),
             plane: None,
+            flap_motion_miss: None,
             flap_position: Some(FlapPositionReport {
                 trailing_edge_st_m: [0.0, 0.0],
                 local_chord_m: 1.0,

@@ -131,18 +131,63 @@ impl FittedFlapMotion {
     /// The fit at drive fraction `fraction`: the flap's pose (maps stowed aircraft-frame
     /// points to their positions) and how far the carriers' sections are from it.
     pub fn fit_at(&self, fraction: f64) -> std::result::Result<RigidFit, flapwright_mechanism::Error> {
-        let mut targets = Vec::with_capacity(self.stowed_ac.len());
-        for (carrier, &body) in self.carriers.iter().zip(&self.carrier_bodies) {
-            let mechanism = &carrier.mechanism;
-            let pose = mechanism.pose(mechanism.input_range().at_fraction(fraction))?;
-            let moved = carrier.aircraft_from_station * lift(&FlapElement::displacement(body, &pose));
-            targets.extend(carrier.section_st.iter().map(|p| moved * Point3::new(p.x, p.y, 0.0)));
-        }
+        self.fit_of(&self.moved_sections(fraction)?, fraction)
+    }
+
+    /// The fit of the stowed points to `moved` (at `fraction`, for the error).
+    fn fit_of(
+        &self,
+        moved: &[Vec<Point3<f64>>],
+        fraction: f64,
+    ) -> std::result::Result<RigidFit, flapwright_mechanism::Error> {
         // The stowed points were fitted at construction, so only a non-finite pose fails.
-        fit_rigid_motion(&self.stowed_ac, &targets).map_err(|_| flapwright_mechanism::Error::NonFinite {
+        fit_rigid_motion(&self.stowed_ac, &moved.concat()).map_err(|_| flapwright_mechanism::Error::NonFinite {
             quantity: "fitted flap pose",
             input_m: fraction,
         })
+    }
+
+    /// Each carrier's section points (aircraft frame) as its own mechanism moves them at
+    /// drive fraction `fraction`.
+    fn moved_sections(&self, fraction: f64) -> std::result::Result<Vec<Vec<Point3<f64>>>, flapwright_mechanism::Error> {
+        self.carriers
+            .iter()
+            .zip(&self.carrier_bodies)
+            .map(|(carrier, &body)| {
+                let mechanism = &carrier.mechanism;
+                let pose = mechanism.pose(mechanism.input_range().at_fraction(fraction))?;
+                let moved = carrier.aircraft_from_station * lift(&FlapElement::displacement(body, &pose));
+                Ok(carrier
+                    .section_st
+                    .iter()
+                    .map(|p| moved * Point3::new(p.x, p.y, 0.0))
+                    .collect())
+            })
+            .collect()
+    }
+
+    /// The fit at drive fraction `fraction` and, per carrier (in the order given), the
+    /// largest distance (m) of its section points, as its own mechanism moves them, from
+    /// where the fitted motion puts them: how far each station pulls the flap off the
+    /// rigid motion its attachments must take up.
+    pub fn carrier_misses_at(
+        &self,
+        fraction: f64,
+    ) -> std::result::Result<(RigidFit, Vec<f64>), flapwright_mechanism::Error> {
+        let moved = self.moved_sections(fraction)?;
+        let fit = self.fit_of(&moved, fraction)?;
+        let mut stowed = self.stowed_ac.iter();
+        let misses = moved
+            .iter()
+            .map(|section| {
+                section
+                    .iter()
+                    .zip(stowed.by_ref())
+                    .map(|(moved_ac, stowed_ac)| (moved_ac - fit.motion * stowed_ac).norm())
+                    .fold(0.0, f64::max)
+            })
+            .collect();
+        Ok((fit, misses))
     }
 }
 

@@ -148,6 +148,7 @@ pub fn link_track_spec() -> LinkTrackSpec {
         outline,
         design_loads: Vec::new(),
         load_weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
+        follow: None,
     }
 }
 

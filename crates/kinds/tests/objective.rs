@@ -115,3 +115,85 @@ fn a_link_track_weighed_by_its_load_carries_less_than_the_shallowest() {
         peak(&shallowest)
     );
 }
+
+/// The flap poses of `mechanism` at `samples` + 1 evenly spaced drive fractions.
+fn flap_poses(mechanism: &LinkTrack, samples: usize) -> Vec<nalgebra::Isometry2<f64>> {
+    let range = mechanism.input_range();
+    (0..=samples)
+        .map(|k| {
+            mechanism
+                .pose(range.at_fraction(k as f64 / samples as f64))
+                .unwrap()
+                .flap
+        })
+        .collect()
+}
+
+/// A link-track told to follow a motion (`shared::follow`, the flap's first station's as
+/// this plane sees it) picks the mechanism nearest it: given its own unconstrained choice's
+/// motion, it finds that mechanism again (within the search's resolution); given the motion
+/// of another link-track through the same settings (its pivot fixed elsewhere), it ends
+/// nearer that motion than its own choice is.
+#[test]
+fn a_link_track_follows_the_motion_it_is_given() {
+    use flapwright_mechanism::shared::follow::{FollowedMotion, MISS_CHORD_FRACTIONS};
+    use flapwright_mechanism::shared::outline::FlapPoint;
+    let own = LinkTrack::synthesise(link_track_spec()).unwrap();
+    let outline = &link_track_spec().outline;
+    let points: Vec<Point2<f64>> = MISS_CHORD_FRACTIONS
+        .iter()
+        .map(|&chord_fraction| {
+            outline
+                .flap_point(FlapPoint {
+                    chord_fraction,
+                    depth_fraction: 0.0,
+                })
+                .unwrap()
+        })
+        .collect();
+    let miss_of = |follower: &LinkTrack, motion: &FollowedMotion| {
+        let range = follower.input_range();
+        motion.miss(&points, &|s| follower.pose(range.at_fraction(s)).ok().map(|p| p.flap))
+    };
+    let motion_of = |lead: &LinkTrack| FollowedMotion {
+        station: "lead".into(),
+        flap_poses: flap_poses(lead, 24),
+        attachments: lead.flap_attachments().iter().map(|a| a.position).collect(),
+    };
+    // Its own motion: found again.
+    let motion = motion_of(&own);
+    assert_eq!(miss_of(&own, &motion), 0.0);
+    let again = LinkTrack::synthesise(LinkTrackSpec {
+        follow: Some(motion.clone()),
+        ..link_track_spec()
+    })
+    .unwrap();
+    let followed = again.synthesis().followed.clone().unwrap();
+    assert_eq!(followed.station, "lead");
+    assert!((followed.miss_m - miss_of(&again, &motion)).abs() < 1e-12);
+    assert!(followed.miss_m < 1e-3, "{}", followed.miss_m);
+    // Another link-track's motion through the same settings: its pivot a fifth of the flap
+    // chord from the unconstrained choice's.
+    let chord = outline.flap_chord().unwrap().2;
+    let pivot = own.synthesis().link_pivot_m;
+    let other = [Vector2::new(0.2, 0.0), Vector2::new(-0.2, 0.0), Vector2::new(0.0, -0.2)]
+        .iter()
+        .find_map(|offset| {
+            LinkTrack::synthesise(LinkTrackSpec {
+                link_pivot: Some(pivot + offset * chord),
+                ..link_track_spec()
+            })
+            .ok()
+        })
+        .expect("a link-track with its pivot moved");
+    let motion = motion_of(&other);
+    let unconstrained = miss_of(&own, &motion);
+    let follower = LinkTrack::synthesise(LinkTrackSpec {
+        follow: Some(motion.clone()),
+        ..link_track_spec()
+    })
+    .unwrap();
+    let miss = miss_of(&follower, &motion);
+    assert!(unconstrained > 1e-3, "the two motions differ: {unconstrained}");
+    assert!(miss < 0.5 * unconstrained, "{miss} against {unconstrained}");
+}

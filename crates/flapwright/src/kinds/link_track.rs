@@ -90,6 +90,7 @@ impl KindScene for LinkTrackScene {
             outline: flap.outline.clone(),
             design_loads: context.design_loads.clone(),
             load_weight: context.actuator_load_weight,
+            follow: context.followed.clone(),
         };
         LinkTrack::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)

@@ -47,6 +47,10 @@ pub struct SynthesisContext {
     /// from them, so that the stations of one rigid flap move it alike (two four-bars
     /// searched apart move it on paths centimetres apart between the settings).
     pub companion: Option<Companion>,
+    /// The rigid motion the flap's first synthesised station gives it, as this station's
+    /// plane sees it (`pipeline::flap_motion::followed_motion`): a kind whose free choices
+    /// shape the flap's path between the settings searches for the mechanism nearest it.
+    pub followed: Option<flapwright_mechanism::shared::follow::FollowedMotion>,
     /// The scene's load cases at this station (its share of its flap's flight load; the
     /// flap's weight alone when the scene gives none): the searches weigh the actuator's
     /// load under them.

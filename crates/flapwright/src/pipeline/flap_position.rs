@@ -260,6 +260,7 @@ pub fn synthesis_context(
                 nalgebra::Vector2::new(-frame.x_axis_ac().z, -frame.y_axis_ac().z)
             }),
             companion: None,
+            followed: None,
             design_loads: Vec::new(),
             actuator_load_weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
         },

@@ -9,7 +9,9 @@ use crate::error::Result;
 use crate::kinds::SynthesisContext;
 use crate::pipeline::flap_position;
 use crate::pipeline::flight_loads::{self, weight_only};
-use crate::pipeline::record::{flaps_on_several_stations, MechanismReport, PlacedStation, StationRecord};
+use crate::pipeline::record::{
+    flaps_on_several_stations, FlapMotionMiss, MechanismReport, PlacedStation, StationRecord,
+};
 use crate::scene::{Problem, Scene, SceneError};
 use flapwright_geom::parts::WingModel;
 
@@ -98,6 +100,9 @@ pub fn synthesise_all(
     }
     let mut built = Vec::new();
     let mut companions: Vec<(String, crate::kinds::Companion)> = Vec::new();
+    // Per flap, the station synthesised first (its index in `built`) and its take-off: the
+    // flap's other stations follow its motion (`SynthesisContext::followed`).
+    let mut leads: Vec<(String, usize, flapwright_mechanism::PrecisionPosition)> = Vec::new();
     for ((i, station), (placed, mut context, flap_behind_wing, rigid_flap)) in
         scene.station.iter().enumerate().zip(inputs)
     {
@@ -105,8 +110,18 @@ pub fn synthesise_all(
         let kind = station.mechanism.kind();
         let flap = station.flap.clone().unwrap_or_default();
         context.companion = companions.iter().find(|(f, _)| *f == flap).map(|(_, c)| c.clone());
+        let lead = leads.iter().find(|(f, _, _)| *f == flap);
+        context.followed = match (lead, &placed) {
+            (Some((_, index, takeoff)), Some(placed)) => {
+                crate::pipeline::flap_motion::followed_motion(&built[*index], takeoff, placed, &flap)
+            }
+            _ => None,
+        };
         match kind.synthesise(&context) {
             Ok(mechanism) => {
+                if let (None, Some((takeoff, _)), false) = (lead, context.settings, flap.is_empty()) {
+                    leads.push((flap.clone(), built.len(), takeoff));
+                }
                 if context.companion.is_none() {
                     if let Some(outline) = &context.outline {
                         let attachments = mechanism
@@ -152,6 +167,7 @@ pub fn synthesise_all(
                     fairing: None,
                     kinematics: None,
                     flap_load_share: shares.get(i).copied().flatten(),
+                    flap_motion_miss: None,
                 })
             }
             Err(message) => problems.push(Problem { path, message }),
@@ -260,12 +276,15 @@ pub const FLAP_FIT_WARNING_CHORD_FRACTION: f64 = 0.005;
 /// Drive fractions the fitted flap motion is sampled at for [`flap_agreement`].
 const FLAP_FIT_SAMPLES: usize = 32;
 
-/// Warnings where the stations of one rigid flap move it in ways no rigid motion follows:
-/// the flap moves by the motion fitted to them all (the interference check's,
-/// `flapwright_interference::FittedFlapMotion`), and the stations' sections miss it by up to
-/// the fit's largest residual.
-pub fn flap_agreement(records: &[StationRecord]) -> Vec<String> {
+/// Measures, per station of a flap carried by several, how far it moves the flap off the
+/// rigid motion fitted to them all (`StationRecord::flap_motion_miss`), and warns where
+/// they move it more than [`FLAP_FIT_WARNING_CHORD_FRACTION`] of the local chord apart:
+/// the flap moves by the fitted motion (the interference check's,
+/// `flapwright_interference::FittedFlapMotion`), and the stations' attachments take up
+/// the rest.
+pub fn flap_agreement(records: &mut [StationRecord]) -> Vec<String> {
     let mut warnings = Vec::new();
+    let mut misses: Vec<(usize, FlapMotionMiss)> = Vec::new();
     for (flap, carriers) in flaps_on_several_stations(records) {
         let Ok(motion) = crate::pipeline::flap_motion::fitted_flap_motion(
             flap,
@@ -275,18 +294,37 @@ pub fn flap_agreement(records: &[StationRecord]) -> Vec<String> {
         ) else {
             continue;
         };
+        let mut largest = vec![(0.0_f64, 0.0_f64); carriers.len()];
         let (mut worst, mut at) = (0.0_f64, 0.0);
         for k in 0..=FLAP_FIT_SAMPLES {
             let fraction = k as f64 / FLAP_FIT_SAMPLES as f64;
-            if let Ok(fit) = motion.fit_at(fraction) {
+            if let Ok((fit, station_misses)) = motion.carrier_misses_at(fraction) {
                 if fit.max_m > worst {
                     (worst, at) = (fit.max_m, fraction);
                 }
+                for (l, miss) in largest.iter_mut().zip(station_misses) {
+                    if miss > l.0 {
+                        *l = (miss, fraction);
+                    }
+                }
+            }
+        }
+        let chord_of = |r: &StationRecord| r.flap_behind_wing.as_ref().map(|m| m.chord_m());
+        for (record, (largest_m, at_fraction)) in carriers.iter().zip(largest) {
+            if let Some(chord) = chord_of(record) {
+                misses.push((
+                    record.index,
+                    FlapMotionMiss {
+                        largest_m,
+                        at_fraction,
+                        percent_local_chord: 100.0 * largest_m / chord,
+                    },
+                ));
             }
         }
         let chord = carriers
             .iter()
-            .filter_map(|r| r.flap_behind_wing.as_ref().map(|m| m.chord_m()))
+            .filter_map(|r| chord_of(r))
             .fold(f64::INFINITY, f64::min);
         if worst > chord * FLAP_FIT_WARNING_CHORD_FRACTION {
             let names: Vec<&str> = carriers.iter().map(|r| r.station.as_str()).collect();
@@ -297,6 +335,11 @@ pub fn flap_agreement(records: &[StationRecord]) -> Vec<String> {
                 at * 100.0,
                 FLAP_FIT_WARNING_CHORD_FRACTION * 100.0
             ));
+        }
+    }
+    for (index, miss) in misses {
+        if let Some(record) = records.iter_mut().find(|r| r.index == index) {
+            record.flap_motion_miss = Some(miss);
         }
     }
     warnings

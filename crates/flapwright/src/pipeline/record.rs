@@ -40,6 +40,23 @@ pub struct StationRecord {
     pub kinematics: Option<MechanismReport>,
     /// Its share of its flap's flight load (after the planes, with a wing).
     pub flap_load_share: Option<crate::pipeline::record::FlapLoadShare>,
+    /// How far this station moves its flap off the rigid motion fitted to all the flap's
+    /// stations (synthesis; None for a flap on one station).
+    pub flap_motion_miss: Option<FlapMotionMiss>,
+}
+
+/// How far a station's mechanism moves its flap's section off the flap's rigid motion,
+/// fitted to every station carrying the flap (`flapwright_interference::FittedFlapMotion`,
+/// the motion the interference check moves the flap by), over the deployment: what the
+/// station's attachment joints must take up.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FlapMotionMiss {
+    /// The largest distance of the station's section points from the fitted motion (m).
+    pub largest_m: f64,
+    /// The drive fraction where it is largest.
+    pub at_fraction: f64,
+    /// The largest distance as a share of the flap's local chord at the station (%).
+    pub percent_local_chord: f64,
 }
 
 /// The report's record of one station's mechanism: kind-neutral apart from `details`.

@@ -80,6 +80,11 @@ pub struct LinkTrackSpec {
     /// ([`flapwright_mechanism::shared::objective::LoadWeighing::weight`]).
     #[serde(skip)]
     pub load_weight: f64,
+    /// The motion of the station of the same flap synthesised first, as this station's
+    /// plane sees it: the search adds its miss from it to the cost
+    /// ([`flapwright_mechanism::shared::follow`]); `None`: searched alone.
+    #[serde(skip)]
+    pub follow: Option<flapwright_mechanism::shared::follow::FollowedMotion>,
 }
 
 /// Counts of what the search rejected.
@@ -162,10 +167,23 @@ pub struct LinkTrackSynthesis {
     pub actuator: Actuator,
     /// What the search rejected.
     pub search: LinkTrackSearch,
+    /// The station of the same flap whose motion this one followed, and the largest
+    /// distance (m) of this station's flap from it over the deployment, at points near the
+    /// flap's leading and trailing edges ([`flapwright_mechanism::shared::follow`]).
+    pub followed: Option<FollowedStation>,
     /// The refined candidates no other beats on both the fairing's depth and the
     /// actuator's peak torque, shallowest first (at most eight; empty without load cases):
     /// the trade the weight `[design] actuator_load_weight` chose from.
     pub trade: Vec<LinkTrackCandidate>,
+}
+
+/// See [`LinkTrackSynthesis::followed`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FollowedStation {
+    /// The station followed.
+    pub station: String,
+    /// The largest miss (m).
+    pub miss_m: f64,
 }
 
 /// One of the non-dominated candidates of the link-track's search.
@@ -181,6 +199,8 @@ pub struct LinkTrackCandidate {
     pub depth_below_section_m: f64,
     /// The actuator's peak torque under the station's load cases, by virtual work (N m).
     pub peak_torque_nm: f64,
+    /// Its largest miss from the followed station's motion (m); 0 when searched alone.
+    pub follow_miss_m: f64,
     /// The search's cost (depth in flap chords plus the weighted load).
     pub cost: f64,
     /// True for the candidate synthesis chose (the least cost).
@@ -196,6 +216,7 @@ impl LinkTrackCandidate {
             link_rotation_rad: candidate.turns[1],
             depth_below_section_m: candidate.depth,
             peak_torque_nm: candidate.peak_load,
+            follow_miss_m: candidate.follow_miss,
             cost: candidate.cost,
             chosen: candidate.cost == chosen.cost && candidate.loop_.o == chosen.loop_.o,
         }
@@ -233,8 +254,11 @@ impl LinkTrack {
         )
         .map_err(|(defect, detail)| failure(defect, detail))?;
         let mut counts = LinkTrackSearch::default();
-        let carriages = search::carriages(&spec, &mut counts, flap_chord);
-        let links = search::links(&spec, &mut counts, flap_chord);
+        let mut carriages = search::carriages(&spec, &mut counts, flap_chord);
+        let mut links = search::links(&spec, &mut counts, flap_chord);
+        let (seed_links, seed_carriages) = search::followed_seeds(&spec, flap_chord);
+        links.extend(seed_links);
+        carriages.extend(seed_carriages);
         // Built once: each candidate's cost weighs its torque under the same load cases.
         let weighing = spec.weighing();
         let mut feasible: Vec<search::Found> = Vec::new();
@@ -365,6 +389,10 @@ impl LinkTrack {
             actuator: spec.rotary.actuator_for(travel),
             search: counts,
             trade,
+            followed: spec.follow.as_ref().map(|f| FollowedStation {
+                station: f.station.clone(),
+                miss_m: found.follow_miss,
+            }),
         };
         // The flap's rate: certified on RATE_INTERVALS pieces of the deployment, or from the
         // transmission angle alone.

@@ -60,6 +60,11 @@ const FORWARD_REACH: f64 = 0.5;
 /// Largest link rotation (rad).
 const MAX_LINK_ROTATION_RAD: f64 = 150.0 * std::f64::consts::PI / 180.0;
 
+/// A link: its fixed pivot O and its flap pin A (stowed).
+pub(super) type LinkPair = (Point2<f64>, Point2<f64>);
+/// A carriage: the track's direction and the carriage pin C (stowed).
+pub(super) type CarriagePair = (Unit<Vector2<f64>>, Point2<f64>);
+
 /// A feasible loop and what it measures.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Found {
@@ -78,6 +83,8 @@ pub(super) struct Found {
     /// The actuator's peak torque under the spec's load cases (N m, by virtual work), 0
     /// without them.
     pub(super) peak_load: f64,
+    /// The largest miss from the followed motion (m), 0 without one.
+    pub(super) follow_miss: f64,
 }
 
 /// The point whose three positions under `positions` lie on one line along `d`.
@@ -309,6 +316,52 @@ pub(super) fn links(
     found
 }
 
+/// Candidates from the followed station's flap attachments
+/// ([`flapwright_mechanism::shared::follow::FollowedMotion::attachments`]): each as the
+/// link's flap pin (its fixed pivot the centre of the pin's three positions) and as the
+/// carriage (the track along its stowed-to-landing chord), where the search is free to
+/// choose them. The same link-track scaled to this section moves the flap nearly as the
+/// followed one does, and the grid may miss its basin.
+pub(super) fn followed_seeds(
+    spec: &LinkTrackSpec,
+    flap_chord: f64,
+) -> (Vec<LinkPair>, Vec<CarriagePair>) {
+    let Some(follow) = &spec.follow else {
+        return (Vec::new(), Vec::new());
+    };
+    let (takeoff, landing) = (spec.takeoff.flap, spec.landing.flap);
+    let links = follow
+        .attachments
+        .iter()
+        .filter(|_| spec.link_pivot.is_none())
+        .filter_map(|&a| flapwright_mechanism::shared::precision::circle_centre(a, takeoff * a, landing * a))
+        .filter_map(|o| link(spec, o, flap_chord).ok())
+        .collect();
+    let carriages = follow
+        .attachments
+        .iter()
+        .filter(|_| spec.track_slope_rad.is_none())
+        .filter_map(|&c| {
+            // The slope whose carriage point lies nearest c: scanned 20 deg either side of
+            // c's chord to landing by 0.05 deg (the point moves fast with the slope).
+            let d = landing * c - c;
+            let chord_slope = (-d.y).atan2(-d.x);
+            let miss = |slope: f64| {
+                carriage_point(
+                    &[spec.takeoff, spec.landing],
+                    super::track_direction(slope).into_inner(),
+                )
+                .map_or(f64::INFINITY, |p| (p - c).norm())
+            };
+            let slope = (-400..=400)
+                .map(|k| chord_slope + (0.05 * k as f64).to_radians())
+                .min_by(|a, b| miss(*a).total_cmp(&miss(*b)))?;
+            carriage(spec, slope, flap_chord).ok()
+        })
+        .collect();
+    (links, carriages)
+}
+
 /// True when the fixed pivot `o` sits in the trailing-edge bay behind the rear spar's web
 /// (inside the wing section, ahead of the cove).
 pub(super) fn on_web(outline: &flapwright_mechanism::shared::outline::StationOutline, o: Point2<f64>) -> bool {
@@ -448,6 +501,22 @@ pub(super) fn check(
         }
         None => depth / flap_chord,
     };
+    // The followed station's motion, at the same drive fractions (the link's rotation over
+    // its rotation to landing).
+    let follow_miss = spec.follow.as_ref().map_or(0.0, |follow| {
+        let points: Vec<Point2<f64>> = flapwright_mechanism::shared::follow::MISS_CHORD_FRACTIONS
+            .iter()
+            .filter_map(|&chord_fraction| {
+                spec.outline
+                    .flap_point(flapwright_mechanism::shared::outline::FlapPoint {
+                        chord_fraction,
+                        depth_fraction: 0.0,
+                    })
+            })
+            .collect();
+        follow.miss(&points, &|s| loop_.at(turns[1] * s).map(|pose| pose.flap))
+    });
+    let cost = cost + flapwright_mechanism::shared::follow::FOLLOW_WEIGHT * follow_miss / flap_chord;
     Ok(Found {
         loop_,
         turns,
@@ -455,6 +524,7 @@ pub(super) fn check(
         depth,
         cost,
         peak_load,
+        follow_miss,
     })
 }
 

@@ -18,6 +18,7 @@
 //! | [`outline`] | the station's section outlines and their distance queries | the synthesised kinds |
 //! | `members` | members to size and their loads | the seam ([`Member`](crate::seam::Member)), the kinds |
 //! | [`objective`] | what the searches weigh besides depth: the actuator's load under the load cases, by virtual work | the synthesised kinds, [`placement`] |
+//! | [`follow`] | the motion a station follows where another station of its flap was synthesised first | link-track |
 //!
 //! Every module is public: the kinds live in their own crate (`flapwright-kinds`) and
 //! reach the toolbox from there; the types the other stages name are also re-exported at
@@ -26,6 +27,7 @@
 pub mod angle;
 pub mod feasibility;
 pub mod flap_load;
+pub mod follow;
 pub mod geometry;
 pub mod load_case;
 pub mod members;

@@ -24,6 +24,7 @@ mod plausibility;
 mod plots;
 pub mod record;
 pub(crate) mod sizing;
+pub mod sizing_loop;
 pub mod stations;
 mod wing_cache;
 
@@ -158,9 +159,10 @@ pub fn design_with_progress(
         wing_model = Some(model);
     }
     // After the planes: kinds synthesised from the flap settings need the sections.
-    let mut records = stages.run("synthesis", || {
-        mechanisms::synthesise_all(scene, wing_model.as_ref(), placed)
+    let (mut records, sizing_loop, loop_warnings) = stages.run("synthesis", || {
+        sizing_loop::synthesise_sized(scene, wing_model.as_ref(), placed, &tube_path_ac)
     })?;
+    warnings.extend(loop_warnings);
     warnings.extend(mechanisms::flap_agreement(&mut records));
     if wing_model.is_some() {
         stations::attachment_residuals(&mut records)?;
@@ -321,6 +323,7 @@ pub fn design_with_progress(
         stations: station_reports,
         interference: interference_report,
         sizing: sizing_report,
+        sizing_loop,
         files: exported,
         warnings,
         timings: stages.timings,

@@ -32,6 +32,10 @@ pub struct Report {
     pub interference: Option<flapwright_interference::InterferenceReport>,
     /// Rods, screw jacks, torque tubes, drive and masses (when sizing ran).
     pub sizing: Option<flapwright_sizing::SizingReport>,
+    /// The sizing loop: how many syntheses it took until no sized member of a synthesised
+    /// kind exceeded its drawn solid (absent without a wing or a synthesised station).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sizing_loop: Option<crate::pipeline::sizing_loop::SizingLoopReport>,
     /// Files written besides the report and the STL files.
     pub files: Exports,
     /// Warnings (near-toggle, self-locking lost, ...), each naming where.

@@ -967,6 +967,7 @@ mod tests {
             stations: vec![station],
             interference: Some(interference(Vec::new(), Vec::new())),
             sizing: Some(SizingReport::assemble(Vec::new(), Vec::new(), Vec::new(), None)),
+            sizing_loop: None,
             files: Exports::default(),
             warnings: Vec::new(),
             timings: Vec::new(),

@@ -154,7 +154,7 @@ impl KindScene for DroppedHingeScene {
                     attachment_fraction: self.actuator_attachment_fraction,
                     mount: self.actuator_mount_m.map(point),
                     standoff_m: 0.5 * flap.flap_chord_m,
-                    drive: self.screw.drive(),
+                    drive: context.screw_drive(self.screw.drive()),
                 },
                 ActuatorChoice::Rotary => DroppedHingeActuator::Rotary(self.rotary.drive()),
             },

@@ -109,7 +109,7 @@ impl KindScene for FourBarScene {
             actuator_mount: self.actuator_mount_m.map(point),
             actuator_standoff_m: 0.5 * flap.flap_chord_m,
             flap_mass: flap.mass,
-            screw_drive: self.screw.drive(),
+            screw_drive: context.screw_drive(self.screw.drive()),
             hardware: flap.hardware,
             outline: flap.outline.clone(),
         };

@@ -112,7 +112,7 @@ impl KindScene for HookedTrackScene {
             lead_fraction: self.lead_fraction,
             min_transmission_angle_rad: self.min_transmission_angle_deg.to_radians(),
             flap_mass: flap.mass,
-            screw_drive: self.screw.drive(),
+            screw_drive: context.screw_drive(self.screw.drive()),
             hardware: flap.hardware,
             outline: flap.outline.clone(),
         };

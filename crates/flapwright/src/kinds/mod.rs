@@ -58,7 +58,26 @@ pub struct SynthesisContext {
     /// `[design] actuator_load_weight`: the weight of the actuator's load against the
     /// fairing's depth in the searches.
     pub actuator_load_weight: f64,
+    /// The radii the sizing loop found the drawn solids must reach at this station
+    /// (`pipeline::sizing_loop`); none on the first synthesis.
+    pub sized: SizedHardware,
 }
+
+/// Radii the sizing stage asked of a station's drawn solids (m): a synthesised kind draws
+/// its links, arms, struts and screw at least this thick, so that no sized member exceeds
+/// its drawn solid and the check sees what will be built.
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct SizedHardware {
+    /// The links', arms' and struts' radius.
+    pub link_radius_m: Option<f64>,
+    /// The screw's mean radius.
+    pub screw_mean_radius_m: Option<f64>,
+}
+
+/// The nut and the jack body are drawn at least this many times the screw's mean radius
+/// (the thread's depth, 1.25 r, and a wall round it): by default they are 3-6 times a 12 mm
+/// screw on a transport flap and need not grow with it.
+pub const NUT_TO_SCREW_RADIUS: f64 = 1.5;
 
 /// See [`SynthesisContext::companion`].
 #[derive(Debug, Clone)]
@@ -114,8 +133,35 @@ impl SynthesisContext {
                 centre_of_mass_stowed_m: centre,
                 gravity_mps2: self.gravity_mps2(),
             },
-            hardware: flapwright_mechanism::LinkHardware::for_flap_chord(flap_chord_m),
+            hardware: self.hardware_for(flap_chord_m),
         })
+    }
+
+    /// The drawn solids' sizes for a flap of chord `flap_chord_m`: scaled to the chord
+    /// ([`flapwright_mechanism::LinkHardware::for_flap_chord`]), the links as thick as the
+    /// sizing loop asked, and the nut and the jack body round a screw it thickened at least
+    /// [`NUT_TO_SCREW_RADIUS`] times its mean radius.
+    fn hardware_for(&self, flap_chord_m: f64) -> flapwright_mechanism::LinkHardware {
+        let mut hardware = flapwright_mechanism::LinkHardware::for_flap_chord(flap_chord_m);
+        if let Some(radius) = self.sized.link_radius_m {
+            hardware.link_radius_m = hardware.link_radius_m.max(radius);
+        }
+        if let Some(radius) = self.sized.screw_mean_radius_m {
+            hardware.nut_radius_m = hardware.nut_radius_m.max(NUT_TO_SCREW_RADIUS * radius);
+            hardware.jack_body_radius_m = hardware.jack_body_radius_m.max(NUT_TO_SCREW_RADIUS * radius);
+        }
+        hardware
+    }
+
+    /// `drive` with its screw as thick as the sizing loop asked.
+    pub(crate) fn screw_drive(&self, drive: ScrewDrive) -> ScrewDrive {
+        match self.sized.screw_mean_radius_m {
+            Some(radius) if radius > drive.mean_radius_m => ScrewDrive {
+                mean_radius_m: radius,
+                ..drive
+            },
+            _ => drive,
+        }
     }
 
     /// Gravity's acceleration in the station plane (m/s²): g along the aircraft's down

@@ -263,6 +263,7 @@ pub fn synthesis_context(
             followed: None,
             design_loads: Vec::new(),
             actuator_load_weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
+            sized: Default::default(),
         },
         Some(measure),
     ))

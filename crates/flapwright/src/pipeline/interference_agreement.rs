@@ -151,7 +151,7 @@ fn synthesised(text: &str, dir: &Path) -> (Scene, Vec<MeshPart>, Vec<StationReco
     let meshed = geometry::mesh_parts(&model, &scene.resolution).expect("meshes");
     let placed = stations::place_all(&scene, &model, &meshed).expect("planes");
     let placed = stations::apply_flap_motion(&scene, &model, &meshed, placed).expect("flap motion");
-    let records = mechanisms::synthesise_all(&scene, None, placed).expect("synthesis");
+    let records = mechanisms::synthesise_all(&scene, None, placed, &[]).expect("synthesis");
     (scene, meshed, records)
 }
 

@@ -2,6 +2,8 @@
 
 use std::f64::consts::TAU;
 
+use rayon::prelude::*;
+
 use flapwright_mechanism::seam::{Actuator, InputQuantity};
 use flapwright_mechanism::{sweep_deployment, ExternalMoment, FlapMechanism, LoadCase};
 
@@ -19,10 +21,14 @@ use flapwright_geom::parts::WingModel;
 /// (`placed`, in station order; empty without one); a mechanism that cannot be built from
 /// its dimensions or the flap settings is bad input, reported with the station's path like
 /// any other scene problem.
+///
+/// `sized` gives per station (scene order; missing entries are none) the radii the sizing
+/// loop asked of its drawn solids (`pipeline::sizing_loop`).
 pub fn synthesise_all(
     scene: &Scene,
     model: Option<&WingModel>,
     placed: Vec<PlacedStation>,
+    sized: &[crate::kinds::SizedHardware],
 ) -> Result<Vec<StationRecord>> {
     let mut problems = Vec::new();
     // Each station's share of its flap's flight load, before synthesis: the searches weigh
@@ -78,6 +84,7 @@ pub fn synthesise_all(
                 .collect()
         };
         context.actuator_load_weight = scene.design.actuator_load_weight;
+        context.sized = sized.get(i).copied().unwrap_or_default();
         inputs.push((placed, context, flap_behind_wing, Vec::new()));
     }
     if !problems.is_empty() {
@@ -98,29 +105,78 @@ pub fn synthesise_all(
             inputs[i].3 = change;
         }
     }
+    // The stations of one flap are synthesised in order (the first leads, the others follow
+    // it); the flaps in parallel, the results put back in station order.
+    let mut groups: Vec<(Option<String>, FlapGroup)> = Vec::new();
+    for (i, input) in inputs.into_iter().enumerate() {
+        let flap = scene.station[i].flap.clone();
+        match groups.iter_mut().find(|(f, _)| flap.is_some() && *f == flap) {
+            Some((_, group)) => group.push((i, input)),
+            None => groups.push((flap, vec![(i, input)])),
+        }
+    }
+    let mut synthesised: Vec<(usize, Vec<Problem>, Option<StationRecord>)> = groups
+        .into_par_iter()
+        .flat_map_iter(|(_, group)| synthesise_flap(scene, &shares, group))
+        .collect();
+    synthesised.sort_by_key(|(i, _, _)| *i);
     let mut built = Vec::new();
-    let mut companions: Vec<(String, crate::kinds::Companion)> = Vec::new();
-    // Per flap, the station synthesised first (its index in `built`) and its take-off: the
-    // flap's other stations follow its motion (`SynthesisContext::followed`).
-    let mut leads: Vec<(String, usize, flapwright_mechanism::PrecisionPosition)> = Vec::new();
-    for ((i, station), (placed, mut context, flap_behind_wing, rigid_flap)) in
-        scene.station.iter().enumerate().zip(inputs)
-    {
+    for (_, station_problems, record) in synthesised {
+        problems.extend(station_problems);
+        built.extend(record);
+    }
+    if problems.is_empty() && scene.structure.torque_tube.is_some() {
+        problems.extend(one_drive_speed(&built));
+    }
+    if problems.is_empty() {
+        Ok(built)
+    } else {
+        Err(SceneError::Invalid(problems).into())
+    }
+}
+
+/// What a station's synthesis starts from: its placed plane, its context, the flap behind
+/// the wing it measured and how the rigid flap moved its settings.
+type StationInput = (
+    Option<PlacedStation>,
+    SynthesisContext,
+    Option<flapwright_planes::FlapBehindWing>,
+    Vec<crate::pipeline::record::RigidFlapSetting>,
+);
+
+/// The stations of one flap, in station order, with their indices.
+type FlapGroup = Vec<(usize, StationInput)>;
+
+/// Synthesises the stations of one flap (`group`, in station order, with their indices):
+/// the first one searched alone, the others following it (`SynthesisContext::companion`,
+/// `SynthesisContext::followed`). Per station its index, its problems and its record.
+fn synthesise_flap(
+    scene: &Scene,
+    shares: &[Option<crate::pipeline::record::FlapLoadShare>],
+    group: FlapGroup,
+) -> Vec<(usize, Vec<Problem>, Option<StationRecord>)> {
+    let mut results: Vec<(usize, Vec<Problem>, Option<StationRecord>)> = Vec::new();
+    let mut companion: Option<crate::kinds::Companion> = None;
+    // The station synthesised first (its place in `results`) and its take-off.
+    let mut lead: Option<(usize, flapwright_mechanism::PrecisionPosition)> = None;
+    for (i, (placed, mut context, flap_behind_wing, rigid_flap)) in group {
+        let station = &scene.station[i];
         let path = format!("station[{i}].mechanism");
         let kind = station.mechanism.kind();
         let flap = station.flap.clone().unwrap_or_default();
-        context.companion = companions.iter().find(|(f, _)| *f == flap).map(|(_, c)| c.clone());
-        let lead = leads.iter().find(|(f, _, _)| *f == flap);
-        context.followed = match (lead, &placed) {
-            (Some((_, index, takeoff)), Some(placed)) => {
-                crate::pipeline::flap_motion::followed_motion(&built[*index], takeoff, placed, &flap)
-            }
+        let mut problems = Vec::new();
+        context.companion = companion.clone();
+        context.followed = match (&lead, &placed) {
+            (Some((index, takeoff)), Some(placed)) => results[*index]
+                .2
+                .as_ref()
+                .and_then(|record| crate::pipeline::flap_motion::followed_motion(record, takeoff, placed, &flap)),
             _ => None,
         };
-        match kind.synthesise(&context) {
+        let record = match kind.synthesise(&context) {
             Ok(mechanism) => {
-                if let (None, Some((takeoff, _)), false) = (lead, context.settings, flap.is_empty()) {
-                    leads.push((flap.clone(), built.len(), takeoff));
+                if let (None, Some((takeoff, _)), false) = (&lead, context.settings, flap.is_empty()) {
+                    lead = Some((results.len(), takeoff));
                 }
                 if context.companion.is_none() {
                     if let Some(outline) = &context.outline {
@@ -136,14 +192,11 @@ pub fn synthesise_all(
                             .map(|k| mechanism.deflection_at_input(range.at_fraction(k as f64 / samples as f64)))
                             .collect::<Result<Vec<_>, _>>();
                         if let Ok(deflections_rad) = deflections_rad {
-                            companions.push((
-                                flap,
-                                crate::kinds::Companion {
-                                    station: station.name.clone(),
-                                    attachments,
-                                    deflections_rad,
-                                },
-                            ));
+                            companion = Some(crate::kinds::Companion {
+                                station: station.name.clone(),
+                                attachments,
+                                deflections_rad,
+                            });
                         }
                     }
                 }
@@ -155,7 +208,7 @@ pub fn synthesise_all(
                     &path,
                     kind.geometry_keys(),
                 ));
-                built.push(StationRecord {
+                Some(StationRecord {
                     station: station.name.clone(),
                     index: i,
                     flap: station.flap.clone(),
@@ -170,17 +223,14 @@ pub fn synthesise_all(
                     flap_motion_miss: None,
                 })
             }
-            Err(message) => problems.push(Problem { path, message }),
-        }
+            Err(message) => {
+                problems.push(Problem { path, message });
+                None
+            }
+        };
+        results.push((i, problems, record));
     }
-    if problems.is_empty() && scene.structure.torque_tube.is_some() {
-        problems.extend(one_drive_speed(&built));
-    }
-    if problems.is_empty() {
-        Ok(built)
-    } else {
-        Err(SceneError::Invalid(problems).into())
-    }
+    results
 }
 
 /// A kind given by its dimensions (the five-bar: its range is known once it is assembled)

@@ -599,11 +599,13 @@ fn link_tracks_are_synthesised_checked_and_exported() {
 }
 
 /// The inboard flap on link-tracks (the four-bars swapped, nothing else changed): the outer
-/// station is searched for the link-track that follows the inner one's motion (synthesised
-/// first) as its own plane sees it. Searched apart, they moved the flap 39 mm apart from
-/// any rigid motion at 44 % of the deployment and the fitted flap overlapped the wing by
-/// 19.9 mm; following, each station stays within 0.2 % of the local chord of the fitted
-/// motion (7.5 and 8.7 mm measured) and the flap clears the wing.
+/// station is searched for the link-track that follows the inner one's motion as its own
+/// plane sees it, and the inner one then again, following the outer one's
+/// (`flapwright_mechanism::shared::follow`). Searched apart, they moved the flap 39 mm
+/// apart from any rigid motion at 44 % of the deployment and the fitted flap overlapped the
+/// wing by 19.9 mm; the outer one following alone left 7.5 and 8.7 mm and the flap 2.4 mm
+/// from the wing (3 mm required); following each other, each station stays within 5 mm
+/// (1.6 and 1.8 mm measured, the dropped hinges' and four-bars' floor) and the flap clears.
 #[test]
 fn the_stations_of_one_flap_on_link_tracks_move_it_as_one_body() {
     let text = scene_text().replace("kind = \"four-bar\"", "kind = \"link-track\"");
@@ -613,12 +615,15 @@ fn the_stations_of_one_flap_on_link_tracks_move_it_as_one_body() {
     assert_eq!(report["interference"]["passes"], true, "{warnings}");
     let stations = report["stations"].as_array().unwrap();
     let synthesis = |i: usize| &stations[i]["mechanism"]["details"]["synthesis"];
-    assert!(synthesis(0)["followed"].is_null(), "the first station leads");
+    assert_eq!(synthesis(0)["followed"]["station"], "ib-outer");
     assert_eq!(synthesis(1)["followed"]["station"], "ib-inner");
     for station in &stations[..2] {
         let miss = &station["flap_motion_miss"];
-        let percent = miss["percent_local_chord"].as_f64().unwrap();
-        assert!(percent < 0.2, "{}: {miss}", station["name"]);
+        assert!(
+            miss["largest_m"].as_f64().unwrap() < 0.005,
+            "{}: {miss}",
+            station["name"]
+        );
         assert!(
             miss["largest_m"].as_f64().unwrap() > 0.0,
             "a tapered flap's stations cannot agree exactly"

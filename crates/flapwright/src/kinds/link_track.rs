@@ -100,4 +100,8 @@ impl KindScene for LinkTrackScene {
     fn geometry_keys(&self) -> &'static str {
         "the flap settings, link_pivot_m and track_slope_deg"
     }
+
+    fn follows_motion(&self) -> bool {
+        true
+    }
 }

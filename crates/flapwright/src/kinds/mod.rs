@@ -395,6 +395,13 @@ pub trait KindScene {
     fn gives_actuator_mount(&self) -> bool {
         false
     }
+
+    /// True when the kind's search weighs [`SynthesisContext::followed`] (its free choices
+    /// shape the flap's path between the settings): the flap's first station is then
+    /// synthesised again, following its second, so that the two meet between their paths.
+    fn follows_motion(&self) -> bool {
+        false
+    }
 }
 
 /// `[station.mechanism]`: `kind` picks the variant, the other keys are its dimensions.

@@ -159,6 +159,10 @@ fn synthesise_flap(
     let mut companion: Option<crate::kinds::Companion> = None;
     // The station synthesised first (its place in `results`) and its take-off.
     let mut lead: Option<(usize, flapwright_mechanism::PrecisionPosition)> = None;
+    // The first station's context, to synthesise it again following the second.
+    let mut lead_context: Option<SynthesisContext> = None;
+    // Each station's take-off, in the order of `results`.
+    let mut takeoffs: Vec<Option<flapwright_mechanism::PrecisionPosition>> = Vec::new();
     for (i, (placed, mut context, flap_behind_wing, rigid_flap)) in group {
         let station = &scene.station[i];
         let path = format!("station[{i}].mechanism");
@@ -177,6 +181,7 @@ fn synthesise_flap(
             Ok(mechanism) => {
                 if let (None, Some((takeoff, _)), false) = (&lead, context.settings, flap.is_empty()) {
                     lead = Some((results.len(), takeoff));
+                    lead_context = Some(context.clone());
                 }
                 if context.companion.is_none() {
                     if let Some(outline) = &context.outline {
@@ -228,7 +233,40 @@ fn synthesise_flap(
                 None
             }
         };
+        takeoffs.push(context.settings.map(|(takeoff, _)| takeoff));
         results.push((i, problems, record));
+    }
+    // The first station searched alone chose the flap's path; the second came as near it as
+    // its own free choices allow. Where the kind follows motions, the first is searched
+    // again following the second, so that the two meet between their paths (on
+    // `transport-flap`'s inboard flap on link-tracks the second alone could not come within
+    // 8 mm of the first's path, and the fitted flap passed 2.4 mm from the wing).
+    if let (Some((first, _)), Some(context)) = (lead, lead_context) {
+        let second = results
+            .iter()
+            .enumerate()
+            .skip(first + 1)
+            .find_map(|(k, (_, _, record))| record.as_ref().map(|r| (k, r)));
+        let kind = scene.station[results[first].0].mechanism.kind();
+        if let (Some((k, second)), true) = (second, kind.follows_motion()) {
+            let flap = second.flap.clone().unwrap_or_default();
+            let takeoff = takeoffs[k];
+            let followed = match (takeoff, results[first].2.as_ref().and_then(|r| r.placed.as_ref())) {
+                (Some(takeoff), Some(placed)) => {
+                    crate::pipeline::flap_motion::followed_motion(second, &takeoff, placed, &flap)
+                }
+                _ => None,
+            };
+            if let Some(followed) = followed {
+                let context = SynthesisContext {
+                    followed: Some(followed),
+                    ..context
+                };
+                if let (Ok(mechanism), Some(record)) = (kind.synthesise(&context), results[first].2.as_mut()) {
+                    record.mechanism = mechanism;
+                }
+            }
+        }
     }
     results
 }

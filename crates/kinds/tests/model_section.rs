@@ -94,6 +94,8 @@ pub fn dropped_hinge_spec() -> DroppedHingeSpec {
         min_transmission_angle_rad: 30f64.to_radians(),
         hardware: LinkHardware::for_flap_chord(0.8),
         outline,
+        design_loads: Vec::new(),
+        load_weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
     }
 }
 

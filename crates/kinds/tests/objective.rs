@@ -197,3 +197,45 @@ fn a_link_track_follows_the_motion_it_is_given() {
     assert!(unconstrained > 1e-3, "the two motions differ: {unconstrained}");
     assert!(miss < 0.5 * unconstrained, "{miss} against {unconstrained}");
 }
+
+/// The dropped hinge's screw jack placed weighing its force under the load cases
+/// (`shared::placement::screw_jack_placement` with the spec's weighing) carries no more
+/// than the shallowest clear placement, for a fairing at most as much deeper as the load
+/// it saves is worth; and whichever jack it picks, the spanwise layout keeps the truss in
+/// the station plane, where its members' tops were placed on the lower skin.
+#[test]
+fn a_dropped_hinge_jack_weighed_by_its_load_carries_no_more_than_the_shallowest() {
+    use crate::synthesised::model_section::dropped_hinge_spec;
+    use flapwright_kinds::dropped_hinge::{DroppedHinge, DroppedHingeSpec};
+    let flight = flight_load();
+    let peak = |mechanism: &DroppedHinge| {
+        mechanism
+            .input_range()
+            .samples(33)
+            .into_iter()
+            .map(|q| mechanism.kinetostatics(q, &flight).unwrap().actuator_load.abs())
+            .fold(0.0, f64::max)
+    };
+    let shallowest = DroppedHinge::synthesise(dropped_hinge_spec()).unwrap();
+    let weighed = DroppedHinge::synthesise(DroppedHingeSpec {
+        design_loads: vec![flight.clone()],
+        ..dropped_hinge_spec()
+    })
+    .unwrap();
+    assert!(
+        peak(&weighed) <= peak(&shallowest),
+        "{} against {}",
+        peak(&weighed),
+        peak(&shallowest)
+    );
+    for mechanism in [&shallowest, &weighed] {
+        let layout = flapwright_mechanism::spanwise::spanwise_layout(mechanism).unwrap();
+        for (body, offsets) in mechanism.bodies().iter().zip(&layout) {
+            for (solid, offset) in body.solids.iter().zip(offsets) {
+                if solid.name.starts_with("truss-") {
+                    assert_eq!(*offset, 0.0, "{} stands aside", solid.name);
+                }
+            }
+        }
+    }
+}

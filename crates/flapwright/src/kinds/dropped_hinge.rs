@@ -163,6 +163,8 @@ impl KindScene for DroppedHingeScene {
             min_transmission_angle_rad: self.min_transmission_angle_deg.to_radians(),
             hardware: flap.hardware,
             outline: flap.outline.clone(),
+            design_loads: context.design_loads.clone(),
+            load_weight: context.actuator_load_weight,
         };
         DroppedHinge::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)

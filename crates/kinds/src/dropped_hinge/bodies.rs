@@ -41,7 +41,19 @@ pub(super) fn bodies_and_joints(
         capsule("truss-forward", h, synthesis.support_points_m[0]),
         capsule("truss-aft", h, synthesis.support_points_m[1]),
     ];
-    let mut hinge_contacts = vec![("truss-forward", "arm-forward"), ("truss-aft", "arm-aft")];
+    // Every arm and truss member meets the others at the hinge, the pin spanning them: they
+    // may share a layer where nothing else crosses them, rather than one truss member
+    // standing aside (a truss member the spanwise layout moved aside ended on the lower
+    // skin where the station plane cuts it, and on a swept, tapered wing went 3-8 mm into
+    // the skin in its own layer).
+    let mut hinge_contacts = vec![
+        ("truss-forward", "arm-forward"),
+        ("truss-aft", "arm-aft"),
+        ("truss-forward", "arm-aft"),
+        ("truss-aft", "arm-forward"),
+        ("arm-forward", "arm-aft"),
+        ("truss-forward", "truss-aft"),
+    ];
     let support = support_index(drive);
     let mut actuator_bodies = Vec::new();
     let mut actuator_joints = Vec::new();

@@ -71,7 +71,31 @@ pub struct DroppedHingeSpec {
     pub hardware: LinkHardware,
     /// The station's sections: the hinge must lie outside the wing.
     pub outline: StationOutline,
+    /// The station's load cases, under which the screw jack's placement weighs its force
+    /// against the fairing's depth ([`flapwright_mechanism::shared::objective`]); empty: the
+    /// shallowest clear placement.
+    #[serde(skip)]
+    pub design_loads: Vec<flapwright_mechanism::LoadCase>,
+    /// Weight of the actuator's peak load against the fairing's depth.
+    #[serde(skip)]
+    pub load_weight: f64,
 }
+
+impl DroppedHingeSpec {
+    /// How the jack's placement weighs its load: under [`Self::design_loads`] with
+    /// [`Self::load_weight`], or not at all without them.
+    pub fn weighing(&self) -> Option<flapwright_mechanism::shared::objective::LoadWeighing> {
+        (!self.design_loads.is_empty()).then(|| flapwright_mechanism::shared::objective::LoadWeighing {
+            loads: self.design_loads.clone(),
+            flap_mass: self.flap_mass,
+            weight: self.load_weight,
+        })
+    }
+}
+
+/// Where the truss's members may meet the lower skin, in flap chords ahead of the cove's
+/// lower lip, in the order the forward member tries them (the aft one the other way).
+const SUPPORT_AHEAD: [f64; 10] = [0.3, 0.25, 0.2, 0.15, 0.1, 0.05, 0.4, 0.5, 0.7, 1.0];
 
 /// What drives a dropped hinge (`003_...` Fig. 6).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -256,7 +280,7 @@ impl DroppedHinge {
             None => {
                 let poses = turning_flap(hinge, turn);
                 let flap_chord = spec.outline.flap_chord().map_or(0.0, |(_, _, c)| c);
-                let ahead = [0.3, 0.25, 0.2, 0.15, 0.1, 0.05, 0.4, 0.5, 0.7, 1.0];
+                let ahead = SUPPORT_AHEAD;
                 let first = strut_top(&spec.outline, hinge, &ahead, hw.link_radius_m, margin, &poses, None);
                 let behind: Vec<f64> = ahead.iter().rev().copied().collect();
                 let second = strut_top(&spec.outline, hinge, &behind, hw.link_radius_m, margin, &poses, first);
@@ -289,13 +313,71 @@ impl DroppedHinge {
             landing_miss_m,
         };
         let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &drive);
-        Ok(Self {
+        let dropped_hinge = Self {
             spec,
             synthesis,
             drive,
             actuator,
             bodies,
             joints,
+        };
+        Ok(dropped_hinge.with_truss_in_plane())
+    }
+
+    /// The same dropped hinge with the truss's lower-skin points moved, where the search
+    /// chose them, so that both truss members stay in the station plane in the spanwise
+    /// layout ([`flapwright_mechanism::spanwise::spanwise_layout`]): a member the layout
+    /// moves aside (because the screw jack crosses it in the plane) ends on the lower skin
+    /// where the plane cuts it, not where its own layer does, and on a swept, tapered wing
+    /// went 3-8 mm into the skin (`transport-flap` with the jack's placement weighing its
+    /// load). Of the clear tops, the pairs are tried in the search's order; unchanged when
+    /// none keeps the truss in the plane or the scene gives the points.
+    fn with_truss_in_plane(self) -> Self {
+        if self.spec.support_points.is_some() || !self.synthesis.placement_clear || self.truss_in_plane() {
+            return self;
+        }
+        let hinge = self.synthesis.hinge_m;
+        let turn = self.spec.landing.deflection_rad;
+        let poses = turning_flap(hinge, turn);
+        let radius = self.spec.hardware.link_radius_m;
+        let tops: Vec<Point2<f64>> = SUPPORT_AHEAD
+            .iter()
+            .filter_map(|&k| strut_top(&self.spec.outline, hinge, &[k], radius, radius, &poses, None))
+            .collect();
+        for (i, &forward) in tops.iter().enumerate() {
+            for &aft in tops.iter().skip(i + 1).chain(tops.iter().take(i)) {
+                if (forward - aft).norm() <= 0.04 * self.spec.outline.flap_chord().map_or(0.0, |(_, _, c)| c) {
+                    continue;
+                }
+                let mut synthesis = self.synthesis.clone();
+                synthesis.support_points_m = [forward, aft];
+                let (bodies, joints) = bodies_and_joints(&self.spec, &synthesis, &self.drive);
+                let candidate = Self {
+                    spec: self.spec.clone(),
+                    synthesis,
+                    drive: self.drive.clone(),
+                    actuator: self.actuator,
+                    bodies,
+                    joints,
+                };
+                if candidate.truss_in_plane() {
+                    return candidate;
+                }
+            }
+        }
+        self
+    }
+
+    /// True when the spanwise layout keeps both truss members in the station plane.
+    fn truss_in_plane(&self) -> bool {
+        let Ok(layout) = flapwright_mechanism::spanwise::spanwise_layout(self) else {
+            return false;
+        };
+        self.bodies.iter().zip(&layout).all(|(body, offsets)| {
+            body.solids
+                .iter()
+                .zip(offsets)
+                .all(|(solid, &offset)| !solid.name.starts_with("truss-") || offset == 0.0)
         })
     }
 

@@ -48,12 +48,17 @@ pub(super) fn screw_jack_layout(
     let hw = spec.hardware;
     let size = JackSize::new(&hw, screw_drive.mean_radius_m);
     let flap_at = |psi: f64| Some(turn_about(hinge, psi));
-    // Not weighed by the load yet: on `transport-flap` the weighed jack (loads 0.66-1.06 of
-    // the air load instead of 0.97-2.0) moves the parts' spanwise layers so that the aft
-    // truss meets the wing's lower skin (3-8 mm) at three of four stations; the placement
-    // of the truss must see the layers first (issue 37).
-    let (attachment, mount, actuator_clear) =
-        place_screw_jack(hinge, turn, choice, &size, margin, &spec.outline, &flap_at, None);
+    let weighing = spec.weighing();
+    let (attachment, mount, actuator_clear) = place_screw_jack(
+        hinge,
+        turn,
+        choice,
+        &size,
+        margin,
+        &spec.outline,
+        &flap_at,
+        weighing.as_ref(),
+    );
     let drive = RockerDrive::try_new(hinge, mount, attachment).map_err(|_| {
         failure(
             SynthesisDefect::Toggle,

@@ -69,14 +69,7 @@ fn a_link_track_weighed_by_its_load_carries_less_than_the_shallowest() {
         load_factor: 2.0,
         ..landing_load()
     };
-    let peak = |mechanism: &LinkTrack| {
-        mechanism
-            .input_range()
-            .samples(33)
-            .into_iter()
-            .map(|q| mechanism.kinetostatics(q, &flight).unwrap().actuator_load.abs())
-            .fold(0.0, f64::max)
-    };
+    let peak = |mechanism: &LinkTrack| peak_load(mechanism, &flight);
     let shallowest = LinkTrack::synthesise(link_track_spec()).unwrap();
     let weighed = LinkTrack::synthesise(LinkTrackSpec {
         design_loads: vec![flight.clone()],
@@ -208,14 +201,7 @@ fn a_dropped_hinge_jack_weighed_by_its_load_carries_no_more_than_the_shallowest(
     use crate::synthesised::model_section::dropped_hinge_spec;
     use flapwright_kinds::dropped_hinge::{DroppedHinge, DroppedHingeSpec};
     let flight = flight_load();
-    let peak = |mechanism: &DroppedHinge| {
-        mechanism
-            .input_range()
-            .samples(33)
-            .into_iter()
-            .map(|q| mechanism.kinetostatics(q, &flight).unwrap().actuator_load.abs())
-            .fold(0.0, f64::max)
-    };
+    let peak = |mechanism: &DroppedHinge| peak_load(mechanism, &flight);
     let shallowest = DroppedHinge::synthesise(dropped_hinge_spec()).unwrap();
     let weighed = DroppedHinge::synthesise(DroppedHingeSpec {
         design_loads: vec![flight.clone()],
@@ -238,4 +224,14 @@ fn a_dropped_hinge_jack_weighed_by_its_load_carries_no_more_than_the_shallowest(
             }
         }
     }
+}
+
+/// The largest actuator load of `mechanism` under `case` at 33 inputs over its deployment.
+fn peak_load(mechanism: &dyn FlapMechanism, case: &LoadCase) -> f64 {
+    mechanism
+        .input_range()
+        .samples(33)
+        .into_iter()
+        .map(|q| mechanism.kinetostatics(q, case).unwrap().actuator_load.abs())
+        .fold(0.0, f64::max)
 }

@@ -228,6 +228,8 @@ impl HookedTrack {
             })
             .collect();
         let mut last_failure = None;
+        // The last candidate the flap or the structure blocked, to show where.
+        let mut last_clearance: Option<String> = None;
         let mut open = Vec::new();
         for (index, (own, outcome)) in prepared.into_iter().enumerate() {
             counts.add(&own);
@@ -266,6 +268,9 @@ impl HookedTrack {
                 .collect();
             for (index, outcome, own) in outcomes {
                 counts.add(&own);
+                if own.flap_clearance + own.struts > 0 {
+                    last_clearance = outcome.as_ref().err().map(|(_, detail)| detail.clone());
+                }
                 match outcome {
                     Ok(found) => {
                         counts.feasible += 1;
@@ -282,7 +287,13 @@ impl HookedTrack {
         let Some(found) = best else {
             return Err(match (last_failure, counts.candidates) {
                 (Some((defect, detail)), 1) => failure(defect, detail),
-                _ => failure(dominant(&counts), describe(&counts)),
+                _ => failure(
+                    dominant(&counts),
+                    match last_clearance {
+                        Some(detail) => format!("{} (the last so blocked: {detail})", describe(&counts)),
+                        None => describe(&counts),
+                    },
+                ),
             });
         };
         Self::build(spec, found, counts)

@@ -322,7 +322,10 @@ pub(super) fn links(
 /// carriage (the track along its stowed-to-landing chord), where the search is free to
 /// choose them. The same link-track scaled to this section moves the flap nearly as the
 /// followed one does, and the grid may miss its basin.
-pub(super) fn followed_seeds(spec: &LinkTrackSpec, flap_chord: f64) -> (Vec<LinkPair>, Vec<CarriagePair>) {
+pub(super) fn followed_seeds(
+    spec: &LinkTrackSpec,
+    flap_chord: f64,
+) -> (Vec<LinkPair>, Vec<CarriagePair>) {
     let Some(follow) = &spec.follow else {
         return (Vec::new(), Vec::new());
     };

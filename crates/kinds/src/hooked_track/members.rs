@@ -154,7 +154,7 @@ impl HookedTrack {
         let on_rail = -carriage_push;
         let on_hook = -roller_push;
         let line = &self.hook_line;
-        let foot = line.len() / 2;
+        let foot = self.hook_foot;
         let clamp = line[foot];
         vec![
             (

@@ -11,7 +11,11 @@
 //! tangent to the lead-in through G's landing place. Take-off is not a precision position:
 //! its miss is reported ([`HookedTrackSynthesis::takeoff_miss_m`]). The free choices, F, G
 //! and the lead-in's share of the stroke, are the designer's or searched for the shallowest
-//! mechanism plus take-off miss.
+//! mechanism plus take-off miss. Only mechanisms whose wing-fixed solids (the rail, the
+//! screw, the jack body and the struts, with their radii) keep clear of the moving flap at
+//! every sampled pose are kept (the `clearance` module: the interference check holds them
+//! against the whole flap, not its slot); where none does, synthesis fails naming what
+//! blocked.
 //!
 //! Pose in closed form (the `rail` module). Statics: the rail holds the carriage square to
 //! itself and the screw pushes it along (Q d + N_F n at F); the lead-in holds G square to the
@@ -24,6 +28,7 @@ use nalgebra::{Isometry2, Point2, Vector2};
 use serde::Serialize;
 
 mod bodies;
+mod clearance;
 mod members;
 mod rail;
 mod search;
@@ -85,6 +90,13 @@ pub struct HookedTrackSearch {
     pub hook_radius: usize,
     /// ... whose rail or hook cuts the wing, the structure or the stowed flap.
     pub rail_through_section: usize,
+    /// ... whose rail, screw or jack body (ahead of the carriage and behind the rail) comes
+    /// nearer to the moving flap than its radius and the margin, or whose jack body or
+    /// screw meets the structure or the upper skin (see the `clearance` module).
+    pub flap_clearance: usize,
+    /// ... with no strut from the rail or from the hook clear of the structure and the
+    /// moving flap.
+    pub struts: usize,
     /// ... that failed the deployment check, by defect: toggle, branch or order, region.
     pub toggle: usize,
     /// See [`Self::toggle`].
@@ -106,6 +118,8 @@ impl HookedTrackSearch {
         self.no_hook += other.no_hook;
         self.hook_radius += other.hook_radius;
         self.rail_through_section += other.rail_through_section;
+        self.flap_clearance += other.flap_clearance;
+        self.struts += other.struts;
         self.toggle += other.toggle;
         self.branch_or_order += other.branch_or_order;
         self.region += other.region;
@@ -161,10 +175,8 @@ pub struct HookedTrackSynthesis {
     /// Where the hook's strut leaves it (m).
     pub hook_strut_foot_m: Point2<f64>,
     /// Where the struts from the rail's forward end and from the hook meet the lower skin
-    /// (m).
+    /// (the rail's, where none to the skin keeps clear, the rear spar's web) (m).
     pub strut_tops_m: [Point2<f64>; 2],
-    /// False when no default strut kept clear of the structure and the flap.
-    pub placement_clear: bool,
     /// What the search rejected.
     pub search: HookedTrackSearch,
 }
@@ -178,51 +190,10 @@ pub struct HookedTrack {
     /// The hook's centre line (`bodies::hook_centre_line`), found once: the members' loads
     /// ask for it at every sample.
     hook_line: Vec<Point2<f64>>,
+    /// The vertex of `hook_line` where the hook's strut clamps it.
+    hook_foot: usize,
     bodies: Vec<Body>,
     joints: Vec<Joint>,
-}
-
-/// Where the rail's strut meets the rear spar's web when no strut to the lower skin keeps
-/// clear: the rail starts at the stowed carriage under the flap, in the cove, where the
-/// flap's nose leaves no room for a strut up or forward to the skin; this one runs forward
-/// at the rail's height (within the web's, two strut radii from either skin) through the
-/// cove wall into the trailing-edge bay, as a track beam does, and stops short of the web
-/// by one and a half strut radii (its end fitting). Taken when, in the plane, it crosses
-/// the wing only through the bay with one and a half radii below the upper skin, keeps more
-/// than a radius from other structure (a torque tube, an intermediate spar), and its centre
-/// line stays out of the flap at every sampled pose beyond the foot it shares with the rail.
-/// Only the centre line: near the rail the strut runs, with the rail and the carriage, in
-/// the flap's lower-side slot, which the plane's outline does not show; the interference
-/// check judges the solid against the slotted flap (on the transport scene it clears the
-/// flap and the wing by 13 mm).
-fn web_strut_top(
-    spec: &HookedTrackSpec,
-    rail_start: Point2<f64>,
-    flap_poses: &[Isometry2<f64>],
-) -> Option<Point2<f64>> {
-    let outline = &spec.outline;
-    let radius = spec.hardware.link_radius_m;
-    let (face, lo, hi) = outline.rear_web()?;
-    if hi - lo <= 4.0 * radius || face <= rail_start.x {
-        return None;
-    }
-    let top = Point2::new(
-        face - 1.5 * radius,
-        rail_start.y.clamp(lo + 2.0 * radius, hi - 2.0 * radius),
-    );
-    let shared = spec.hardware.nut_radius_m + radius;
-    let length = (top - rail_start).norm();
-    if length <= shared {
-        return None;
-    }
-    let free = rail_start + (top - rail_start) * (shared / length);
-    let clear_of_flap = flap_poses.iter().all(|pose| {
-        let back = pose.inverse();
-        !outline.flap.segment_meets(back * free, back * top)
-    });
-    let clear_of_structure =
-        flapwright_mechanism::shared::outline::segment_distance(&outline.structure, free, top) > radius;
-    (outline.through_bay_only(rail_start, top, 1.5 * radius) && clear_of_structure && clear_of_flap).then_some(top)
 }
 
 fn failure(defect: SynthesisDefect, detail: String) -> Error {
@@ -257,6 +228,8 @@ impl HookedTrack {
             })
             .collect();
         let mut last_failure = None;
+        // The last candidate the flap or the structure blocked, to show where.
+        let mut last_clearance: Option<String> = None;
         let mut open = Vec::new();
         for (index, (own, outcome)) in prepared.into_iter().enumerate() {
             counts.add(&own);
@@ -295,6 +268,9 @@ impl HookedTrack {
                 .collect();
             for (index, outcome, own) in outcomes {
                 counts.add(&own);
+                if own.flap_clearance + own.struts > 0 {
+                    last_clearance = outcome.as_ref().err().map(|(_, detail)| detail.clone());
+                }
                 match outcome {
                     Ok(found) => {
                         counts.feasible += 1;
@@ -311,7 +287,13 @@ impl HookedTrack {
         let Some(found) = best else {
             return Err(match (last_failure, counts.candidates) {
                 (Some((defect, detail)), 1) => failure(defect, detail),
-                _ => failure(dominant(&counts), describe(&counts)),
+                _ => failure(
+                    dominant(&counts),
+                    match last_clearance {
+                        Some(detail) => format!("{} (the last so blocked: {detail})", describe(&counts)),
+                        None => describe(&counts),
+                    },
+                ),
             });
         };
         Self::build(spec, found, counts)
@@ -344,38 +326,12 @@ impl HookedTrack {
         } else {
             0.0
         };
-        let flap_poses: Vec<Isometry2<f64>> = (0..=flapwright_mechanism::shared::placement::PLACEMENT_SAMPLES)
-            .filter_map(|k| {
-                rail.at(rail.stroke_m * k as f64 / flapwright_mechanism::shared::placement::PLACEMENT_SAMPLES as f64)
-            })
-            .map(|p| p.flap)
-            .collect();
         let rail_ends = [
             rail.f - d * hw.nut_radius_m,
             rail.f + d * (rail.stroke_m + hw.nut_radius_m),
         ];
         let hook_line = bodies::hook_centre_line(&rail, spec.landing.flap * rail.g);
-        let hook_foot = hook_line[hook_line.len() / 2];
-        let ahead = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
-        let margin = hw.link_radius_m;
-        let strut = |from: Point2<f64>, avoid| {
-            flapwright_mechanism::shared::placement::strut_top(
-                &spec.outline,
-                from,
-                &ahead,
-                margin,
-                margin,
-                &flap_poses,
-                avoid,
-            )
-        };
-        let first = strut(rail_ends[0], None).or_else(|| web_strut_top(&spec, rail_ends[0], &flap_poses));
-        let second = strut(hook_foot, first);
-        let fallback = |p: Point2<f64>| {
-            spec.outline
-                .wing_lower_point(p.x)
-                .unwrap_or(Point2::new(p.x, p.y + 0.1))
-        };
+        let hook_foot = found.struts.hook_foot;
         let (screw, nominal_speed_mps) = spec.screw_drive.screw_for(rail.stroke_m);
         let synthesis = HookedTrackSynthesis {
             forward_attachment_m: rail.f,
@@ -400,12 +356,8 @@ impl HookedTrack {
                 .map(|end| (end - found.mount).norm())
                 .fold(0.0, f64::max),
             nominal_speed_mps,
-            hook_strut_foot_m: hook_foot,
-            strut_tops_m: [
-                first.unwrap_or_else(|| fallback(rail_ends[0])),
-                second.unwrap_or_else(|| fallback(hook_foot)),
-            ],
-            placement_clear: first.is_some() && second.is_some(),
+            hook_strut_foot_m: hook_line[hook_foot],
+            strut_tops_m: [found.struts.rail_top, found.struts.hook_top],
             search: counts,
         };
         let (bodies, joints) = bodies::bodies_and_joints(&spec, &synthesis, &rail, certified);
@@ -414,6 +366,7 @@ impl HookedTrack {
             synthesis,
             rail,
             hook_line,
+            hook_foot,
             bodies,
             joints,
         })
@@ -447,7 +400,7 @@ impl HookedTrack {
 
 /// The defect most rejections had.
 fn dominant(c: &HookedTrackSearch) -> SynthesisDefect {
-    let region = c.hook_radius + c.rail_through_section + c.region;
+    let region = c.hook_radius + c.rail_through_section + c.flap_clearance + c.struts + c.region;
     if c.no_hook >= region.max(c.toggle).max(c.branch_or_order) {
         SynthesisDefect::NoRealSolution
     } else if c.toggle >= region.max(c.branch_or_order) {
@@ -461,8 +414,8 @@ fn dominant(c: &HookedTrackSearch) -> SynthesisDefect {
 
 fn describe(c: &HookedTrackSearch) -> String {
     format!(
-        "no hooked-track found: of {} carriage, roller and lead-in choices, {} have no rail or hook, {} a hook too tight or too flat, {} a rail or hook through a section; {} fall below the minimum transmission angle, {} change branch or turn back, {} pass the trailing edge or a pivot",
-        c.candidates, c.no_hook, c.hook_radius, c.rail_through_section, c.toggle, c.branch_or_order, c.region
+        "no hooked-track found: of {} carriage, roller and lead-in choices, {} have no rail or hook, {} a hook too tight or too flat, {} a rail or hook through a section; {} fall below the minimum transmission angle, {} change branch or turn back, {} pass the trailing edge or a pivot; {} keep their rail, screw or jack body too near the moving flap (or the jack in the structure), {} find no strut clear of the structure and the flap",
+        c.candidates, c.no_hook, c.hook_radius, c.rail_through_section, c.toggle, c.branch_or_order, c.region, c.flap_clearance, c.struts
     )
 }
 
@@ -642,11 +595,9 @@ impl FlapMechanism for HookedTrack {
         Some(self.spec.flap_mass)
     }
 
+    /// None: a strut that cannot be placed clear of the flap and the structure fails
+    /// synthesis instead (it used to be a warning and a strut through the flap).
     fn warnings(&self) -> Vec<String> {
-        let mut warnings = Vec::new();
-        if !self.synthesis.placement_clear {
-            warnings.push("no default strut from the rail or the hook to the wing's lower skin kept clear of the structure and the flap at the sampled poses".into());
-        }
-        warnings
+        Vec::new()
     }
 }

@@ -12,7 +12,10 @@
 //! The search takes F and G on grids of brackets and the lead-in on a grid of fractions,
 //! keeps the rails that stay out of the sections and reach landing on one branch with the
 //! flap turning forwards only, above the minimum transmission angle and off the wing's
-//! trailing edge, and picks the one with the least fairing depth (as the fairing stage
+//! trailing edge, whose wing-fixed solids keep clear of the moving flap (the rail, the screw
+//! and the jack body, placed ahead of the carriage or behind the rail, set back along the
+//! rail's line as far as four jack lengths; the struts placed where they clear: the
+//! `clearance` module), and picks the one with the least fairing depth (as the fairing stage
 //! measures it) plus take-off miss ([`Found::cost`]). Every rejection is counted ([`HookedTrackSearch`]).
 //!
 //! Branch and bound: [`prepare`] runs the quick tests and bounds a rail's cost from below
@@ -25,6 +28,8 @@
 
 use nalgebra::Point2;
 
+use super::bodies::hook_centre_line;
+use super::clearance::{place_struts, Clearance, Struts};
 use super::rail::Rail;
 use super::{HookedTrackSearch, HookedTrackSpec};
 use flapwright_mechanism::shared::feasibility::{
@@ -39,8 +44,15 @@ pub(super) const RAIL_SAMPLES: usize = 48;
 const FORWARD_FRACTIONS: [f64; 8] = [0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4];
 /// Aft roller: chord fractions.
 const AFT_FRACTIONS: [f64; 12] = [0.35, 0.4, 0.45, 0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9];
-/// Bracket depths below the flap's lower surface, fractions of its chord.
-const DEPTHS: [f64; 5] = [0.02, 0.05, 0.1, 0.15, 0.25];
+/// Bracket depths below the flap's lower surface, fractions of its chord, for the carriage
+/// and the roller alike (their fitting's line sets the transmission). The rail runs through
+/// the carriage and must stay under the turning flap (see the `clearance` module): its aft
+/// part lies under the flap's aft part, which comes down onto it as the flap turns, so on
+/// the shipped scenes only brackets a third to two thirds of a chord deep keep it clear.
+const DEPTHS: [f64; 9] = [0.02, 0.05, 0.1, 0.15, 0.25, 0.35, 0.45, 0.55, 0.7];
+/// Places for the screw jack on the rail's line each way: next to the carriage (ahead) or
+/// to the rail's aft end (behind), then set back by one jack-body length at a time.
+const JACK_SETBACKS: usize = 5;
 /// Lead-in fractions of the stroke.
 const LEADS: [f64; 9] = [0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.5];
 /// The shortest fitting from the carriage to the roller, fraction of the flap chord: a
@@ -68,6 +80,8 @@ pub(super) struct Found {
     /// Largest distance at F and G between the flap at the take-off deflection and the
     /// take-off setting (m).
     pub(super) takeoff_miss: f64,
+    /// Where the struts stand, clear of the flap.
+    pub(super) struts: Struts,
 }
 
 impl Found {
@@ -105,13 +119,18 @@ pub(super) fn takeoff(spec: &HookedTrackSpec, rail: &Rail) -> (f64, f64) {
 }
 
 /// Attachment candidates: the given point, or a grid of brackets at `fractions`.
-fn attachments(spec: &HookedTrackSpec, given: Option<Point2<f64>>, fractions: &[f64]) -> Vec<Point2<f64>> {
+fn attachments(
+    spec: &HookedTrackSpec,
+    given: Option<Point2<f64>>,
+    fractions: &[f64],
+    depths: &'static [f64],
+) -> Vec<Point2<f64>> {
     match given {
         Some(p) => vec![p],
         None => fractions
             .iter()
             .flat_map(|&chord_fraction| {
-                DEPTHS.iter().filter_map(move |&depth_fraction| {
+                depths.iter().filter_map(move |&depth_fraction| {
                     spec.outline.flap_point(FlapPoint {
                         chord_fraction,
                         depth_fraction,
@@ -126,8 +145,8 @@ fn attachments(spec: &HookedTrackSpec, given: Option<Point2<f64>>, fractions: &[
 pub(super) fn candidates(spec: &HookedTrackSpec) -> Vec<(Point2<f64>, Point2<f64>, f64)> {
     let leads: Vec<f64> = spec.lead_fraction.map_or(LEADS.to_vec(), |l| vec![l]);
     let mut out = Vec::new();
-    for f in attachments(spec, spec.forward_attachment, &FORWARD_FRACTIONS) {
-        for g in attachments(spec, spec.aft_attachment, &AFT_FRACTIONS) {
+    for f in attachments(spec, spec.forward_attachment, &FORWARD_FRACTIONS, &DEPTHS) {
+        for g in attachments(spec, spec.aft_attachment, &AFT_FRACTIONS, &DEPTHS) {
             for &lead in &leads {
                 out.push((f, g, lead));
             }
@@ -229,7 +248,8 @@ fn fixed_blocked(spec: &HookedTrackSpec, a: Point2<f64>, b: Point2<f64>) -> bool
 }
 
 /// The rest of the check of a rail `prepare` let through: the deployment sampled (branch,
-/// order, transmission, trailing edge), the hook and the screw jack clear, the depth.
+/// order, transmission, trailing edge), the hook clear of the sections, the rail, the screw
+/// jack and the struts clear of the moving flap (`clearance`), the depth.
 pub(super) fn check(
     spec: &HookedTrackSpec,
     prepared: &Prepared,
@@ -265,6 +285,7 @@ pub(super) fn check(
     let mut hook_blocked = false;
     let mut previous_g = g;
     let mut last = None;
+    let mut poses = Vec::new();
     let strokes = stroke_samples(&rail);
     let samples = strokes.iter().map(|&s| {
         rail.at(s).map(|pose| {
@@ -274,6 +295,7 @@ pub(super) fn check(
             }
             previous_g = pose.g;
             last = Some(pose);
+            poses.push(pose.flap);
             LoopSample {
                 turn_rad: s,
                 flap: pose.flap,
@@ -294,29 +316,6 @@ pub(super) fn check(
             "the hook cuts the wing, the structure or the stowed flap".into(),
         ));
     }
-    // The jack and the screw ahead of the carriage must stay out of the moving flap.
-    let half = d * (0.5 * hw.jack_body_length_m);
-    let clear_of_flap = |mount: Point2<f64>| {
-        strokes.iter().filter_map(|&s| rail.at(s)).all(|pose| {
-            let back = pose.flap.inverse();
-            !outline.flap.segment_meets(back * (mount - half), back * (mount + half))
-                && !outline.flap.segment_meets(back * mount, back * pose.f)
-        })
-    };
-    let mount = if clear_of_flap(ahead) {
-        ahead
-    } else if clear_of_flap(behind) {
-        behind
-    } else {
-        search.region += 1;
-        return Err((
-            SynthesisDefect::PivotOutsideRegion,
-            "the flap passes through the screw jack ahead of the carriage and behind the rail".into(),
-        ));
-    };
-    depth = depth
-        .max(below(mount - half, hw.jack_body_radius_m))
-        .max(below(mount + half, hw.jack_body_radius_m));
     let reached = last.is_some_and(|pose| (pose.g - landing * g).norm() <= LANDING_MATCH * rail.span);
     if !reached {
         search.branch_or_order += 1;
@@ -325,9 +324,116 @@ pub(super) fn check(
             "the roller reaches landing on the hook's other branch".into(),
         ));
     }
+    // The wing-fixed solids, with their radii, clear of the moving flap (see `clearance`).
+    let clearance = Clearance::new(spec, poses);
+    let mut blocked = |part: &str, (k, distance): (usize, f64), radius: f64| {
+        search.flap_clearance += 1;
+        (
+            SynthesisDefect::PivotOutsideRegion,
+            format!(
+                "the {part} (radius {:.0} mm) comes {:.0} mm from the flap at {:.0} mm of the {:.0} mm stroke; it must keep {:.0} mm",
+                radius * 1e3,
+                (distance - radius).max(0.0) * 1e3,
+                strokes[k] * 1e3,
+                stroke * 1e3,
+                (clearance.reach_m(radius) - radius) * 1e3,
+            ),
+        )
+    };
+    clearance
+        .clear_of_flap(spec, rail_ends[0], rail_ends[1], hw.link_radius_m)
+        .map_err(|at| blocked("rail", at, hw.link_radius_m))?;
+    // The screw jack on the rail's line, pushing from ahead of the carriage or pulling from
+    // behind the rail: the screw from the jack over the carriage's travel and the jack body
+    // clear of the flap, the structure and the upper skin.
+    let half = d * (0.5 * hw.jack_body_length_m);
+    let screw_radius = 0.5 * hw.link_radius_m;
+    type JackBlock = (&'static str, Option<(usize, f64)>, f64);
+    let jack_clear = |mount: Point2<f64>| -> Result<(), JackBlock> {
+        let far = if (rail_ends[1] - mount).norm() > (rail_ends[0] - mount).norm() {
+            rail_ends[1]
+        } else {
+            rail_ends[0]
+        };
+        let (a, b) = (mount - half, mount + half);
+        if !clearance.clear_of_wing(spec, a, b, hw.jack_body_radius_m) {
+            return Err(("jack body", None, hw.jack_body_radius_m));
+        }
+        if !clearance.clear_of_wing(spec, mount, far, screw_radius) {
+            return Err(("screw", None, screw_radius));
+        }
+        clearance
+            .clear_of_flap(spec, a, b, hw.jack_body_radius_m)
+            .map_err(|at| ("jack body", Some(at), hw.jack_body_radius_m))?;
+        clearance
+            .clear_of_flap(spec, mount, far, screw_radius)
+            .map_err(|at| ("screw", Some(at), screw_radius))
+    };
+    // Ahead of the carriage, pushing, then behind the rail, pulling, each set back along
+    // the line by whole jack-body lengths: the first where the flap's nose (ahead) or its
+    // aft part (behind) passes the jack with room; of those clear, the shallowest.
+    let setback = |k: usize| d * (k as f64 * hw.jack_body_length_m);
+    let mut first_blocks: Vec<JackBlock> = Vec::new();
+    let mut mount: Option<(Point2<f64>, f64)> = None;
+    for place in (0..JACK_SETBACKS)
+        .map(|k| ahead - setback(k))
+        .chain((0..JACK_SETBACKS).map(|k| behind + setback(k)))
+    {
+        match jack_clear(place) {
+            Ok(()) => {
+                let lowest = below(place - half, hw.jack_body_radius_m).max(below(place + half, hw.jack_body_radius_m));
+                if mount.is_none_or(|(_, best)| lowest < best) {
+                    mount = Some((place, lowest));
+                }
+            }
+            Err(block) => {
+                if first_blocks.len() < 2 && (place == ahead || place == behind) {
+                    first_blocks.push(block);
+                }
+            }
+        }
+    }
+    let Some((mount, _)) = mount else {
+        search.flap_clearance += 1;
+        let say = |(part, at, radius): &JackBlock| match at {
+            None => format!("its {part} comes within its radius and the margin of the structure or the upper skin"),
+            Some((k, distance)) => format!(
+                "its {part} comes {:.0} mm from the flap at {:.0} mm of stroke (must keep {:.0} mm)",
+                (distance - radius).max(0.0) * 1e3,
+                strokes[*k] * 1e3,
+                (clearance.reach_m(*radius) - radius) * 1e3
+            ),
+        };
+        let said: Vec<String> = first_blocks.iter().map(say).collect();
+        return Err((
+            SynthesisDefect::PivotOutsideRegion,
+            format!(
+                "no clear place for the screw jack on the rail's line, up to {} jack lengths ahead of the carriage or behind the rail: next to the carriage {}; next to the rail's aft end {}",
+                JACK_SETBACKS - 1,
+                said.first().map_or("-", String::as_str),
+                said.get(1).map_or("-", String::as_str)
+            ),
+        ));
+    };
+    depth = depth
+        .max(below(mount - half, hw.jack_body_radius_m))
+        .max(below(mount + half, hw.jack_body_radius_m));
+    let hook_line = hook_centre_line(&rail, landing * g);
+    let struts = place_struts(spec, &clearance, rail_ends[0], &hook_line).map_err(|strut| {
+        search.struts += 1;
+        (
+            SynthesisDefect::PivotOutsideRegion,
+            format!(
+                "no {strut} to the wing's lower skin{} keeps {:.0} mm beyond its radius from the structure and from the flap at every sampled pose",
+                if strut == "strut-rail" { " or the rear spar's web" } else { "" },
+                (clearance.reach_m(0.0)) * 1e3
+            ),
+        )
+    })?;
     let found = Found {
         rail,
         mount,
+        struts,
         min_transmission,
         depth,
         takeoff_miss: prepared.takeoff_miss,

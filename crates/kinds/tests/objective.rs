@@ -34,16 +34,22 @@ fn the_objectives_load_by_virtual_work_equals_each_kinds_statics() {
                 .map(|pose| pose.flap)
         };
         let torques = weighing.body_torques(&steps, travel, &flap_at);
+        // The hooked-track's flap starts turning where its roller leaves the straight
+        // lead-in for the hook (`hooked_track/rail.rs`, `lead_m` of stroke from stowed): the
+        // flap's rate jumps there, and a central difference straddling the join measures
+        // neither side's load (3.5e-4 off when a sample sat on it), so samples within ten
+        // difference steps of it are left out; the others agree as every kind's do.
+        let join = mechanism.details()["synthesis"]["lead_m"].as_f64();
         for (step, torque) in steps.iter().zip(torques) {
+            if join.is_some_and(|lead| (step - lead).abs() < 10.0 * 1e-4 * travel.abs()) {
+                continue;
+            }
             let statics = mechanism
                 .kinetostatics(range.at_fraction(step / travel), &flight)
                 .unwrap();
             let torque = torque.unwrap();
             let relative = (torque - statics.actuator_load.abs()).abs() / statics.actuator_load.abs();
-            // The hooked-track's flap starts turning where its roller leaves the straight
-            // lead-in for the hook (`hooked_track/rail.rs`): the flap's rate jumps there, so
-            // a central difference straddling the join is first order (4e-5 at one sample).
-            let tolerance = if mechanism.kind() == "hooked-track" { 1e-4 } else { 1e-6 };
+            let tolerance = 1e-6;
             assert!(
                 relative < tolerance,
                 "{}: {torque} against {}",

@@ -186,7 +186,10 @@ impl Checker<'_> {
                 .station
                 .iter()
                 .map(|s| s.mechanism.kind().synthesis_cost_s(res.airfoil_points_per_side))
-                .sum();
+                .sum::<f64>()
+                // The sizing loop synthesises every station again until the drawn solids
+                // are thick enough: twice on the shipped scenes, at most this often.
+                * crate::pipeline::sizing_loop::MAX_ITERATIONS as f64;
             time.push(points_key(
                 format!("{stations} station plane(s) and their synthesis"),
                 stations as f64 * points * unit_cost::PLANE_S_PER_POINT + searches,

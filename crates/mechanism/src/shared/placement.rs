@@ -66,8 +66,9 @@ pub fn screw_jack_placement(
     let mut fallback = None;
     let mut best: Option<(Point2<f64>, Point2<f64>, f64)> = None;
     // The screw square to the arm at mid-travel first, then turned either way about the
-    // attachment (the ends' transmission angles shift by the turn) to reach below the wing.
-    const TURNS: [f64; 5] = [0.0, -0.35, 0.35, -0.7, 0.7];
+    // attachment (the ends' transmission angles shift by the turn) to reach below the wing;
+    // up to 1.4 rad (80 deg) either way, where the transmission rule allows.
+    const TURNS: [f64; 9] = [0.0, -0.35, 0.35, -0.7, 0.7, -1.05, 1.05, -1.4, 1.4];
     let mut candidates = Vec::new();
     for &attachment in attachments {
         for &standoff in standoffs {

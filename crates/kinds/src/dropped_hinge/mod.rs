@@ -324,71 +324,13 @@ impl DroppedHinge {
             landing_miss_m,
         };
         let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &drive);
-        let dropped_hinge = Self {
+        Ok(Self {
             spec,
             synthesis,
             drive,
             actuator,
             bodies,
             joints,
-        };
-        Ok(dropped_hinge.with_truss_in_plane())
-    }
-
-    /// The same dropped hinge with the truss's lower-skin points moved, where the search
-    /// chose them, so that both truss members stay in the station plane in the spanwise
-    /// layout ([`flapwright_mechanism::spanwise::spanwise_layout`]): a member the layout
-    /// moves aside (because the screw jack crosses it in the plane) ends on the lower skin
-    /// where the plane cuts it, not where its own layer does, and on a swept, tapered wing
-    /// went 3-8 mm into the skin (`transport-flap` with the jack's placement weighing its
-    /// load). Of the clear tops, the pairs are tried in the search's order; unchanged when
-    /// none keeps the truss in the plane or the scene gives the points.
-    fn with_truss_in_plane(self) -> Self {
-        if self.spec.support_points.is_some() || !self.synthesis.placement_clear || self.truss_in_plane() {
-            return self;
-        }
-        let hinge = self.synthesis.hinge_m;
-        let turn = self.spec.landing.deflection_rad;
-        let poses = turning_flap(hinge, turn);
-        let radius = self.spec.hardware.link_radius_m;
-        let tops: Vec<Point2<f64>> = SUPPORT_AHEAD
-            .iter()
-            .filter_map(|&k| strut_top(&self.spec.outline, hinge, &[k], radius, radius, &poses, None))
-            .collect();
-        for (i, &forward) in tops.iter().enumerate() {
-            for &aft in tops.iter().skip(i + 1).chain(tops.iter().take(i)) {
-                if (forward - aft).norm() <= 0.04 * self.spec.outline.flap_chord().map_or(0.0, |(_, _, c)| c) {
-                    continue;
-                }
-                let mut synthesis = self.synthesis.clone();
-                synthesis.support_points_m = [forward, aft];
-                let (bodies, joints) = bodies_and_joints(&self.spec, &synthesis, &self.drive);
-                let candidate = Self {
-                    spec: self.spec.clone(),
-                    synthesis,
-                    drive: self.drive.clone(),
-                    actuator: self.actuator,
-                    bodies,
-                    joints,
-                };
-                if candidate.truss_in_plane() {
-                    return candidate;
-                }
-            }
-        }
-        self
-    }
-
-    /// True when the spanwise layout keeps both truss members in the station plane.
-    fn truss_in_plane(&self) -> bool {
-        let Ok(layout) = flapwright_mechanism::spanwise::spanwise_layout(self) else {
-            return false;
-        };
-        self.bodies.iter().zip(&layout).all(|(body, offsets)| {
-            body.solids
-                .iter()
-                .zip(offsets)
-                .all(|(solid, &offset)| !solid.name.starts_with("truss-") || offset == 0.0)
         })
     }
 

@@ -242,8 +242,9 @@ impl FourBar {
         let beam_clear = |from: Point2<f64>, to: Point2<f64>| {
             flap_poses.iter().all(|pose| {
                 let back = pose.inverse();
-                flapwright_mechanism::shared::outline::segment_distance(&spec.outline.flap, back * from, back * to)
-                    > hw.link_radius_m + margin
+                spec.outline
+                    .flap
+                    .segment_clear_by(back * from, back * to, hw.link_radius_m + margin)
             }) && !spec.outline.wing.segment_meets(from, to)
         };
         let (first, second) = (strut(loop_.o1), strut(loop_.o2));

@@ -109,11 +109,8 @@ impl Clearance {
                 || p.x.min(q.x) - reach > high.x
                 || p.y.max(q.y) + reach < low.y
                 || p.y.min(q.y) - reach > high.y;
-            if !apart {
-                let distance = segment_distance(&spec.outline.flap, p, q);
-                if distance <= reach {
-                    return Err((k, distance));
-                }
+            if !apart && !spec.outline.flap.segment_clear_by(p, q, reach) {
+                return Err((k, segment_distance(&spec.outline.flap, p, q)));
             }
         }
         Ok(())
@@ -127,7 +124,7 @@ impl Clearance {
     pub(super) fn clear_of_wing(&self, spec: &HookedTrackSpec, a: Point2<f64>, b: Point2<f64>, radius_m: f64) -> bool {
         let outline = &spec.outline;
         let reach = radius_m + self.margin_m;
-        segment_distance(&outline.structure, a, b) > reach
+        outline.structure.segment_clear_by(a, b, reach)
             && (!outline.wing.segment_meets(a, b) || outline.through_bay_only(a, b, reach))
     }
 }
@@ -228,7 +225,7 @@ fn web_strut_top(spec: &HookedTrackSpec, clearance: &Clearance, rail_start: Poin
     }
     let short = top + (rail_start - top) * (reach / length);
     let clear = clearance.clear_of_flap(spec, rail_start, top, radius).is_ok()
-        && segment_distance(&outline.structure, rail_start, short) > reach
+        && outline.structure.segment_clear_by(rail_start, short, reach)
         && outline.through_bay_only(rail_start, top, reach);
     clear.then_some(top)
 }

@@ -216,14 +216,14 @@ impl HookedTrack {
         .map_err(|(defect, detail)| failure(defect, detail))?;
         use rayon::prelude::*;
         let mut counts = HookedTrackSearch::default();
-        let candidates = search::candidates(&spec);
+        let candidates = search::Candidates::of(&spec);
         counts.candidates = candidates.len();
         // The quick tests of every candidate, in parallel, each with its own counts.
-        let prepared: Vec<_> = candidates
-            .par_iter()
-            .map(|candidate| {
+        let prepared: Vec<_> = (0..candidates.len())
+            .into_par_iter()
+            .map(|index| {
                 let mut own = HookedTrackSearch::default();
-                let outcome = search::prepare(&spec, *candidate, flap_chord, &mut own);
+                let outcome = search::prepare(&spec, &candidates, index, flap_chord, &mut own);
                 (own, outcome)
             })
             .collect();
@@ -242,7 +242,13 @@ impl HookedTrack {
         // bound, a batch at a time in parallel, until the next bound cannot beat the best
         // rail (the least cost, the first candidate among equal ones: the exhaustive
         // search's choice, whatever the threads and batches).
-        open.sort_by(|(i, a), (j, b)| a.lower_bound.total_cmp(&b.lower_bound).then(i.cmp(j)));
+        // (The order of the candidates by their bound and index, sorted as indices into
+        // `open`: a total order, so the unstable sort gives the one order.)
+        let mut order: Vec<usize> = (0..open.len()).collect();
+        order.sort_unstable_by(|&a, &b| {
+            let ((i, x), (j, y)) = (&open[a], &open[b]);
+            x.lower_bound.total_cmp(&y.lower_bound).then(i.cmp(j))
+        });
         let mut best: Option<(usize, search::Found)> = None;
         let beats_best = |best: &Option<(usize, search::Found)>, index: usize, cost: f64| {
             best.as_ref()
@@ -250,8 +256,9 @@ impl HookedTrack {
         };
         let mut next = 0;
         while next < open.len() {
-            let batch: Vec<&(usize, search::Prepared)> = open[next..]
+            let batch: Vec<&(usize, search::Prepared)> = order[next..]
                 .iter()
+                .map(|&k| &open[k])
                 .take(SEARCH_BATCH)
                 .take_while(|(index, rail)| beats_best(&best, *index, rail.lower_bound))
                 .collect();

@@ -154,6 +154,33 @@ impl Rail {
         })
     }
 
+    /// The stroke on the hook where the flap has turned by `deflection_rad`, in closed
+    /// form: the flap's line F-G then runs along u = R(θ) (G - F) (stowed), so the roller at
+    /// F + s d + u lies on the hook where |w + s d|² = ρ² with w = F + u - K, a quadratic in
+    /// s. The first root on the hook whose pose (on the rail's branch) has that deflection
+    /// to 1e-9 rad; None where none has (the deflection lies outside the hook's range).
+    pub(super) fn stroke_on_hook_at(&self, deflection_rad: f64) -> Option<f64> {
+        let w = self.f + Isometry2::rotation(deflection_rad) * (self.g - self.f) - self.k;
+        let b = self.d.dot(&w);
+        let c = w.norm_squared() - self.radius_m * self.radius_m;
+        let discriminant = b * b - c;
+        if discriminant.is_nan() || discriminant < 0.0 {
+            return None;
+        }
+        // The roots -b ± sqrt(b² - c), the smaller magnitude one as c / q (no cancellation).
+        let q = -(b + b.signum() * discriminant.sqrt());
+        let mut roots = [q, if q != 0.0 { c / q } else { q }];
+        roots.sort_by(f64::total_cmp);
+        roots.into_iter().find(|&s| {
+            s > self.lead_m
+                && s <= self.stroke_m
+                && self.at(s).is_some_and(|pose| {
+                    let turned = pose.flap.rotation.angle() - deflection_rad;
+                    turned.sin().abs() < 1e-9 && turned.cos() > 0.0
+                })
+        })
+    }
+
     /// Velocity of G and the flap's rotation rate per metre of stroke at `pose` (F moves
     /// at d).
     pub(super) fn rates(&self, pose: &RailPose) -> (Vector2<f64>, f64) {
@@ -166,5 +193,34 @@ impl Rail {
         let v_g = tangent * (self.d.dot(&r) / tangent.dot(&r));
         let flap_rate = cross(r, self.d.into_inner() - v_g) / (self.span * self.span);
         (v_g, flap_rate)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use flapwright_mechanism::shared::feasibility::parameter_at_deflection;
+
+    /// The closed form of the stroke at a deflection lands where the bisection of the
+    /// sampled motion does, and the pose there has that deflection; outside the hook's
+    /// range it answers none.
+    #[test]
+    fn the_stroke_at_a_deflection_in_closed_form_is_the_bisections() {
+        let (f, g) = (Point2::new(0.0, 0.0), Point2::new(0.6, 0.05));
+        let landing = Translation2::new(0.35, -0.2) * Isometry2::rotation(-35f64.to_radians());
+        for lead in [0.0, 0.03, 0.1] {
+            let rail = Rail::new(f, g, landing * f, landing * g, lead).expect("a rail");
+            let deflection = |s: f64| rail.at(s).map_or(f64::NAN, |p| p.flap.rotation.angle());
+            assert!((deflection(rail.stroke_m) + 35f64.to_radians()).abs() < 1e-9);
+            for degrees in [-0.5, -10.0, -20.0, -34.9] {
+                let target = f64::to_radians(degrees);
+                let closed = rail.stroke_on_hook_at(target).expect("on the hook");
+                let bisected = parameter_at_deflection(rail.stroke_m, deflection, target, -1.0);
+                assert!((closed - bisected).abs() < 1e-12, "{closed} vs {bisected}");
+                assert!((deflection(closed) - target).abs() < 1e-12);
+            }
+            assert_eq!(rail.stroke_on_hook_at(f64::to_radians(-40.0)), None);
+            assert_eq!(rail.stroke_on_hook_at(f64::to_radians(5.0)), None);
+        }
     }
 }

@@ -436,22 +436,31 @@ pub(super) fn check(
     // below the stowed sections' lower contour (as the fairing stage measures it).
     let hw = &spec.hardware;
     let below = |p: Point2<f64>, radius: f64| spec.outline.depth_below(p).map_or(0.0, |d| d + radius);
-    let mut depth = below(o, hw.jack_body_radius_m).max(0.0);
-    let samples = (0..=LOOP_SAMPLES).map(|k| {
-        let phi = turns[1] * k as f64 / LOOP_SAMPLES as f64;
-        loop_.at(phi).map(|pose| {
-            depth = depth
-                .max(below(pose.a, hw.link_radius_m))
-                .max(below(pose.c, hw.nut_radius_m));
-            LoopSample {
-                turn_rad: phi,
-                flap: pose.flap,
-                transmission_rad: pose.transmission,
-                flap_rate: loop_.rates(&pose).2,
-            }
+    // The motion first, the sections' queries for the depth only once it closes in order.
+    let sampled: Vec<_> = (0..=LOOP_SAMPLES)
+        .map(|k| {
+            let phi = turns[1] * k as f64 / LOOP_SAMPLES as f64;
+            (phi, loop_.at(phi))
+        })
+        .collect();
+    let samples = sampled.iter().map(|&(phi, pose)| {
+        pose.map(|pose| LoopSample {
+            turn_rad: phi,
+            flap: pose.flap,
+            transmission_rad: pose.transmission,
+            flap_rate: loop_.rates(&pose).2,
         })
     });
     let min_transmission = check_deployment(&rules, samples)?;
+    let depth =
+        sampled
+            .iter()
+            .filter_map(|(_, pose)| *pose)
+            .fold(below(o, hw.jack_body_radius_m).max(0.0), |depth, pose| {
+                depth
+                    .max(below(pose.a, hw.link_radius_m))
+                    .max(below(pose.c, hw.nut_radius_m))
+            });
     // Brackets ahead of the flap's nose ride under the wing's lower skin: the pins (the link
     // pin and the carriage) must stay out of the wing section, the link's line clear of it
     // (or through the bay only, from the web) and of the spars, and the track beam's line
@@ -465,10 +474,7 @@ pub(super) fn check(
             "the track beam cuts the wing section".into(),
         ));
     }
-    for k in 0..=LOOP_SAMPLES {
-        let Some(pose) = loop_.at(turns[1] * k as f64 / LOOP_SAMPLES as f64) else {
-            continue;
-        };
+    for pose in sampled.iter().filter_map(|(_, pose)| pose.as_ref()) {
         let link_clear = if on_web(outline, o) {
             outline.through_bay_only(o, pose.a, hw.link_radius_m)
         } else {

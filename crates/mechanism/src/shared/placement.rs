@@ -242,11 +242,11 @@ pub fn strut_top(
         // The strut ends on the skin by design: it must not cross the wing short of its top.
         let short = top + (from - top).normalize() * (radius + margin);
         let clear = distinct
-            && crate::shared::outline::segment_distance(&outline.structure, from, top) > radius + margin
+            && outline.structure.segment_clear_by(from, top, radius + margin)
             && !outline.wing.segment_meets(from, short)
             && flap_poses.iter().all(|pose| {
                 let back = pose.inverse();
-                crate::shared::outline::segment_distance(&outline.flap, back * from, back * top) > radius + margin
+                outline.flap.segment_clear_by(back * from, back * top, radius + margin)
             });
         clear.then_some(top)
     })

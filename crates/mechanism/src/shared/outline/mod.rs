@@ -156,13 +156,17 @@ pub fn segment_distance(polygons: &[Vec<Point2<f64>>], a: Point2<f64>, b: Point2
         return 0.0;
     }
     edges(polygons)
-        .map(|(c, d)| {
-            point_segment_distance(c, a, b)
-                .min(point_segment_distance(d, a, b))
-                .min(point_segment_distance(a, c, d))
-                .min(point_segment_distance(b, c, d))
-        })
+        .map(|(c, d)| edge_segment_distance(c, d, a, b))
         .fold(f64::INFINITY, f64::min)
+}
+
+/// Distance between the edge `c`-`d` and the segment `a`-`b` that do not cross: the
+/// nearest of the four ends to the other segment.
+fn edge_segment_distance(c: Point2<f64>, d: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
+    point_segment_distance(c, a, b)
+        .min(point_segment_distance(d, a, b))
+        .min(point_segment_distance(a, c, d))
+        .min(point_segment_distance(b, c, d))
 }
 
 /// Smallest and largest x of `polygons`.
@@ -197,11 +201,11 @@ impl StationOutline {
         flap_poses: &[nalgebra::Isometry2<f64>],
     ) -> bool {
         let reach = radius + margin;
-        segment_distance(&self.wing, a, b) > reach
-            && segment_distance(&self.structure, a, b) > reach
+        self.wing.segment_clear_by(a, b, reach)
+            && self.structure.segment_clear_by(a, b, reach)
             && flap_poses.iter().all(|pose| {
                 let back = pose.inverse();
-                segment_distance(&self.flap, back * a, back * b) > reach
+                self.flap.segment_clear_by(back * a, back * b, reach)
             })
     }
 

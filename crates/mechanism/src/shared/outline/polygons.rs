@@ -12,7 +12,7 @@ use std::sync::OnceLock;
 use nalgebra::Point2;
 use serde::{Serialize, Serializer};
 
-use super::{crossing_at, edge_nearer_than, ray_crosses, segments_cross};
+use super::{crossing_at, edge_nearer_than, edge_segment_distance, ray_crosses, segments_cross};
 
 /// Closed polygons (last point not repeated), with an index of their edges built on the
 /// first query. Reads as the plain polygons (`Deref`), which the index does not change.
@@ -91,6 +91,26 @@ impl Polygons {
             segments_cross(a, b, c, d)
         }) || self.inside(a)
             || self.inside(b)
+    }
+
+    /// True when the segment `a`-`b` stays farther than `reach` from the polygons, as
+    /// `super::segment_distance(..) > reach`: only the edges filed where the segment's x
+    /// extent widened by `reach` lies can come that near, and of those an edge whose box is
+    /// already farther than `reach` from the segment's is let go before its distance.
+    pub fn segment_clear_by(&self, a: Point2<f64>, b: Point2<f64>, reach: f64) -> bool {
+        if self.rings.is_empty() || !reach.is_finite() {
+            return super::segment_distance(&self.rings, a, b) > reach;
+        }
+        if self.segment_meets(a, b) {
+            return 0.0 > reach;
+        }
+        let (low, high) = (a.inf(&b), a.sup(&b));
+        let index = self.index();
+        !index.any_within(&index.by_x, low.x - reach, high.x + reach, |c, d| {
+            let off_x = (c.x.min(d.x) - high.x).max(low.x - c.x.max(d.x));
+            let off_y = (c.y.min(d.y) - high.y).max(low.y - c.y.max(d.y));
+            off_x <= reach && off_y <= reach && edge_segment_distance(c, d, a, b) <= reach
+        })
     }
 
     /// True when an edge passes nearer than `near` to `p` (never for `near` <= 0).
@@ -240,6 +260,11 @@ mod tests {
                 prop_assert_eq!(polygons.segment_meets(point, point), segment_meets(&rings, point, point));
                 let plain_near = any_edge(&rings, |a, b| edge_nearer_than(point, a, b, near));
                 prop_assert_eq!(polygons.nearer_than(point, near), plain_near);
+                let reach = near - 0.5;
+                prop_assert_eq!(
+                    polygons.segment_clear_by(point, q, reach),
+                    super::super::segment_distance(&rings, point, q) > reach
+                );
                 let nearest = boundary_distance(&rings, point);
                 if (nearest - near).abs() > 1e-9 {
                     prop_assert_eq!(plain_near, nearest < near);

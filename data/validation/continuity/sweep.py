@@ -13,7 +13,7 @@ import json, os, re, subprocess, sys
 
 BIN = sys.argv[1]; WORK = sys.argv[2]; EXTRA = sys.argv[3:]
 TAG = 'v'
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 os.makedirs(WORK, exist_ok=True)
 base = open(os.path.join(ROOT, 'data/scenes/transport-flap.toml')).read()
 def variant(kind, value):

@@ -32,18 +32,23 @@ pub struct JackSize {
 }
 
 /// A screw jack turning a body about `pivot` by `rotation_rad`: of the (attachment, mount)
-/// pairs of `attachments` x `standoffs` (mounts square at mid-travel, turned about the
-/// attachment) whose drive keeps the transmission angle above `min_transmission_rad` and
-/// whose screw (as long as the longest stroke plus the nut) and jack body keep `margin`
-/// clear of `outline` with the flap at `flap_at(ψ)` for sampled body rotations ψ, the one
-/// of least cost: the depth its lowest point reaches in flap chords, plus, with
-/// `weighing`, its peak screw force under the load cases in reference forces
-/// ([`LoadWeighing::cost`]); without, the shallowest. None when no pair is clear.
+/// pairs of the attachments at `fractions` of `arm` x `standoffs` (mounts square at
+/// mid-travel, turned about the attachment) whose drive keeps the transmission angle above
+/// `min_transmission_rad` and whose screw (as long as the longest stroke plus the nut) and
+/// jack body keep `margin` clear of `outline` with the flap at `flap_at(ψ)` for sampled
+/// body rotations ψ, the one of least cost: the depth its lowest point reaches in flap
+/// chords, plus, with `weighing`, its peak screw force under the load cases in reference
+/// forces ([`LoadWeighing::cost`]); without, the shallowest. With `weighing`, the grid's best
+/// is then refined ([`refine`]): the attachment's fraction (within the fractions' range), the
+/// standoff (within the standoffs') and the mount's turn moved while the cost falls, so
+/// that the placement follows its inputs smoothly instead of stepping from one grid point
+/// to the next. None when no pair is clear.
 #[allow(clippy::too_many_arguments)]
 pub fn screw_jack_placement(
     pivot: Point2<f64>,
     rotation_rad: f64,
-    attachments: &[Point2<f64>],
+    arm: (Point2<f64>, Point2<f64>),
+    fractions: &[f64],
     standoffs: &[f64],
     min_transmission_rad: f64,
     size: &JackSize,
@@ -63,84 +68,170 @@ pub fn screw_jack_placement(
         let torques = w.body_torques(&rotations, rotation_rad, flap_at);
         (w, torques, w.reference_force_n(&flap_poses))
     });
+    let on_arm = |fraction: f64| arm.0 + (arm.1 - arm.0) * fraction;
+    // One candidate: None where the drive cannot be built or transmits too little, else
+    // the attachment, the mount and the cost where clear (None where not).
+    let evaluate = |(fraction, standoff, turn): Placement| -> Option<(AttachmentAndMount, Option<f64>)> {
+        let attachment = on_arm(fraction);
+        let square = mount_square_at_mid_travel(pivot, attachment, rotation_rad, standoff);
+        let middle = turn_about(pivot, 0.5 * rotation_rad) * attachment;
+        let mount = turn_about(middle, turn) * square;
+        let drive = RockerDrive::try_new(pivot, mount, attachment).ok()?;
+        let length = drive.stroke_at(0.0).max(drive.stroke_at(rotation_rad)) + size.nut_radius_m;
+        let transmits = rotations.iter().all(|&psi| {
+            drive
+                .state(drive.stroke_at(psi))
+                .is_ok_and(|state| state.transmission_angle_rad >= min_transmission_rad)
+        });
+        if !transmits {
+            return None;
+        }
+        let clear = rotations.iter().zip(&flap_poses).all(|(&psi, pose)| {
+            let Ok(state) = drive.state(drive.stroke_at(psi)) else {
+                return false;
+            };
+            let along = (state.attachment - mount).normalize();
+            let poses = std::slice::from_ref(pose);
+            outline.capsule_clear(mount, mount + along * length, size.screw_radius_m, margin, poses)
+                && outline.capsule_clear(
+                    mount - along * (0.5 * size.body_length_m),
+                    mount + along * (0.5 * size.body_length_m),
+                    size.body_radius_m,
+                    margin,
+                    poses,
+                )
+        });
+        if !clear {
+            return Some(((attachment, mount), None));
+        }
+        // The shallowest: the lowest point of the jack body and of the screw's free end
+        // over the deployment sets the fairing.
+        let lowest = rotations
+            .iter()
+            .filter_map(|&psi| drive.state(drive.stroke_at(psi)).ok())
+            .map(|state| (mount + (state.attachment - mount).normalize() * length).y)
+            .fold(mount.y - size.body_radius_m - 0.5 * size.body_length_m, f64::min);
+        let depth = pivot.y - lowest;
+        let cost = match &loading {
+            Some((w, torques, reference)) => {
+                // The screw's force: the body's torque times dψ/ds.
+                let peak = rotations
+                    .iter()
+                    .zip(torques)
+                    .map(|(&psi, torque)| {
+                        let rate = drive
+                            .state(drive.stroke_at(psi))
+                            .map_or(f64::INFINITY, |state| state.rotation_per_stroke.abs());
+                        torque.map_or(f64::INFINITY, |t| t * rate)
+                    })
+                    .fold(0.0, f64::max);
+                w.cost(depth, flap_chord, peak, *reference)
+            }
+            None => depth / flap_chord,
+        };
+        Some(((attachment, mount), Some(cost)))
+    };
     let mut fallback = None;
-    let mut best: Option<(Point2<f64>, Point2<f64>, f64)> = None;
+    let mut best: Option<(Placement, f64)> = None;
     // The screw square to the arm at mid-travel first, then turned either way about the
     // attachment (the ends' transmission angles shift by the turn) to reach below the wing;
     // up to 1.4 rad (80 deg) either way, where the transmission rule allows.
-    const TURNS: [f64; 9] = [0.0, -0.35, 0.35, -0.7, 0.7, -1.05, 1.05, -1.4, 1.4];
-    let mut candidates = Vec::new();
-    for &attachment in attachments {
+    for &fraction in fractions {
         for &standoff in standoffs {
-            candidates.extend(TURNS.iter().map(|&turn| (attachment, standoff, turn)));
-        }
-    }
-    for (attachment, standoff, turn) in candidates {
-        {
-            let square = mount_square_at_mid_travel(pivot, attachment, rotation_rad, standoff);
-            let middle = turn_about(pivot, 0.5 * rotation_rad) * attachment;
-            let mount = turn_about(middle, turn) * square;
-            let Ok(drive) = RockerDrive::try_new(pivot, mount, attachment) else {
-                continue;
-            };
-            let length = drive.stroke_at(0.0).max(drive.stroke_at(rotation_rad)) + size.nut_radius_m;
-            let transmits = rotations.iter().all(|&psi| {
-                drive
-                    .state(drive.stroke_at(psi))
-                    .is_ok_and(|state| state.transmission_angle_rad >= min_transmission_rad)
-            });
-            if !transmits {
-                continue;
-            }
-            fallback = fallback.or(Some((attachment, mount)));
-            let clear = rotations.iter().zip(&flap_poses).all(|(&psi, pose)| {
-                let Ok(state) = drive.state(drive.stroke_at(psi)) else {
-                    return false;
+            for turn in TURNS {
+                let placement = (fraction, standoff, turn);
+                let Some((pair, cost)) = evaluate(placement) else {
+                    continue;
                 };
-                let along = (state.attachment - mount).normalize();
-                let poses = std::slice::from_ref(pose);
-                outline.capsule_clear(mount, mount + along * length, size.screw_radius_m, margin, poses)
-                    && outline.capsule_clear(
-                        mount - along * (0.5 * size.body_length_m),
-                        mount + along * (0.5 * size.body_length_m),
-                        size.body_radius_m,
-                        margin,
-                        poses,
-                    )
-            });
-            if clear {
-                // The shallowest: the lowest point of the jack body and of the screw's free
-                // end over the deployment sets the fairing.
-                let lowest = rotations
-                    .iter()
-                    .filter_map(|&psi| drive.state(drive.stroke_at(psi)).ok())
-                    .map(|state| (mount + (state.attachment - mount).normalize() * length).y)
-                    .fold(mount.y - size.body_radius_m - 0.5 * size.body_length_m, f64::min);
-                let depth = pivot.y - lowest;
-                let cost = match &loading {
-                    Some((w, torques, reference)) => {
-                        // The screw's force: the body's torque times dψ/ds.
-                        let peak = rotations
-                            .iter()
-                            .zip(torques)
-                            .map(|(&psi, torque)| {
-                                let rate = drive
-                                    .state(drive.stroke_at(psi))
-                                    .map_or(f64::INFINITY, |state| state.rotation_per_stroke.abs());
-                                torque.map_or(f64::INFINITY, |t| t * rate)
-                            })
-                            .fold(0.0, f64::max);
-                        w.cost(depth, flap_chord, peak, *reference)
+                fallback = fallback.or(Some(pair));
+                if let Some(cost) = cost {
+                    if best.is_none_or(|(_, c)| cost < c) {
+                        best = Some((placement, cost));
                     }
-                    None => depth / flap_chord,
-                };
-                if best.is_none_or(|(_, _, c)| cost < c) {
-                    best = Some((attachment, mount, cost));
                 }
             }
         }
     }
-    best.map(|(attachment, mount, _)| (attachment, mount)).ok_or(fallback)
+    let Some(best) = best else {
+        return Err(fallback);
+    };
+    // Depth alone is not refined: it falls as the screw takes hold nearer the pivot, with a
+    // shorter stroke and a larger force, which the grid's coarse steps keep in check.
+    if loading.is_none() {
+        return evaluate(best.0).map(|(pair, _)| pair).ok_or(fallback);
+    }
+    // The refinement stays within the grid's standoffs and turns, and its fraction within
+    // the fractions' range and a tenth of the arm of the grid's choice (the arm's far end
+    // is the pivot, where a screw has no lever).
+    let range = |values: &[f64]| {
+        values.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
+            (lo.min(v), hi.max(v))
+        })
+    };
+    let (fraction, (low, high)) = (best.0 .0, range(fractions));
+    let bounds = [
+        (low.max(fraction - 0.1), high.min(fraction + 0.1)),
+        range(standoffs),
+        (-MAX_TURN, MAX_TURN),
+    ];
+    let cost_of = |placement: Placement| evaluate(placement).and_then(|(_, cost)| cost);
+    let (placement, _) = refine(best, bounds, &cost_of);
+    evaluate(placement).map(|(pair, _)| pair).ok_or(fallback)
+}
+
+/// A screw jack's free choices: the attachment's fraction of the arm, the standoff (m) and
+/// the mount's turn about the attachment (rad).
+type Placement = (f64, f64, f64);
+
+/// The mount's turns the grid tries about the attachment (rad), square first, up to
+/// [`MAX_TURN`] either way.
+const TURNS: [f64; 9] = [0.0, -0.35, 0.35, -0.7, 0.7, -1.05, 1.05, -MAX_TURN, MAX_TURN];
+
+/// The largest turn of the mount about the attachment either way (rad, 80 deg).
+const MAX_TURN: f64 = 1.4;
+
+/// Halvings of the refinement's steps.
+const REFINEMENTS: usize = 5;
+
+/// The grid's best placement refined by a compass search: each choice stepped either way
+/// (fraction 0.05, standoff a quarter of the start's, turn 0.175 rad, each halved
+/// [`REFINEMENTS`] times) within `bounds`, the least costly clear neighbour taken while it
+/// costs less; at most eight moves a step size. `cost_of` is None where a placement does
+/// not transmit or is not clear.
+fn refine(
+    start: (Placement, f64),
+    bounds: [(f64, f64); 3],
+    cost_of: &dyn Fn(Placement) -> Option<f64>,
+) -> (Placement, f64) {
+    let (mut here, mut cost) = start;
+    let mut steps = [0.05, 0.25 * start.0 .1, 0.175];
+    for _ in 0..REFINEMENTS {
+        for _ in 0..8 {
+            let mut next: Option<(Placement, f64)> = None;
+            for axis in 0..3 {
+                for sign in [-1.0, 1.0] {
+                    let mut values = [here.0, here.1, here.2];
+                    values[axis] += sign * steps[axis];
+                    let (low, high) = bounds[axis];
+                    if !(low..=high).contains(&values[axis]) || steps[axis] == 0.0 {
+                        continue;
+                    }
+                    let candidate = (values[0], values[1], values[2]);
+                    if let Some(c) = cost_of(candidate) {
+                        if c < next.map_or(cost, |(_, best)| best) {
+                            next = Some((candidate, c));
+                        }
+                    }
+                }
+            }
+            match next {
+                Some((candidate, c)) => (here, cost) = (candidate, c),
+                None => break,
+            }
+        }
+        steps = steps.map(|step| 0.5 * step);
+    }
+    (here, cost)
 }
 
 /// The first attachment fraction a screw-jack search tries: the arm's middle.
@@ -195,14 +286,15 @@ pub fn place_screw_jack(
     } else {
         choice.other_fractions
     };
-    let attachments: Vec<Point2<f64>> = std::iter::once(first)
-        .chain(others.iter().copied().map(on_arm))
+    let fractions: Vec<f64> = std::iter::once(choice.attachment_fraction.unwrap_or(DEFAULT_ATTACHMENT_FRACTION))
+        .chain(others.iter().copied())
         .collect();
     let standoffs: Vec<f64> = [1.0, 1.6, 2.4, 0.7].iter().map(|k| k * choice.standoff_m).collect();
     match screw_jack_placement(
         pivot,
         rotation_rad,
-        &attachments,
+        choice.arm,
+        &fractions,
         &standoffs,
         choice.min_transmission_rad,
         size,
@@ -270,4 +362,48 @@ pub fn turning_flap(pivot: Point2<f64>, rotation_rad: f64) -> Vec<Isometry2<f64>
     (0..=PLACEMENT_SAMPLES)
         .map(|k| turn_about(pivot, rotation_rad * k as f64 / PLACEMENT_SAMPLES as f64))
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The compass search walks from a grid point into a smooth bowl's minimum to within
+    /// its last steps (0.05, a quarter of the standoff and 0.175 rad over 2^5), never
+    /// leaves its bounds, never takes a placement it is told is not clear, and never ends
+    /// costlier than it started.
+    #[test]
+    fn the_refinement_finds_a_bowls_minimum_within_its_bounds() {
+        let minimum = (0.43, 0.61, -0.52);
+        let bowl = |(f, s, t): Placement| {
+            // A wall of placements that are not clear across the straight path.
+            if (f - 0.5).abs() < 0.01 && t > -0.3 {
+                return None;
+            }
+            Some((f - minimum.0).powi(2) + (s - minimum.1).powi(2) + (t - minimum.2).powi(2))
+        };
+        let start = (0.52, 0.5, 0.0);
+        let bounds = [(0.4, 0.6), (0.35, 1.2), (-MAX_TURN, MAX_TURN)];
+        let (end, cost) = refine((start, bowl(start).unwrap()), bounds, &bowl);
+        assert!(cost <= bowl(start).unwrap());
+        assert_eq!(bowl(end), Some(cost));
+        for (axis, (value, target, last_step)) in [
+            (end.0, minimum.0, 0.05 / 32.0),
+            (end.1, minimum.1, 0.125 / 32.0),
+            (end.2, minimum.2, 0.175 / 32.0),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            assert!(
+                (value - target).abs() <= last_step,
+                "axis {axis}: {value} against {target}"
+            );
+            assert!((bounds[axis].0..=bounds[axis].1).contains(&value));
+        }
+        // A minimum outside the bounds: the search stops at the bound's side.
+        let outside = |(f, _, _): Placement| Some((f - 0.9).powi(2));
+        let (end, _) = refine(((0.5, 0.5, 0.0), outside((0.5, 0.5, 0.0)).unwrap()), bounds, &outside);
+        assert!(end.0 <= 0.6 && end.0 > 0.6 - 0.05);
+    }
 }

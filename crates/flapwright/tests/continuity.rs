@@ -15,7 +15,9 @@ const TRANSPORT: &str = include_str!("../../../data/scenes/transport-flap.toml")
 
 /// Per station: name, peak actuator load (N) over the load cases, mechanism mass (kg);
 /// and whether every station clears.
-fn figures(text: &str) -> (Vec<(String, f64, f64)>, bool) {
+type Figures = (Vec<(String, f64, f64)>, bool);
+
+fn figures(text: &str) -> Figures {
     let scene = Scene::from_toml(text, &NoFiles).expect("a valid scene");
     let inputs = Inputs {
         scene: &scene,
@@ -86,11 +88,9 @@ fn dropped_hinge_loads_and_masses_change_smoothly_between_neighbouring_inputs() 
         .enumerate()
         .flat_map(|(k, (replace, steps))| steps.iter().map(move |with| (k, variant(replace, with))))
         .collect();
-    let designed: Vec<(usize, (Vec<(String, f64, f64)>, bool))> =
-        texts.par_iter().map(|(k, text)| (*k, figures(text))).collect();
+    let designed: Vec<(usize, Figures)> = texts.par_iter().map(|(k, text)| (*k, figures(text))).collect();
     for (k, (replace, steps)) in sweeps.iter().enumerate() {
-        let rows: Vec<&(Vec<(String, f64, f64)>, bool)> =
-            designed.iter().filter(|(j, _)| *j == k).map(|(_, f)| f).collect();
+        let rows: Vec<&Figures> = designed.iter().filter(|(j, _)| *j == k).map(|(_, f)| f).collect();
         for (row, step) in rows.iter().zip(steps) {
             assert!(row.1, "{replace} -> {step}: a station does not clear");
         }

@@ -39,7 +39,7 @@ pub struct JackSize {
 /// body rotations ψ, the one of least cost: the depth its lowest point reaches in flap
 /// chords, plus, with `weighing`, its peak screw force under the load cases in reference
 /// forces ([`LoadWeighing::cost`]); without, the shallowest. With `weighing`, the grid's best
-/// is then refined ([`refine`]): the attachment's fraction (within the fractions' range), the
+/// is then refined (a compass search): the attachment's fraction (within the fractions' range), the
 /// standoff (within the standoffs') and the mount's turn moved while the cost falls, so
 /// that the placement follows its inputs smoothly instead of stepping from one grid point
 /// to the next. None when no pair is clear.

@@ -82,6 +82,23 @@ fn hooked_track_meets_stowed_and_landing_and_translates_before_it_turns() {
     assert!((miss(&track, &spec.takeoff) - s.takeoff_miss_m).abs() < 1e-9);
     assert!(s.precision_miss_m < 1e-9 && s.search.feasible > 0, "{:?}", s.search);
     assert!(s.lead_m > 0.0 && s.lead_m < s.stroke_m);
+    // The stroke at a deflection: stowed at 0 (not the lead-in's end, where the flap first
+    // turns), landing at the landing deflection and beyond, and the pose there turned so.
+    assert_eq!(track.input_at_deflection(0.0).unwrap(), 0.0);
+    assert_eq!(
+        track.input_at_deflection(spec.landing.deflection_rad).unwrap(),
+        s.stroke_m
+    );
+    assert_eq!(
+        track.input_at_deflection(1.2 * spec.landing.deflection_rad).unwrap(),
+        s.stroke_m
+    );
+    for fraction in [1e-9, 0.3, 0.7] {
+        let deflection = fraction * spec.landing.deflection_rad;
+        let input = track.input_at_deflection(deflection).unwrap();
+        assert!(input > s.lead_m && input < s.stroke_m, "{input}");
+        assert!((track.pose(input).unwrap().deflection_rad - deflection).abs() < 1e-12);
+    }
     let (f0, g0, d) = (s.forward_attachment_m, s.aft_attachment_m, s.rail_direction);
     let load = landing_load();
     let mut previous = 0.0;

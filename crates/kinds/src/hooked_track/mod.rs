@@ -443,9 +443,9 @@ impl FlapMechanism for HookedTrack {
         self.spec.landing.deflection_rad
     }
 
-    /// The first stroke where the flap reaches `deflection_rad`, by bisection (the flap
-    /// holds its deflection over the lead-in and turns forwards on the hook, checked at
-    /// synthesis).
+    /// The first stroke where the flap reaches `deflection_rad`, in closed form on the hook
+    /// (the flap holds its deflection over the lead-in and turns forwards on the hook,
+    /// checked at synthesis).
     fn input_at_deflection(&self, deflection_rad: f64) -> Result<f64> {
         Ok(search::stroke_at_deflection(&self.spec, &self.rail, deflection_rad))
     }

@@ -23,6 +23,7 @@
 
 use nalgebra::{Isometry2, Point2, Translation2, Unit, Vector2};
 
+use flapwright_mechanism::shared::feasibility::parameter_at_deflection;
 use flapwright_mechanism::shared::geometry::cross;
 
 /// The rail, the lead-in and the hook.
@@ -181,6 +182,24 @@ impl Rail {
         })
     }
 
+    /// The first stroke where the flap reaches `deflection_rad` (`sense`: the sign of the
+    /// landing deflection), as the bisection of the sampled motion answers it: landing at or
+    /// beyond the landing deflection, stowed at or short of the stowed one (0: the lead-in
+    /// holds it; the hook is tangent to the lead-in there, so the quadratic's double root
+    /// would land at the lead-in's end), between them [`Self::stroke_on_hook_at`], the
+    /// bisection where that finds none.
+    pub(super) fn stroke_at_deflection(&self, deflection_rad: f64, sense: f64) -> f64 {
+        let deflection = |s: f64| self.at(s).map_or(f64::NAN, |p| p.flap.rotation.angle());
+        if (deflection_rad - deflection(self.stroke_m)) * sense >= 0.0 {
+            return self.stroke_m;
+        }
+        if deflection_rad * sense <= 0.0 {
+            return 0.0;
+        }
+        self.stroke_on_hook_at(deflection_rad)
+            .unwrap_or_else(|| parameter_at_deflection(self.stroke_m, deflection, deflection_rad, sense))
+    }
+
     /// Velocity of G and the flap's rotation rate per metre of stroke at `pose` (F moves
     /// at d).
     pub(super) fn rates(&self, pose: &RailPose) -> (Vector2<f64>, f64) {
@@ -222,5 +241,43 @@ mod tests {
             assert_eq!(rail.stroke_on_hook_at(f64::to_radians(-40.0)), None);
             assert_eq!(rail.stroke_on_hook_at(f64::to_radians(5.0)), None);
         }
+    }
+
+    /// At the ends the stroke is the bisection's to the bit: stowed (0) at no deflection
+    /// and short of it, landing beyond the landing deflection (at it, to rounding), on rails of several
+    /// roller places and lead-ins (the quadratic's double root where the hook meets the
+    /// lead-in falls a rounding either side of the lead-in's end).
+    #[test]
+    fn the_stroke_at_the_ends_is_the_bisections() {
+        let landing = Translation2::new(0.35, -0.2) * Isometry2::rotation(-35f64.to_radians());
+        let f = Point2::new(0.0, 0.0);
+        let mut rails = 0;
+        for k in 0..40 {
+            let g = Point2::new(0.4 + 0.01 * k as f64, 0.05 - 0.003 * k as f64);
+            for lead in [0.0, 0.013, 0.03, 0.071, 0.1] {
+                let Some(rail) = Rail::new(f, g, landing * f, landing * g, lead) else {
+                    continue;
+                };
+                rails += 1;
+                let deflection = |s: f64| rail.at(s).map_or(f64::NAN, |p| p.flap.rotation.angle());
+                for target in [0.0, 0.1, -40f64.to_radians()] {
+                    let bisected = parameter_at_deflection(rail.stroke_m, deflection, target, -1.0);
+                    assert_eq!(
+                        rail.stroke_at_deflection(target, -1.0),
+                        bisected,
+                        "lead {lead}, {target}"
+                    );
+                }
+                // At the landing deflection itself, landing to rounding.
+                let at_landing = rail.stroke_at_deflection(-35f64.to_radians(), -1.0);
+                assert!(
+                    (at_landing - rail.stroke_m).abs() < 1e-12 * rail.stroke_m,
+                    "{at_landing}"
+                );
+                let half = rail.stroke_at_deflection(-17.5f64.to_radians(), -1.0);
+                assert!((deflection(half) + 17.5f64.to_radians()).abs() < 1e-12);
+            }
+        }
+        assert!(rails > 100, "{rails} rails");
     }
 }

@@ -24,7 +24,8 @@
 //! miss); [`check`] samples the deployment only for rails whose bound can still beat the
 //! best found, so the choice is the exhaustive search's (on the transport scene's
 //! outboard station 26 100 of the 65 500 candidates that pass the quick tests are
-//! checked; 23 900 of them fail in their motion, found before any query of the sections).
+//! checked; after the rail's own section test, 23 900 of them fail in their motion, found
+//! before the sections are queried along the deployment).
 
 use nalgebra::Point2;
 
@@ -32,9 +33,7 @@ use super::bodies::hook_centre_line;
 use super::clearance::{place_struts, Clearance, Struts};
 use super::rail::Rail;
 use super::{HookedTrackSearch, HookedTrackSpec};
-use flapwright_mechanism::shared::feasibility::{
-    check_deployment, parameter_at_deflection, DeploymentRules, LoopSample,
-};
+use flapwright_mechanism::shared::feasibility::{check_deployment, DeploymentRules, LoopSample};
 use flapwright_mechanism::shared::outline::FlapPoint;
 use flapwright_mechanism::SynthesisDefect;
 
@@ -96,18 +95,7 @@ impl Found {
 /// The first stroke of `rail` where the flap reaches `deflection_rad` (the flap holds its
 /// deflection over the lead-in and turns forwards on the hook).
 pub(super) fn stroke_at_deflection(spec: &HookedTrackSpec, rail: &Rail, deflection_rad: f64) -> f64 {
-    // In closed form on the hook; the bisection where the deflection lies outside the
-    // hook's range (it answers with the nearer end).
-    if let Some(stroke) = rail.stroke_on_hook_at(deflection_rad) {
-        return stroke;
-    }
-    let deflection = |s: f64| rail.at(s).map_or(f64::NAN, |p| p.flap.rotation.angle());
-    parameter_at_deflection(
-        rail.stroke_m,
-        deflection,
-        deflection_rad,
-        spec.landing.deflection_rad.signum(),
-    )
+    rail.stroke_at_deflection(deflection_rad, spec.landing.deflection_rad.signum())
 }
 
 /// The first stroke of `rail` where the flap reaches the take-off deflection, and the miss

@@ -158,7 +158,9 @@ pub fn screw_jack_placement(
     // Depth alone is not refined: it falls as the screw takes hold nearer the pivot, with a
     // shorter stroke and a larger force, which the grid's coarse steps keep in check.
     if loading.is_none() {
-        return evaluate(best.0).map(|(pair, _)| pair).ok_or(fallback);
+        return evaluate(best.0)
+            .and_then(|(pair, cost)| cost.map(|_| pair))
+            .ok_or(fallback);
     }
     // The refinement stays within the grid's standoffs and turns, and its fraction within
     // the fractions' range and a tenth of the arm of the grid's choice (the arm's far end
@@ -176,7 +178,10 @@ pub fn screw_jack_placement(
     ];
     let cost_of = |placement: Placement| evaluate(placement).and_then(|(_, cost)| cost);
     let (placement, _) = refine(best, bounds, &cost_of);
-    evaluate(placement).map(|(pair, _)| pair).ok_or(fallback)
+    // The refined placement is clear (the search takes only clear ones).
+    evaluate(placement)
+        .and_then(|(pair, cost)| cost.map(|_| pair))
+        .ok_or(fallback)
 }
 
 /// A screw jack's free choices: the attachment's fraction of the arm, the standoff (m) and

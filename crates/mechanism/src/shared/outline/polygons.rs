@@ -98,7 +98,8 @@ impl Polygons {
     /// extent widened by `reach` lies can come that near, and of those an edge whose box is
     /// already farther than `reach` from the segment's is let go before its distance.
     pub fn segment_clear_by(&self, a: Point2<f64>, b: Point2<f64>, reach: f64) -> bool {
-        if self.rings.is_empty() || !reach.is_finite() {
+        let finite = |p: Point2<f64>| p.x.is_finite() && p.y.is_finite();
+        if self.rings.is_empty() || !reach.is_finite() || !finite(a) || !finite(b) {
             return super::segment_distance(&self.rings, a, b) > reach;
         }
         if self.segment_meets(a, b) {
@@ -269,6 +270,28 @@ mod tests {
                 if (nearest - near).abs() > 1e-9 {
                     prop_assert_eq!(plain_near, nearest < near);
                 }
+            }
+        }
+    }
+
+    /// A segment with a coordinate that is not a number is measured as the plain test
+    /// measures it (from its other end), not let through by a box of NaN.
+    #[test]
+    fn a_segment_with_a_nan_end_is_measured_as_the_plain_test_does() {
+        let square = vec![vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 0.0),
+            Point2::new(1.0, 1.0),
+            Point2::new(0.0, 1.0),
+        ]];
+        let polygons = Polygons::from(square.clone());
+        let (a, b) = (Point2::new(1.1, 0.5), Point2::new(f64::NAN, 0.5));
+        for (p, q) in [(a, b), (b, a)] {
+            for reach in [0.05, 0.2] {
+                assert_eq!(
+                    polygons.segment_clear_by(p, q, reach),
+                    super::super::segment_distance(&square, p, q) > reach
+                );
             }
         }
     }

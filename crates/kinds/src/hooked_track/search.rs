@@ -24,8 +24,8 @@
 //! miss); [`check`] samples the deployment only for rails whose bound can still beat the
 //! best found, so the choice is the exhaustive search's (on the transport scene's
 //! outboard station 26 100 of the 65 500 candidates that pass the quick tests are
-//! checked; after the rail's own section test, 23 900 of them fail in their motion, found
-//! before the sections are queried along the deployment).
+//! checked; 23 900 of them fail in their motion, most at their landing pose, found before
+//! the sections are queried).
 
 use nalgebra::Point2;
 
@@ -290,6 +290,18 @@ pub(super) fn check(
     let d = rail.d.into_inner();
     let outline = &spec.outline;
     let rail_ends = rail_ends(spec, &rail);
+    // The landing pose first: one pose rejects most rails (the other branch), before the
+    // rail's own section test.
+    let reached = rail
+        .at(stroke)
+        .is_none_or(|pose| (pose.g - landing * g).norm() <= LANDING_MATCH * rail.span);
+    if !reached {
+        search.branch_or_order += 1;
+        return Err((
+            SynthesisDefect::BranchOrOrder,
+            "the roller reaches landing on the hook's other branch".into(),
+        ));
+    }
     if fixed_blocked(spec, rail_ends[0], rail_ends[1]) {
         search.rail_through_section += 1;
         return Err((
@@ -319,17 +331,6 @@ pub(super) fn check(
     // The motion first (a few comparisons a sample), the sections' queries only for a rail
     // whose motion closes in order and reaches landing on the hook's right branch: most
     // rails fail in their motion.
-    // The landing pose first: one pose rejects most rails (the other branch).
-    let reached = rail
-        .at(stroke)
-        .is_none_or(|pose| (pose.g - landing * g).norm() <= LANDING_MATCH * rail.span);
-    if !reached {
-        search.branch_or_order += 1;
-        return Err((
-            SynthesisDefect::BranchOrOrder,
-            "the roller reaches landing on the hook's other branch".into(),
-        ));
-    }
     let strokes = stroke_samples(&rail);
     let sampled: Vec<_> = strokes.iter().map(|&s| rail.at(s)).collect();
     let samples = strokes.iter().zip(&sampled).map(|(&s, pose)| {

@@ -1,17 +1,18 @@
 """Continuity sweep of issue 37 on transport-flap.toml (reduced resolution).
 
-Usage: python3 sweep.py BINARY WORKDIR [study options, e.g. --kinds hooked-track]
+Usage: python3 sweep.py BINARY WORKDIR [--full] [study options, e.g. --kinds hooked-track]
 
 Runs `BINARY study` on variants of data/scenes/transport-flap.toml: both flaps' landing
 deflection 34-36 deg by 0.2 deg, both flaps' landing gap 1.5-2.5 %c by 0.1, and
 ob-inner's axis_offset_m 1.4-1.6 m by 0.02 m (the issue asks 0.1 deg, 0.05 %c and 0.01 m:
-this is half the resolution). Prints per sweep, kind and station the largest ratio of the
+this is half the resolution; `--full` takes the issue's steps). Prints per sweep, kind and station the largest ratio of the
 peak actuator load and of the mechanism mass between neighbouring steps (with where), and
 the clearance verdict of every step (y/n, - where the kind was not designed).
 """
 import json, os, re, subprocess, sys
 
-BIN = sys.argv[1]; WORK = sys.argv[2]; EXTRA = sys.argv[3:]
+BIN = sys.argv[1]; WORK = sys.argv[2]; EXTRA = [a for a in sys.argv[3:] if a != '--full']
+FULL = '--full' in sys.argv[3:]
 TAG = 'v'
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 os.makedirs(WORK, exist_ok=True)
@@ -37,7 +38,10 @@ def run(kind, value):
             if s.get('max_actuator_load') is None: continue
             out[(k['kind'], s['station'])] = (s['max_actuator_load'], s['mechanism_mass_kg'], s['clearance_passes'])
     return out
-sweeps = {'landing': [34 + 0.2 * i for i in range(11)], 'gap': [1.5 + 0.1 * i for i in range(11)], 'offset': [1.4 + 0.02 * i for i in range(11)]}
+# Half the issue's resolution by default; `--full` takes the issue's own steps.
+STEPS = 21 if FULL else 11
+sweeps = {kind: [start + (stop - start) * i / (STEPS - 1) for i in range(STEPS)]
+          for kind, start, stop in (('landing', 34.0, 36.0), ('gap', 1.5, 2.5), ('offset', 1.4, 1.6))}
 for kind, values in sweeps.items():
     rows = [run(kind, v) for v in values]
     keys = sorted(set().union(*[r.keys() for r in rows]))

@@ -1,7 +1,7 @@
 """Which of the link-track's jumps in the continuity sweep coincide with a change of its
 link's turning sense, of its rotation's side of 90 deg, or of where its pivot stands.
 
-Usage: python3 topology.py WORKDIR [KIND]
+Usage: python3 topology.py WORKDIR [KIND] [--full]
 WORKDIR is the folder `sweep.py` wrote (its `v-<sweep>-<value>/<kind>/report.json`); KIND
 defaults to link-track. Prints every neighbouring pair of steps whose peak actuator load
 or mechanism mass changes by more than 1.5x, with the link's rotation to landing at both
@@ -10,10 +10,12 @@ and SENSE (turns the other way), CLASS (one turns past 90 deg, the other not) or
 """
 import json, sys
 
-WORK = sys.argv[1]
-KIND = sys.argv[2] if len(sys.argv) > 2 else 'link-track'
-SWEEPS = {'landing': [34 + 0.2 * i for i in range(11)], 'gap': [1.5 + 0.1 * i for i in range(11)],
-          'offset': [1.4 + 0.02 * i for i in range(11)]}
+ARGS = [a for a in sys.argv[1:] if a != '--full']
+WORK = ARGS[0]
+KIND = ARGS[1] if len(ARGS) > 1 else 'link-track'
+STEPS = 21 if '--full' in sys.argv[1:] else 11  # as sweep.py
+SWEEPS = {kind: [start + (stop - start) * i / (STEPS - 1) for i in range(STEPS)]
+          for kind, start, stop in (('landing', 34.0, 36.0), ('gap', 1.5, 2.5), ('offset', 1.4, 1.6))}
 
 
 def load(path):

@@ -543,12 +543,7 @@ fn station_figures(report: &Report, station: &StationReport) -> Result<StationFi
     let loads = ActuatorLoads::over(&mechanism.load_cases);
     // The masses list the stations that have sized parts: a station without one weighs
     // nothing here.
-    let mechanism_mass_kg = sizing
-        .masses
-        .per_station
-        .iter()
-        .find(|m| m.station == station.name)
-        .map_or(0.0, |m| m.mass_kg);
+    let mechanism_mass_kg = sizing.masses.station_kg(&station.name);
     Ok(StationFigures {
         station: station.name.clone(),
         fairing_depth_percent_flap_chord: fairing.depth_percent_flap_chord,

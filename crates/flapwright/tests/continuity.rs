@@ -7,9 +7,7 @@
 //! clears. The four-bar, link-track and hooked-track do not meet the bound yet (their
 //! searches choose between basins whose figures differ by 2-7 x: the README's table).
 
-use flapwright::pipeline::{design, Inputs, Mode};
-use flapwright::scene::{NoFiles, Scene};
-use flapwright::MemorySink;
+mod common;
 
 const TRANSPORT: &str = include_str!("../../../data/scenes/transport-flap.toml");
 
@@ -18,41 +16,17 @@ const TRANSPORT: &str = include_str!("../../../data/scenes/transport-flap.toml")
 type Figures = (Vec<(String, f64, f64)>, bool);
 
 fn figures(text: &str) -> Figures {
-    let scene = Scene::from_toml(text, &NoFiles).expect("a valid scene");
-    let inputs = Inputs {
-        scene: &scene,
-        scene_text: text,
-        files: &NoFiles,
-        wing_cache: None,
-    };
-    let outcome = design(&inputs, Mode::Design, &MemorySink::new()).expect("designs");
-    let report = &outcome.report;
+    let report = common::designed(text);
     let sizing = report.sizing.as_ref().expect("sized");
     let stations = report
         .stations
         .iter()
         .map(|station| {
-            let mechanism = station.mechanism.as_ref().expect("a mechanism");
-            let peak = mechanism
-                .load_cases
-                .iter()
-                .flat_map(|case| &case.samples)
-                .map(|sample| sample.actuator_load.abs())
-                // A sample that is not a number makes the peak one (the test then fails).
-                .fold(0.0, |peak: f64, load| {
-                    if peak.is_nan() || load.is_nan() {
-                        f64::NAN
-                    } else {
-                        peak.max(load)
-                    }
-                });
-            let mass = sizing
-                .masses
-                .per_station
-                .iter()
-                .find(|m| m.station == station.name)
-                .map_or(0.0, |m| m.mass_kg);
-            (station.name.clone(), peak, mass)
+            (
+                station.name.clone(),
+                common::peak_actuator_load(&report, &station.name),
+                sizing.masses.station_kg(&station.name),
+            )
         })
         .collect();
     let clears = report.interference.as_ref().expect("checked").passes;

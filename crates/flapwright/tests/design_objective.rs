@@ -1,9 +1,9 @@
 //! `[design] actuator_load_weight` (issue 37): the searches weigh the actuator's load under
 //! the station's load cases against the fairing's depth; 0 gives back the shallowest.
 
-use flapwright::pipeline::{design, Inputs, Mode};
+mod common;
+
 use flapwright::scene::{NoFiles, Scene};
-use flapwright::MemorySink;
 
 const TRANSPORT: &str = include_str!("../../../data/scenes/transport-flap.toml");
 
@@ -22,32 +22,13 @@ fn link_track_at_ob_inner(design_table: &str) -> String {
 /// The link's rotation to landing (rad), the depth below the sections (m) and the peak
 /// actuator torque over the load cases (N m) of the link-track synthesis chose at `ob-inner`.
 fn ob_inner_link(text: &str) -> (f64, f64, f64) {
-    let scene = Scene::from_toml(text, &NoFiles).expect("a valid scene");
-    let inputs = Inputs {
-        scene: &scene,
-        scene_text: text,
-        files: &NoFiles,
-        wing_cache: None,
-    };
-    let outcome = design(&inputs, Mode::Design, &MemorySink::new()).expect("designs");
-    let station = outcome
-        .report
-        .stations
-        .iter()
-        .find(|s| s.name == "ob-inner")
-        .expect("ob-inner");
-    let mechanism = station.mechanism.as_ref().expect("a mechanism");
-    let synthesis = &mechanism.details["synthesis"];
-    let peak = mechanism
-        .load_cases
-        .iter()
-        .flat_map(|case| &case.samples)
-        .map(|sample| sample.actuator_load.abs())
-        .fold(0.0, f64::max);
+    let report = common::designed(text);
+    let station = report.stations.iter().find(|s| s.name == "ob-inner").expect("ob-inner");
+    let synthesis = &station.mechanism.as_ref().expect("a mechanism").details["synthesis"];
     (
         synthesis["link_rotation_rad"][1].as_f64().expect("link rotation").abs(),
         synthesis["depth_below_section_m"].as_f64().expect("depth"),
-        peak,
+        common::peak_actuator_load(&report, "ob-inner"),
     )
 }
 

@@ -76,6 +76,14 @@ impl MassBreakdown {
         let total_kg = per_station.iter().map(|s| s.mass_kg).sum();
         Self { per_station, total_kg }
     }
+
+    /// The mass of `station`'s sized parts (kg); 0 for a station with none listed.
+    pub fn station_kg(&self, station: &str) -> f64 {
+        self.per_station
+            .iter()
+            .find(|m| m.station == station)
+            .map_or(0.0, |m| m.mass_kg)
+    }
 }
 
 #[cfg(test)]
@@ -107,6 +115,7 @@ mod tests {
             }
         );
         assert_eq!(b.total_kg, 3.5);
+        assert_eq!((b.station_kg("b"), b.station_kg("none")), (1.5, 0.0));
         let steel = Material::steel_4340();
         // 1 m of solid r = 10 mm steel: pi x 1e-4 x 7850 = 2.466 kg.
         let m = mass_kg(prism_volume_m3(SectionShape::Solid, 0.01, 1.0), &steel).unwrap();

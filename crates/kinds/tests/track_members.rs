@@ -1,5 +1,6 @@
 //! The track kinds' members (link-track: link, track, struts; hooked-track: rail, hook,
-//! struts) against a hand computation from each pose's pins and reactions.
+//! struts, or tie and truss rods) against a hand computation from each pose's pins and
+//! reactions.
 
 use flapwright_kinds::hooked_track::HookedTrack;
 use flapwright_kinds::link_track::LinkTrack;
@@ -58,11 +59,13 @@ fn track_members_carry_the_pins_pushes_as_cantilevers() {
             "strut-O",
         );
     }
-    // Hooked-track.
+    // Hooked-track, its struts clamped to the skin (no load cases: no truss).
     let mut spec = hooked_track_spec();
     spec.flap_mass.mass_kg = 0.0;
+    spec.design_loads.clear();
     let hooked_track = HookedTrack::synthesise(spec).unwrap();
     let s = hooked_track.synthesis();
+    assert!(s.truss.is_none());
     let d = s.rail_direction;
     let n = nalgebra::Vector2::new(-d.y, d.x);
     let (start, [top_rail, top_hook], clamp, k) =
@@ -139,4 +142,67 @@ fn track_members_carry_the_pins_pushes_as_cantilevers() {
         );
     }
     assert_eq!(on_both_sides, [true, true], "the roller passes the clamp");
+}
+
+/// The hooked-track's support as a truss (its load cases given): the three rods' axial
+/// forces and the carriage's and the roller's pushes hold the support (no net force, no net
+/// moment about two points), the rods carry no bending, and the tie's largest moment is the
+/// larger of its two ends' (the rail's load moved to the rail's start, and that plus the
+/// rods there about the hook's clamp): a hand computation from the pose's pins, the signed
+/// reactions and the truss's geometry.
+#[test]
+fn the_hooked_tracks_truss_holds_the_support() {
+    let load = landing_load();
+    let cross = |a: nalgebra::Vector2<f64>, b: nalgebra::Vector2<f64>| a.perp(&b);
+    let track = HookedTrack::synthesise(hooked_track_spec()).unwrap();
+    let s = track.synthesis();
+    let truss = s.truss.expect("the model section's support is a truss");
+    let d = s.rail_direction;
+    let n = nalgebra::Vector2::new(-d.y, d.x);
+    let range = track.input_range();
+    let [b, a] = truss.tie_m;
+    assert_eq!(a, s.rail_ends_m[0]);
+    assert_eq!(b, s.hook_strut_foot_m);
+    for input in range.samples(13) {
+        let pose = track.pose(input).unwrap();
+        let loads = track.kinetostatics(input, &load).unwrap();
+        let reaction = |name: &str| loads.reactions.iter().find(|(r, _)| r == name).unwrap().1;
+        let (f, g) = (pose.point("F").unwrap(), pose.point("G").unwrap());
+        let along = if input - range.stowed <= s.lead_m {
+            n
+        } else {
+            (g - s.hook_centre_m).normalize()
+        };
+        // What the support takes: the opposites of the carriage's and the roller's reactions.
+        let on_rail = -n * reaction("rail");
+        let on_hook = -along * reaction("G");
+        let scale = on_rail.norm() + on_hook.norm();
+        let mut forces = vec![(f, on_rail), (g, on_hook)];
+        let mut at_a = nalgebra::Vector2::zeros();
+        for (rod, name) in truss.rods.iter().zip(["strut-rail", "strut-hook", "brace"]) {
+            let member = member_load(&loads, name);
+            assert_eq!(member.bending_moment_nm, 0.0, "{name} is a two-force rod");
+            let pull = (rod.top_m - rod.foot_m).normalize() * member.axial_n;
+            forces.push((rod.foot_m, pull));
+            if rod.foot_m == a {
+                at_a += pull;
+            }
+        }
+        let net: nalgebra::Vector2<f64> = forces.iter().map(|(_, force)| force).sum();
+        assert!(net.norm() <= 1e-9 * scale, "net force {net:?}");
+        for about in [a, nalgebra::Point2::new(3.0, -2.0)] {
+            let moment: f64 = forces.iter().map(|(p, force)| cross(p - about, *force)).sum();
+            assert!(
+                moment.abs() <= 1e-9 * scale * 4.0,
+                "net moment {moment} about {about:?}"
+            );
+        }
+        let tip = cross(f - a, on_rail).abs();
+        let root = (cross(f - b, on_rail) + cross(a - b, at_a)).abs();
+        let tie = member_load(&loads, "tie").bending_moment_nm;
+        assert!(
+            (tie - tip.max(root)).abs() <= 1e-9 * tie.max(1.0),
+            "tie {tie} against {tip} / {root}"
+        );
+    }
 }

@@ -118,6 +118,7 @@ impl KindScene for HookedTrackScene {
             screw_drive: context.screw_drive(self.screw.drive()),
             hardware: flap.hardware,
             outline: flap.outline.clone(),
+            design_loads: context.design_loads.clone(),
         };
         HookedTrack::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)

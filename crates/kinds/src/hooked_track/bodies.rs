@@ -106,7 +106,16 @@ pub(super) fn bodies_and_joints(
                 ),
                 capsule("strut-rail", rail_start, synthesis.strut_tops_m[0]),
                 capsule("strut-hook", synthesis.hook_strut_foot_m, synthesis.strut_tops_m[1]),
-            ],
+            ]
+            .into_iter()
+            .chain(synthesis.truss.iter().flat_map(|truss| {
+                let brace = truss.rods[2];
+                [
+                    capsule("tie", truss.tie_m[0], truss.tie_m[1]),
+                    capsule("brace", brace.foot_m, brace.top_m),
+                ]
+            }))
+            .collect(),
             speed_bound: SpeedBound::FIXED,
         },
     ];
@@ -152,12 +161,18 @@ pub(super) fn bodies_and_joints(
         .into_iter()
         .fold(0.0, f64::max);
     let spacing = 3.0 * r_max;
+    let brace_at_rail_start = synthesis
+        .truss
+        .is_some_and(|truss| truss.rods[2].foot_m == truss.rail_start());
     for solid in bodies.iter_mut().flat_map(|body| body.solids.iter_mut()) {
         solid.offset_m = spacing
             * match solid.name.as_str() {
                 "carriage" | "rail" | "screw" => -1.0,
                 "jack-body" | "strut-rail" => -2.0,
-                "strut-hook" => 1.0,
+                "strut-hook" | "tie" => 1.0,
+                // Beside the strut whose foot it shares.
+                "brace" if brace_at_rail_start => -2.0,
+                "brace" => 1.0,
                 _ => 0.0,
             };
     }

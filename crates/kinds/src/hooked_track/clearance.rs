@@ -131,7 +131,7 @@ impl Clearance {
 
 /// Lower-skin points the struts may go up to, flap chords ahead of the cove's lower lip
 /// (`placement::strut_top`'s candidates, nearest first).
-const STRUT_TOPS_AHEAD: [f64; 11] = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
+pub(super) const STRUT_TOPS_AHEAD: [f64; 11] = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
 
 /// Where the two struts stand: from the rail's forward end to `rail_top`, and from the
 /// hook's centre line at vertex `hook_foot` to `hook_top` (m).
@@ -207,7 +207,11 @@ pub(super) fn place_struts(
 /// at every sampled pose, its centre line crosses the wing only through the bay with its
 /// radius and the margin below the upper skin, and it keeps its radius and the margin
 /// from other structure (a torque tube, an intermediate spar) short of its end fitting.
-fn web_strut_top(spec: &HookedTrackSpec, clearance: &Clearance, rail_start: Point2<f64>) -> Option<Point2<f64>> {
+pub(super) fn web_strut_top(
+    spec: &HookedTrackSpec,
+    clearance: &Clearance,
+    rail_start: Point2<f64>,
+) -> Option<Point2<f64>> {
     let outline = &spec.outline;
     let radius = spec.hardware.link_radius_m;
     let (face, lo, hi) = outline.rear_web()?;

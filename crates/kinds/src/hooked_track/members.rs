@@ -1,33 +1,40 @@
 //! The hooked-track's members and their loads at a pose: the rail and the hook, each a
-//! cantilever from the strut that holds it, and the two struts to the wing.
+//! cantilever from where the support holds it, and what holds the support to the wing.
 //!
 //! `003_...` section 3 models the straight part of the rail and the hook as links; here
 //! they are the rails those links stand for (see the kind's module doc), so they carry
 //! their rollers' loads in bending:
 //!
-//! - **rail**: clamped at its forward end, where `strut-rail` holds it; the carriage at F
-//!   pushes it square to itself, -N_F n (the screw's push along the rail is the jack's, which
-//!   is mounted apart).
+//! - **rail**: clamped at its forward end A; the carriage at F pushes it square to itself,
+//!   -N_F n (the screw's push along the rail is the jack's, which is mounted apart).
 //! - **hook**: the roller's lead-in and arc, clamped at the middle vertex of its centre
-//!   line (every 3 deg of arc), where `strut-hook` holds
-//!   it; the roller at G pushes it square to the lead-in or along the hook's radius,
-//!   -N_G m, and the part of the hook between the clamp and the roller carries it.
-//! - **strut-rail**, **strut-hook**: clamped to the lower skin (the rail's strut, where
-//!   none to the skin keeps clear, to the rear spar's web), each carrying its rail's root
-//!   force and couple at its foot.
+//!   line (every 3 deg of arc), B; the roller at G pushes it square to the lead-in or along
+//!   the hook's radius, -N_G m, and the part of the hook between the clamp and the roller
+//!   carries it.
 //!
-//! Each is a cantilever under one force and a couple ([`MemberLoad::of_cantilever_line`];
-//! the hook through [`MemberLoad::of_cantilever_curve`] with its exact tangents and the arc's
-//! points farthest from the push's line):
-//! the rail and the hook are sized where they bend most, the struts for what they hand to
-//! the skin. The two load paths are taken apart (the support is one rigid body in the
-//! kinematics; how its parts share load between them is a structural design left open).
+//! What holds them, with a truss (the `truss` module, `003_...` section 2's "truss-based
+//! support structure"):
+//! - **tie**: from B to A, a cantilever from B carrying the rail's side: the rail's load
+//!   moved to A (a force and a couple) and the pulls of the rods whose foot is A;
+//! - **strut-rail**, **strut-hook**, **brace**: rods pinned at both ends, their axial forces
+//!   from the support's equilibrium.
+//!
+//! Without one (no brace or tie clears, or no load cases): **strut-rail** and
+//! **strut-hook** clamped to the lower skin (the rail's, where none to the skin keeps clear,
+//! to the rear spar's web), each carrying its rail's root force and couple at its foot, the
+//! two load paths taken apart.
+//!
+//! Each bending member is a cantilever under one force and a couple
+//! ([`MemberLoad::of_cantilever_line`]; the hook through [`MemberLoad::of_cantilever_curve`]
+//! with its exact tangents and the arc's points farthest from the push's line): sized where
+//! it bends most.
 
 use nalgebra::{Point2, Vector2};
 
+use super::truss::ROD_NAMES;
 use super::HookedTrack;
 use flapwright_mechanism::shared::geometry::cross;
-use flapwright_mechanism::shared::members::{Member, MemberLoad};
+use flapwright_mechanism::shared::members::{Member, MemberLoad, MemberLoading};
 use flapwright_mechanism::shared::outline::point_segment_distance;
 
 /// The hook's centre line from its clamp (the strut's foot, vertex `foot`) to the roller
@@ -127,16 +134,33 @@ fn polyline_length(line: &[Point2<f64>]) -> f64 {
 }
 
 impl HookedTrack {
-    /// The rail, the hook and their struts (see the module doc).
+    /// The rail and the hook, and the struts clamped to the skin or, with a truss, the tie
+    /// and the three rods (see the module doc).
     pub(super) fn member_list(&self) -> Vec<Member> {
         let s = &self.synthesis;
-        let member = |name: &str, length_m: f64| Member::cantilever(name, length_m, self.spec.hardware.link_radius_m);
-        vec![
+        let radius = self.spec.hardware.link_radius_m;
+        let member = |name: &str, length_m: f64| Member::cantilever(name, length_m, radius);
+        let mut members = vec![
             member("rail", (s.rail_ends_m[1] - s.rail_ends_m[0]).norm()),
             member("hook", polyline_length(&self.hook_line)),
-            member("strut-rail", (s.strut_tops_m[0] - s.rail_ends_m[0]).norm()),
-            member("strut-hook", (s.strut_tops_m[1] - s.hook_strut_foot_m).norm()),
-        ]
+        ];
+        match &s.truss {
+            Some(truss) => {
+                let [b, a] = truss.tie_m;
+                members.push(Member::new("tie", (a - b).norm(), radius, MemberLoading::Bending));
+                members.extend(
+                    ROD_NAMES
+                        .iter()
+                        .zip(truss.lengths_m())
+                        .map(|(name, length)| Member::new(name, length, radius, MemberLoading::TwoForce)),
+                );
+            }
+            None => members.extend([
+                member("strut-rail", (s.strut_tops_m[0] - s.rail_ends_m[0]).norm()),
+                member("strut-hook", (s.strut_tops_m[1] - s.hook_strut_foot_m).norm()),
+            ]),
+        }
+        members
     }
 
     /// The members' loads when the carriage at `f` takes `carriage_push` from the rail and
@@ -156,7 +180,7 @@ impl HookedTrack {
         let line = &self.hook_line;
         let foot = self.hook_foot;
         let clamp = line[foot];
-        vec![
+        let mut loads = vec![
             (
                 "rail".into(),
                 MemberLoad::of_cantilever_line(&[rail_start, f], on_rail, 0.0),
@@ -173,19 +197,47 @@ impl HookedTrack {
                     0.0,
                 ),
             ),
-            (
-                "strut-rail".into(),
-                MemberLoad::of_cantilever_line(
-                    &[s.strut_tops_m[0], rail_start],
-                    on_rail,
-                    cross(f - rail_start, on_rail),
+        ];
+        match &s.truss {
+            Some(truss) => {
+                let tensions = truss.tensions(&[(f, on_rail), (g, on_hook)]);
+                // The tie from the hook's clamp carries the rail's side: the carriage's push
+                // and the pulls of the rods whose foot is the rail's start.
+                let at_rail_start: Vector2<f64> = (0..3)
+                    .filter(|&i| truss.rods[i].foot_m == rail_start)
+                    .map(|i| truss.pull(i, tensions[i]))
+                    .sum();
+                loads.push((
+                    "tie".into(),
+                    MemberLoad::of_cantilever_line(
+                        &truss.tie_m,
+                        on_rail + at_rail_start,
+                        cross(f - rail_start, on_rail),
+                    ),
+                ));
+                loads.extend(
+                    ROD_NAMES
+                        .iter()
+                        .zip(tensions)
+                        .map(|(name, t)| ((*name).to_owned(), MemberLoad::axial(t))),
+                );
+            }
+            None => loads.extend([
+                (
+                    "strut-rail".into(),
+                    MemberLoad::of_cantilever_line(
+                        &[s.strut_tops_m[0], rail_start],
+                        on_rail,
+                        cross(f - rail_start, on_rail),
+                    ),
                 ),
-            ),
-            (
-                "strut-hook".into(),
-                MemberLoad::of_cantilever_line(&[s.strut_tops_m[1], clamp], on_hook, cross(g - clamp, on_hook)),
-            ),
-        ]
+                (
+                    "strut-hook".into(),
+                    MemberLoad::of_cantilever_line(&[s.strut_tops_m[1], clamp], on_hook, cross(g - clamp, on_hook)),
+                ),
+            ]),
+        }
+        loads
     }
 }
 

@@ -23,6 +23,10 @@
 //! flap about F give N_G = -M_F / ((G - F) x m) with m = n or u, then the force balance
 //! Q = -(P + N_G m) · d and N_F = -(P + N_G m) · n. Virtual work, independently, from the
 //! rail's velocity analysis.
+//!
+//! The support (rail and hook, fixed to the wing) is held by a truss of three pinned rods
+//! and a tie where they clear (the `truss` module), else by two struts clamped to the skin;
+//! the members and their loads are in the `members` module.
 
 use nalgebra::{Isometry2, Point2, Vector2};
 use serde::Serialize;
@@ -32,6 +36,9 @@ mod clearance;
 mod members;
 mod rail;
 mod search;
+mod truss;
+
+pub use truss::{SupportRod, SupportTruss};
 
 use rail::{Rail, RailPose};
 
@@ -76,6 +83,10 @@ pub struct HookedTrackSpec {
     pub hardware: LinkHardware,
     /// The station's sections.
     pub outline: StationOutline,
+    /// The station's load cases, under which the support's truss is laid out (the `truss`
+    /// module); empty: the rail and the hook on cantilevered struts.
+    #[serde(skip)]
+    pub design_loads: Vec<LoadCase>,
 }
 
 /// Counts of what the search rejected.
@@ -177,6 +188,11 @@ pub struct HookedTrackSynthesis {
     /// Where the struts from the rail's forward end and from the hook meet the lower skin
     /// (the rail's, where none to the skin keeps clear, the rear spar's web) (m).
     pub strut_tops_m: [Point2<f64>; 2],
+    /// The support's truss: its rods pinned at both ends, with a brace and a tie (the
+    /// `truss` module; `strut_tops_m` are its struts' tops); None: the struts clamped to the
+    /// skin, holding the rail and the hook as cantilevers (no brace or tie cleared, or no
+    /// load cases were given).
+    pub truss: Option<SupportTruss>,
     /// What the search rejected.
     pub search: HookedTrackSearch,
 }
@@ -194,6 +210,47 @@ pub struct HookedTrack {
     hook_foot: usize,
     bodies: Vec<Body>,
     joints: Vec<Joint>,
+}
+
+/// What the flap's wrench needs at one pose (see the module doc's statics): the screw's
+/// push Q along the rail, the rail's N_F square to it and the roller's N_G along m (N).
+#[derive(Debug, Clone, Copy)]
+struct Pushes {
+    screw_n: f64,
+    rail_n: f64,
+    roller_n: f64,
+    /// m: the rail's normal on the lead-in, the hook's radius on the hook.
+    roller_direction: Vector2<f64>,
+}
+
+impl Pushes {
+    fn at(rail: &Rail, pose: &RailPose, wrench: &FlapWrench) -> Self {
+        let d = rail.d.into_inner();
+        let n = rail.normal();
+        // The roller's reaction: square to the lead-in, or along the hook's radius.
+        let m = if pose.on_hook {
+            (pose.g - rail.k) / rail.radius_m
+        } else {
+            n
+        };
+        let roller = -wrench.moment_about(pose.f) / cross(pose.g - pose.f, m);
+        let rest = wrench.force_n() + m * roller;
+        Self {
+            screw_n: -rest.dot(&d),
+            rail_n: -rest.dot(&n),
+            roller_n: roller,
+            roller_direction: m,
+        }
+    }
+
+    /// The forces on the wing-fixed support: the carriage's on the rail at F and the
+    /// roller's on the hook at G (the screw's push goes to its own mount).
+    fn on_support(&self, rail: &Rail, pose: &RailPose) -> [(Point2<f64>, Vector2<f64>); 2] {
+        [
+            (pose.f, -rail.normal() * self.rail_n),
+            (pose.g, -self.roller_direction * self.roller_n),
+        ]
+    }
 }
 
 fn failure(defect: SynthesisDefect, detail: String) -> Error {
@@ -339,6 +396,10 @@ impl HookedTrack {
         ];
         let hook_line = bodies::hook_centre_line(&rail, spec.landing.flap * rail.g);
         let hook_foot = found.struts.hook_foot;
+        let truss = Self::lay_out_truss(&spec, &rail, rail_ends[0], hook_line[hook_foot]);
+        let strut_tops_m = truss.map_or([found.struts.rail_top, found.struts.hook_top], |t| {
+            [t.rods[0].top_m, t.rods[1].top_m]
+        });
         let (screw, nominal_speed_mps) = spec.screw_drive.screw_for(rail.stroke_m);
         let synthesis = HookedTrackSynthesis {
             forward_attachment_m: rail.f,
@@ -364,7 +425,8 @@ impl HookedTrack {
                 .fold(0.0, f64::max),
             nominal_speed_mps,
             hook_strut_foot_m: hook_line[hook_foot],
-            strut_tops_m: [found.struts.rail_top, found.struts.hook_top],
+            strut_tops_m,
+            truss,
             search: counts,
         };
         let (bodies, joints) = bodies::bodies_and_joints(&spec, &synthesis, &rail, certified);
@@ -377,6 +439,28 @@ impl HookedTrack {
             bodies,
             joints,
         })
+    }
+
+    /// The support's truss for the rail from `a` and the hook's clamp at `b`, under the
+    /// spec's load cases over the sampled deployment (the `truss` module).
+    fn lay_out_truss(spec: &HookedTrackSpec, rail: &Rail, a: Point2<f64>, b: Point2<f64>) -> Option<SupportTruss> {
+        let poses: Vec<(f64, RailPose)> = search::stroke_samples(rail)
+            .into_iter()
+            .filter_map(|s| rail.at(s).map(|pose| (s, pose)))
+            .collect();
+        let loads: Vec<_> = spec
+            .design_loads
+            .iter()
+            .flat_map(|load| {
+                poses.iter().map(move |(s, pose)| {
+                    let fraction = (s / rail.stroke_m).clamp(0.0, 1.0);
+                    let wrench = FlapWrench::new(&spec.flap_mass, &pose.flap, load, fraction);
+                    Pushes::at(rail, pose, &wrench).on_support(rail, pose)
+                })
+            })
+            .collect();
+        let clearance = clearance::Clearance::new(spec, poses.iter().map(|(_, pose)| pose.flap).collect());
+        truss::place_truss(spec, &clearance, a, b, &loads)
     }
 
     /// The designer's choices.
@@ -502,16 +586,12 @@ impl FlapMechanism for HookedTrack {
         let wrench = FlapWrench::new(&self.spec.flap_mass, &pose.flap, load, fraction);
         let d = rail.d.into_inner();
         let n = rail.normal();
-        // The roller's reaction: square to the lead-in, or along the hook's radius.
-        let m = if pose.on_hook {
-            (pose.g - rail.k) / rail.radius_m
-        } else {
-            n
-        };
-        let roller = -wrench.moment_about(pose.f) / cross(pose.g - pose.f, m);
-        let rest = wrench.force_n() + m * roller;
-        let screw_force = -rest.dot(&d);
-        let rail_force = -rest.dot(&n);
+        let Pushes {
+            screw_n: screw_force,
+            rail_n: rail_force,
+            roller_n: roller,
+            roller_direction: m,
+        } = Pushes::at(rail, &pose, &wrench);
         // Virtual work: the screw's power balances the flap's wrench.
         let (_, flap_rate) = rail.rates(&pose);
         let velocity_of = |point: Point2<f64>| {
@@ -592,8 +672,8 @@ impl FlapMechanism for HookedTrack {
         }
     }
 
-    /// The rail and the hook, each a cantilever from its strut, and the struts (see the
-    /// `members` module).
+    /// The rail and the hook, each a cantilever, and the truss's tie and rods or the
+    /// clamped struts (see the `members` module).
     fn members(&self) -> Vec<flapwright_mechanism::seam::Member> {
         self.member_list()
     }

@@ -331,9 +331,25 @@ pub fn strut_top(
     flap_poses: &[Isometry2<f64>],
     avoid: Option<Point2<f64>>,
 ) -> Option<Point2<f64>> {
-    let lip = outline.cove_lower_lip_x()?;
-    let (_, _, flap_chord) = outline.flap_chord()?;
-    ahead.iter().find_map(|&k| {
+    strut_tops(outline, from, ahead, radius, margin, flap_poses, avoid).next()
+}
+
+/// Every top of [`strut_top`]'s candidates whose strut from `from` clears, in the
+/// candidates' order (a truss chooses among them, `strut_top` takes the first).
+pub fn strut_tops<'a>(
+    outline: &'a StationOutline,
+    from: Point2<f64>,
+    ahead: &'a [f64],
+    radius: f64,
+    margin: f64,
+    flap_poses: &'a [Isometry2<f64>],
+    avoid: Option<Point2<f64>>,
+) -> impl Iterator<Item = Point2<f64>> + 'a {
+    let lip_and_chord = outline
+        .cove_lower_lip_x()
+        .zip(outline.flap_chord().map(|(_, _, chord)| chord));
+    ahead.iter().filter_map(move |&k| {
+        let (lip, flap_chord) = lip_and_chord?;
         let top = outline.wing_lower_point(lip + k * flap_chord)?;
         let distinct = avoid.is_none_or(|p| (p - top).norm() > 0.04 * flap_chord);
         // The strut ends on the skin by design: it must not cross the wing short of its top.

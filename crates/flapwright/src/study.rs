@@ -73,6 +73,11 @@ pub struct StationFigures {
     pub clearance_passes: bool,
     /// Gap and overlap (% of the local chord) against deflection (deg), first load case.
     pub gap_overlap: Vec<[f64; 3]>,
+    /// The mechanism's arrangement where the kind states one (the hooked-track's and the
+    /// link-track's `details.synthesis.topology`): two designs that differ in it are
+    /// different mechanisms, whose figures may differ by several times.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub topology: Option<serde_json::Value>,
 }
 
 /// A setting's misses.
@@ -557,6 +562,11 @@ fn station_figures(report: &Report, station: &StationReport) -> Result<StationFi
         transmission_angle_deg: loads.transmission_angle_deg,
         clearance_passes: clearance_passes(interference, &station.name, station.flap.as_deref()),
         gap_overlap: gap_overlap(&mechanism.load_cases),
+        topology: mechanism
+            .details
+            .get("synthesis")
+            .and_then(|synthesis| synthesis.get("topology"))
+            .cloned(),
     })
 }
 
@@ -1156,6 +1166,7 @@ mod tests {
             transmission_angle_deg: [40.0, 80.0],
             clearance_passes: clears,
             gap_overlap: Vec::new(),
+            topology: None,
         }
     }
 

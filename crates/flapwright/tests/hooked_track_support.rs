@@ -25,6 +25,16 @@ fn the_hooked_tracks_truss_holds_ob_inner_within_table_1_by_two_and_a_half() {
     for station in &report.stations {
         let synthesis = &station.mechanism.as_ref().expect("a mechanism").details["synthesis"];
         assert!(synthesis["truss"].is_object(), "{}: a truss", station.name);
+        // The arrangement the study and the continuity sweep compare.
+        let topology = &synthesis["topology"];
+        assert!(
+            ["above-rail", "below-rail"].contains(&topology["roller"].as_str().unwrap_or("")),
+            "{topology}"
+        );
+        assert!(
+            ["pushing", "pulling"].contains(&topology["jack"].as_str().unwrap_or("")),
+            "{topology}"
+        );
         let names: Vec<&str> = sizing
             .rods
             .iter()

@@ -89,6 +89,63 @@ pub struct HookedTrackSpec {
     pub design_loads: Vec<LoadCase>,
 }
 
+/// The hooked-track's arrangement, the discrete choices its search spans: neighbouring
+/// inputs whose designs differ in it are different mechanisms, whose figures may differ by
+/// several times (issue 37's continuity: a jump the report must state).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct HookedTrackTopology {
+    /// Which side of the rail's line the roller G runs, seen from the station's up.
+    pub roller: RollerSide,
+    /// Whether the screw jack pushes the carriage (mounted ahead of it) or pulls it (behind
+    /// the rail's aft end).
+    pub jack: JackSense,
+}
+
+/// Which side of the rail's line the hooked-track's roller runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum RollerSide {
+    /// On the side of the rail's normal that points up (+y of the station frame).
+    AboveRail,
+    /// On the other side.
+    BelowRail,
+}
+
+/// How a screw jack on the rail's line moves the carriage.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum JackSense {
+    /// Mounted ahead of the stowed carriage: the screw pushes it to landing.
+    Pushing,
+    /// Mounted behind the rail's aft end: the screw pulls it.
+    Pulling,
+}
+
+impl HookedTrackTopology {
+    /// The arrangement of a rail along `d` from `rail_start` with the carriage at `f`, the
+    /// roller at `g` (stowed) and the jack at `mount`.
+    fn of(d: Vector2<f64>, rail_start: Point2<f64>, f: Point2<f64>, g: Point2<f64>, mount: Point2<f64>) -> Self {
+        // The rail's normal with a non-negative y (d's left normal when d points forward).
+        let up = if d.x >= 0.0 {
+            Vector2::new(-d.y, d.x)
+        } else {
+            Vector2::new(d.y, -d.x)
+        };
+        Self {
+            roller: if (g - f).dot(&up) > 0.0 {
+                RollerSide::AboveRail
+            } else {
+                RollerSide::BelowRail
+            },
+            jack: if (mount - rail_start).dot(&d) < 0.0 {
+                JackSense::Pushing
+            } else {
+                JackSense::Pulling
+            },
+        }
+    }
+}
+
 /// Counts of what the search rejected.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
 pub struct HookedTrackSearch {
@@ -193,6 +250,8 @@ pub struct HookedTrackSynthesis {
     /// skin, holding the rail and the hook as cantilevers (no brace or tie cleared, or no
     /// load cases were given).
     pub truss: Option<SupportTruss>,
+    /// The arrangement chosen (see [`HookedTrackTopology`]).
+    pub topology: HookedTrackTopology,
     /// What the search rejected.
     pub search: HookedTrackSearch,
 }
@@ -427,6 +486,7 @@ impl HookedTrack {
             hook_strut_foot_m: hook_line[hook_foot],
             strut_tops_m,
             truss,
+            topology: HookedTrackTopology::of(d, rail_ends[0], rail.f, rail.g, found.mount),
             search: counts,
         };
         let (bodies, joints) = bodies::bodies_and_joints(&spec, &synthesis, &rail, certified);
@@ -686,5 +746,26 @@ impl FlapMechanism for HookedTrack {
     /// synthesis instead (it used to be a warning and a strut through the flap).
     fn warnings(&self) -> Vec<String> {
         Vec::new()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The roller's side is seen from the station's up whichever way the rail runs, and the
+    /// jack pushes from ahead of the rail's start, pulls from behind it.
+    #[test]
+    fn the_topology_names_the_rollers_side_and_the_jacks_sense() {
+        let p = Point2::new;
+        let (f, start) = (p(0.0, 0.0), p(-0.01, 0.0));
+        for d in [Vector2::new(0.8, -0.6), Vector2::new(-0.8, -0.6)] {
+            let above = HookedTrackTopology::of(d, start, f, p(0.0, 0.3), start - d);
+            assert_eq!(above.roller, RollerSide::AboveRail, "{d:?}");
+            assert_eq!(above.jack, JackSense::Pushing);
+            let below = HookedTrackTopology::of(d, start, f, p(0.0, -0.3), start + 2.0 * d);
+            assert_eq!(below.roller, RollerSide::BelowRail, "{d:?}");
+            assert_eq!(below.jack, JackSense::Pulling);
+        }
     }
 }

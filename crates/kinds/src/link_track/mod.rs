@@ -127,6 +127,58 @@ pub enum PivotPlace {
     OutsideWing,
 }
 
+/// The link-track's arrangement, the discrete choices its search spans: neighbouring
+/// inputs whose designs differ in it are different mechanisms, whose figures may differ by
+/// several times (issue 37's continuity: the link turning 100-150 deg with a small torque
+/// or 40-60 deg with a large one; `data/validation/continuity`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct LinkTrackTopology {
+    /// Which way the link turns to landing.
+    pub turning: TurningSense,
+    /// Whether it turns past a quarter turn.
+    pub sweep: LinkSweep,
+    /// Where its fixed pivot stands.
+    pub pivot: PivotPlace,
+}
+
+/// Which way a link turns (station frame, +z out of the plane).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum TurningSense {
+    /// Counter-clockwise: a positive rotation.
+    CounterClockwise,
+    /// Clockwise.
+    Clockwise,
+}
+
+/// How far a link turns from stowed to landing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum LinkSweep {
+    /// Up to a quarter turn.
+    WithinQuarterTurn,
+    /// Beyond a quarter turn.
+    PastQuarterTurn,
+}
+
+impl LinkTrackTopology {
+    fn of(landing_rotation_rad: f64, pivot: PivotPlace) -> Self {
+        Self {
+            turning: if landing_rotation_rad >= 0.0 {
+                TurningSense::CounterClockwise
+            } else {
+                TurningSense::Clockwise
+            },
+            sweep: if landing_rotation_rad.abs() > std::f64::consts::FRAC_PI_2 {
+                LinkSweep::PastQuarterTurn
+            } else {
+                LinkSweep::WithinQuarterTurn
+            },
+            pivot,
+        }
+    }
+}
+
 /// What synthesis computed.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LinkTrackSynthesis {
@@ -147,6 +199,8 @@ pub struct LinkTrackSynthesis {
     pub carriage_travel_m: [f64; 2],
     /// The link's rotation at take-off and landing (rad).
     pub link_rotation_rad: [f64; 2],
+    /// The arrangement chosen (see [`LinkTrackTopology`]).
+    pub topology: LinkTrackTopology,
     /// Smallest transmission angle over the deployment (rad, sampled).
     pub min_transmission_angle_rad: f64,
     /// A certified lower bound on it between samples (rad).
@@ -366,13 +420,15 @@ impl LinkTrack {
             second.unwrap_or_else(|| fallback(track_ends[0])),
         ];
         let carriage_travel = found.turns.map(|t| loop_.at(t).map_or(f64::NAN, |p| p.travel));
+        let link_pivot_place = if search::on_web(&spec.outline, loop_.o) {
+            PivotPlace::TrailingEdgeBay
+        } else {
+            PivotPlace::OutsideWing
+        };
         let synthesis = LinkTrackSynthesis {
             link_pivot_m: loop_.o,
-            link_pivot_place: if search::on_web(&spec.outline, loop_.o) {
-                PivotPlace::TrailingEdgeBay
-            } else {
-                PivotPlace::OutsideWing
-            },
+            link_pivot_place,
+            topology: LinkTrackTopology::of(found.turns[1], link_pivot_place),
             link_flap_pivot_m: loop_.a,
             carriage_m: loop_.c,
             track_direction: loop_.d.into_inner(),
@@ -651,5 +707,32 @@ impl LinkTrackSpec {
             flap_mass: self.flap_mass,
             weight: self.load_weight,
         })
+    }
+}
+
+#[cfg(test)]
+mod topology_tests {
+    use super::*;
+
+    #[test]
+    fn the_topology_names_the_links_sense_and_whether_it_turns_past_a_quarter_turn() {
+        let t = LinkTrackTopology::of(-2.0, PivotPlace::TrailingEdgeBay);
+        assert_eq!(
+            (t.turning, t.sweep, t.pivot),
+            (
+                TurningSense::Clockwise,
+                LinkSweep::PastQuarterTurn,
+                PivotPlace::TrailingEdgeBay
+            )
+        );
+        let t = LinkTrackTopology::of(0.7, PivotPlace::OutsideWing);
+        assert_eq!(
+            (t.turning, t.sweep),
+            (TurningSense::CounterClockwise, LinkSweep::WithinQuarterTurn)
+        );
+        assert_eq!(
+            serde_json::to_value(t).unwrap(),
+            serde_json::json!({"turning": "counter-clockwise", "sweep": "within-quarter-turn", "pivot": "outside-wing"})
+        );
     }
 }

@@ -74,3 +74,16 @@ fn a_load_weight_out_of_range_is_refused_by_key_and_line() {
     assert!(error.contains(&format!("{line}:")), "line {line}: {error}");
     assert!(error.contains("10"), "the allowed range: {error}");
 }
+
+#[test]
+fn a_trade_index_beyond_the_largest_trade_is_refused_by_key_and_line() {
+    let text =
+        link_track_at_ob_inner("").replacen("kind = \"link-track\"\n", "kind = \"link-track\"\ntrade_index = 8\n", 1);
+    let error = Scene::from_toml(&text, &NoFiles)
+        .expect_err("the trade has at most 8 candidates, 0 to 7")
+        .to_string();
+    assert!(error.contains("mechanism.trade_index"), "{error}");
+    let line = text.lines().position(|l| l.starts_with("trade_index")).unwrap() + 1;
+    assert!(error.contains(&format!("{line}:")), "line {line}: {error}");
+    assert!(error.contains('7'), "the allowed range: {error}");
+}

@@ -151,6 +151,7 @@ pub fn link_track_spec() -> LinkTrackSpec {
         design_loads: Vec::new(),
         load_weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
         follow: None,
+        trade_index: None,
     }
 }
 

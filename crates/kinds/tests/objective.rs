@@ -241,3 +241,46 @@ fn peak_load(mechanism: &dyn FlapMechanism, case: &LoadCase) -> f64 {
         .map(|q| mechanism.kinetostatics(q, case).unwrap().actuator_load.abs())
         .fold(0.0, f64::max)
 }
+
+/// `trade_index` takes another candidate of the weighed search's trade: the mechanism
+/// synthesised is that candidate (its pivot, depth and peak torque as the trade lists
+/// them), marked chosen in the trade it is listed in; an index the trade does not have is
+/// refused, naming the count.
+#[test]
+fn a_link_track_takes_the_trade_candidate_it_is_given_by_index() {
+    let spec = LinkTrackSpec {
+        design_loads: vec![flight_load()],
+        ..link_track_spec()
+    };
+    let weighed = LinkTrack::synthesise(spec.clone()).unwrap();
+    let trade = weighed.synthesis().trade.clone();
+    assert!(trade.len() >= 2, "a trade to pick from: {trade:?}");
+    assert_eq!(trade.iter().filter(|c| c.chosen).count(), 1);
+    for (index, candidate) in trade.iter().enumerate() {
+        let picked = LinkTrack::synthesise(LinkTrackSpec {
+            trade_index: Some(index),
+            ..spec.clone()
+        })
+        .unwrap();
+        let s = picked.synthesis();
+        assert_eq!(s.link_pivot_m, candidate.link_pivot_m, "candidate {index}");
+        assert_eq!(s.depth_below_section_m, candidate.depth_below_section_m);
+        let chosen: Vec<usize> = (0..s.trade.len()).filter(|&k| s.trade[k].chosen).collect();
+        assert_eq!(chosen, vec![index]);
+        let torque = peak_load(&picked, &flight_load());
+        assert!(
+            (torque - candidate.peak_torque_nm).abs() <= 1e-3 * candidate.peak_torque_nm,
+            "candidate {index}: {torque} against {}",
+            candidate.peak_torque_nm
+        );
+    }
+    match LinkTrack::synthesise(LinkTrackSpec {
+        trade_index: Some(trade.len()),
+        ..spec
+    }) {
+        Err(flapwright_mechanism::Error::NoSuchTradeCandidate { index, count, .. }) => {
+            assert_eq!((index, count), (trade.len(), trade.len()));
+        }
+        other => panic!("{other:?}"),
+    }
+}

@@ -99,9 +99,15 @@ fn track_members_carry_the_pins_pushes_as_cantilevers() {
         let m = |name: &str| member_load(&loads, name).bending_moment_nm;
         let rail_push = reaction("rail");
         close(m("rail"), rail_push * (f - start).norm(), 1e-9, "rail");
+        // The strut's top also takes the screw's reaction, on the rail's line through the
+        // rail's start (the jack body stands on the support).
+        let on_rail = -n * loads.reactions.iter().find(|(r, _)| r == "rail").unwrap().1;
+        let on_jack = -d * loads.actuator_load;
         close(
             m("strut-rail"),
-            rail_push * (f - start).norm().max(cross(f - top_rail, n).abs()),
+            cross(f - start, on_rail)
+                .abs()
+                .max((cross(f - top_rail, on_rail) + cross(start - top_rail, on_jack)).abs()),
             1e-9,
             "strut-rail",
         );
@@ -145,8 +151,8 @@ fn track_members_carry_the_pins_pushes_as_cantilevers() {
 }
 
 /// The hooked-track's support as a truss (its load cases given): the three rods' axial
-/// forces and the carriage's and the roller's pushes hold the support (no net force, no net
-/// moment about two points), the rods carry no bending, and the tie's largest moment is the
+/// forces and the carriage's, the roller's and the screw's pushes hold the support (no net
+/// force, no net moment about two points; together the pushes are the flap's load), the rods carry no bending, and the tie's largest moment is the
 /// larger of its two ends' (the rail's load moved to the rail's start, and that plus the
 /// rods there about the hook's clamp): a hand computation from the pose's pins, the signed
 /// reactions and the truss's geometry.
@@ -173,11 +179,13 @@ fn the_hooked_tracks_truss_holds_the_support() {
         } else {
             (g - s.hook_centre_m).normalize()
         };
-        // What the support takes: the opposites of the carriage's and the roller's reactions.
+        // What the support takes: the opposites of the carriage's and the roller's reactions
+        // and the screw's reaction at the jack's mount.
         let on_rail = -n * reaction("rail");
         let on_hook = -along * reaction("G");
-        let scale = on_rail.norm() + on_hook.norm();
-        let mut forces = vec![(f, on_rail), (g, on_hook)];
+        let on_jack = -d * loads.actuator_load;
+        let scale = on_rail.norm() + on_hook.norm() + on_jack.norm();
+        let mut forces = vec![(f, on_rail), (g, on_hook), (s.jack_mount_m, on_jack)];
         let mut at_a = nalgebra::Vector2::zeros();
         for (rod, name) in truss.rods.iter().zip(["strut-rail", "strut-hook", "brace"]) {
             let member = member_load(&loads, name);
@@ -188,6 +196,20 @@ fn the_hooked_tracks_truss_holds_the_support() {
                 at_a += pull;
             }
         }
+        // The three pushes are the flap's load (its weight and air load), which the rods
+        // hand to the wing.
+        let flap_load = flapwright_mechanism::shared::flap_load::FlapWrench::new(
+            &hooked_track_spec().flap_mass,
+            &pose.flap,
+            &load,
+            range.fraction(input),
+        )
+        .force_n();
+        let pushes = on_rail + on_hook + on_jack;
+        assert!(
+            (pushes - flap_load).norm() <= 1e-9 * scale,
+            "{pushes:?} against {flap_load:?}"
+        );
         let net: nalgebra::Vector2<f64> = forces.iter().map(|(_, force)| force).sum();
         assert!(net.norm() <= 1e-9 * scale, "net force {net:?}");
         for about in [a, nalgebra::Point2::new(3.0, -2.0)] {
@@ -198,7 +220,7 @@ fn the_hooked_tracks_truss_holds_the_support() {
             );
         }
         let tip = cross(f - a, on_rail).abs();
-        let root = (cross(f - b, on_rail) + cross(a - b, at_a)).abs();
+        let root = (cross(f - b, on_rail) + cross(a - b, at_a + on_jack)).abs();
         let tie = member_load(&loads, "tie").bending_moment_nm;
         assert!(
             (tie - tip.max(root)).abs() <= 1e-9 * tie.max(1.0),

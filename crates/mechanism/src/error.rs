@@ -206,6 +206,17 @@ pub enum Error {
         /// The numbers behind it.
         detail: String,
     },
+    /// A candidate picked by its index in a search's trade (the non-dominated candidates the
+    /// report lists) that the trade does not have.
+    #[error("{kind}: trade_index = {index}: the search's trade has {count} candidates here (the report's `details.synthesis.trade`, from 0; without load cases it has none)")]
+    NoSuchTradeCandidate {
+        /// The kind's scene name.
+        kind: &'static str,
+        /// The index asked.
+        index: usize,
+        /// How many candidates the trade has.
+        count: usize,
+    },
     /// A kind's statics cannot take this load.
     #[error("the {kind} cannot take {load}")]
     LoadNotSupported {

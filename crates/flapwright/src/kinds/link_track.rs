@@ -31,6 +31,9 @@ pub struct LinkTrackScene {
     /// The rotary actuator's gearing and the shared drive.
     #[serde(default)]
     pub rotary: RotaryDriveScene,
+    /// Take this candidate of the search's trade (the report's `details.synthesis.trade`,
+    /// from 0) instead of the one the weights choose; absent: theirs.
+    pub trade_index: Option<usize>,
 }
 
 /// Track slopes a scene may give, deg below aft: any direction (the search goes round the
@@ -53,6 +56,10 @@ impl KindScene for LinkTrackScene {
         if let Some(slope) = self.track_slope_deg {
             let (lo, hi) = TRACK_SLOPE_DEG;
             checker.in_range(&format!("{path}.track_slope_deg"), slope, lo, hi, false);
+        }
+        if let Some(index) = self.trade_index {
+            let most = flapwright_kinds::link_track::TRADE_CANDIDATES - 1;
+            checker.in_range(&format!("{path}.trade_index"), index as f64, 0.0, most as f64, false);
         }
         self.rotary.check(checker, path);
     }
@@ -91,6 +98,7 @@ impl KindScene for LinkTrackScene {
             design_loads: context.design_loads.clone(),
             load_weight: context.actuator_load_weight,
             follow: context.followed.clone(),
+            trade_index: self.trade_index,
         };
         LinkTrack::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)
@@ -98,7 +106,7 @@ impl KindScene for LinkTrackScene {
     }
 
     fn geometry_keys(&self) -> &'static str {
-        "the flap settings, link_pivot_m and track_slope_deg"
+        "the flap settings, link_pivot_m, track_slope_deg and trade_index"
     }
 
     fn follows_motion(&self) -> bool {

@@ -6,7 +6,9 @@
 //! their rollers' loads in bending:
 //!
 //! - **rail**: clamped at its forward end A; the carriage at F pushes it square to itself,
-//!   -N_F n (the screw's push along the rail is the jack's, which is mounted apart).
+//!   -N_F n; the screw's reaction -Q d acts at the jack's mount on the rail's line (the jack
+//!   body is on the support): a jack behind the rail (pulling) loads the rail along itself,
+//!   one ahead of the carriage (pushing) hands its reaction to A directly.
 //! - **hook**: the roller's lead-in and arc, clamped at the middle vertex of its centre
 //!   line (every 3 deg of arc), B; the roller at G pushes it square to the lead-in or along
 //!   the hook's radius, -N_G m, and the part of the hook between the clamp and the roller
@@ -15,14 +17,15 @@
 //! What holds them, with a truss (the `truss` module, `003_...` section 2's "truss-based
 //! support structure"):
 //! - **tie**: from B to A, a cantilever from B carrying the rail's side: the rail's load
-//!   moved to A (a force and a couple) and the pulls of the rods whose foot is A;
+//!   moved to A (a force and a couple), the jack's reaction and the pulls of the rods whose
+//!   foot is A;
 //! - **strut-rail**, **strut-hook**, **brace**: rods pinned at both ends, their axial forces
 //!   from the support's equilibrium.
 //!
 //! Without one (no brace or tie clears, or no load cases): **strut-rail** and
 //! **strut-hook** clamped to the lower skin (the rail's, where none to the skin keeps clear,
-//! to the rear spar's web), each carrying its rail's root force and couple at its foot, the
-//! two load paths taken apart.
+//! to the rear spar's web), each carrying its rail's root force and couple at its foot (the
+//! rail's with the jack's reaction), the two load paths taken apart.
 //!
 //! Each bending member is a cantilever under one force and a couple
 //! ([`MemberLoad::of_cantilever_line`]; the hook through [`MemberLoad::of_cantilever_curve`]
@@ -164,8 +167,9 @@ impl HookedTrack {
     }
 
     /// The members' loads when the carriage at `f` takes `carriage_push` from the rail and
-    /// the roller at `g` takes `roller_push` from the hook (N; the members take the
-    /// opposites).
+    /// the screw (the screw's part along the rail, the rail's square to it) and the roller at
+    /// `g` takes `roller_push` from the hook (N; the members take the opposites: the jack's
+    /// mount, on the support on the rail's line, takes the screw's reaction).
     pub(super) fn member_loads(
         &self,
         f: Point2<f64>,
@@ -175,16 +179,22 @@ impl HookedTrack {
     ) -> Vec<(String, MemberLoad)> {
         let s = &self.synthesis;
         let rail_start = s.rail_ends_m[0];
-        let on_rail = -carriage_push;
+        let d = s.rail_direction;
+        // The screw's reaction at the jack's mount, on the rail's line through A: it adds no
+        // moment about A. A jack behind the rail (pulling) hands it to A along the rail.
+        let on_jack = -d * carriage_push.dot(&d);
+        let on_rail = -carriage_push - on_jack;
         let on_hook = -roller_push;
+        let jack_behind = (s.jack_mount_m - rail_start).dot(&d) > 0.0;
+        let mut rail = MemberLoad::of_cantilever_line(&[rail_start, f], on_rail, 0.0);
+        if jack_behind {
+            rail.axial_n = on_jack.dot(&d);
+        }
         let line = &self.hook_line;
         let foot = self.hook_foot;
         let clamp = line[foot];
         let mut loads = vec![
-            (
-                "rail".into(),
-                MemberLoad::of_cantilever_line(&[rail_start, f], on_rail, 0.0),
-            ),
+            ("rail".into(), rail),
             (
                 "hook".into(),
                 MemberLoad::of_cantilever_curve(
@@ -200,9 +210,9 @@ impl HookedTrack {
         ];
         match &s.truss {
             Some(truss) => {
-                let tensions = truss.tensions(&[(f, on_rail), (g, on_hook)]);
-                // The tie from the hook's clamp carries the rail's side: the carriage's push
-                // and the pulls of the rods whose foot is the rail's start.
+                let tensions = truss.tensions(&[(f, on_rail), (g, on_hook), (s.jack_mount_m, on_jack)]);
+                // The tie from the hook's clamp carries the rail's side: the carriage's push,
+                // the jack's reaction and the pulls of the rods whose foot is the rail's start.
                 let at_rail_start: Vector2<f64> = (0..3)
                     .filter(|&i| truss.rods[i].foot_m == rail_start)
                     .map(|i| truss.pull(i, tensions[i]))
@@ -211,7 +221,7 @@ impl HookedTrack {
                     "tie".into(),
                     MemberLoad::of_cantilever_line(
                         &truss.tie_m,
-                        on_rail + at_rail_start,
+                        on_rail + on_jack + at_rail_start,
                         cross(f - rail_start, on_rail),
                     ),
                 ));
@@ -227,7 +237,7 @@ impl HookedTrack {
                     "strut-rail".into(),
                     MemberLoad::of_cantilever_line(
                         &[s.strut_tops_m[0], rail_start],
-                        on_rail,
+                        on_rail + on_jack,
                         cross(f - rail_start, on_rail),
                     ),
                 ),

@@ -302,12 +302,14 @@ impl Pushes {
         }
     }
 
-    /// The forces on the wing-fixed support: the carriage's on the rail at F and the
-    /// roller's on the hook at G (the screw's push goes to its own mount).
-    fn on_support(&self, rail: &Rail, pose: &RailPose) -> [(Point2<f64>, Vector2<f64>); 2] {
+    /// The forces on the wing-fixed support: the carriage's on the rail at F, the
+    /// roller's on the hook at G and the screw's reaction at the jack's `mount` (the jack
+    /// body is mounted on the support, on the rail's line): together the flap's load.
+    fn on_support(&self, rail: &Rail, pose: &RailPose, mount: Point2<f64>) -> [(Point2<f64>, Vector2<f64>); 3] {
         [
             (pose.f, -rail.normal() * self.rail_n),
             (pose.g, -self.roller_direction * self.roller_n),
+            (mount, -rail.d.into_inner() * self.screw_n),
         ]
     }
 }
@@ -455,7 +457,7 @@ impl HookedTrack {
         ];
         let hook_line = bodies::hook_centre_line(&rail, spec.landing.flap * rail.g);
         let hook_foot = found.struts.hook_foot;
-        let truss = Self::lay_out_truss(&spec, &rail, rail_ends[0], hook_line[hook_foot]);
+        let truss = Self::lay_out_truss(&spec, &rail, rail_ends[0], hook_line[hook_foot], found.mount);
         let strut_tops_m = truss.map_or([found.struts.rail_top, found.struts.hook_top], |t| {
             [t.rods[0].top_m, t.rods[1].top_m]
         });
@@ -501,9 +503,16 @@ impl HookedTrack {
         })
     }
 
-    /// The support's truss for the rail from `a` and the hook's clamp at `b`, under the
-    /// spec's load cases over the sampled deployment (the `truss` module).
-    fn lay_out_truss(spec: &HookedTrackSpec, rail: &Rail, a: Point2<f64>, b: Point2<f64>) -> Option<SupportTruss> {
+    /// The support's truss for the rail from `a` and the hook's clamp at `b` with the jack
+    /// at `mount`, under the spec's load cases over the sampled deployment (the `truss`
+    /// module).
+    fn lay_out_truss(
+        spec: &HookedTrackSpec,
+        rail: &Rail,
+        a: Point2<f64>,
+        b: Point2<f64>,
+        mount: Point2<f64>,
+    ) -> Option<SupportTruss> {
         let poses: Vec<(f64, RailPose)> = search::stroke_samples(rail)
             .into_iter()
             .filter_map(|s| rail.at(s).map(|pose| (s, pose)))
@@ -515,7 +524,7 @@ impl HookedTrack {
                 poses.iter().map(move |(s, pose)| {
                     let fraction = (s / rail.stroke_m).clamp(0.0, 1.0);
                     let wrench = FlapWrench::new(&spec.flap_mass, &pose.flap, load, fraction);
-                    Pushes::at(rail, pose, &wrench).on_support(rail, pose)
+                    Pushes::at(rail, pose, &wrench).on_support(rail, pose, mount)
                 })
             })
             .collect();
@@ -683,7 +692,7 @@ impl FlapMechanism for HookedTrack {
                 distance_to_toggle_rad: pose.transmission,
             },
             actuator_torques: Some(self.synthesis.screw.torques(screw_force)),
-            members: self.member_loads(pose.f, n * rail_force, pose.g, m * roller),
+            members: self.member_loads(pose.f, n * rail_force + d * screw_force, pose.g, m * roller),
         })
     }
 

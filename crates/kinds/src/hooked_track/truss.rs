@@ -9,10 +9,14 @@
 //! meet in one point (nor all run parallel) fix a plane body, and each carries an axial
 //! force alone, found from the body's equilibrium: Σ t_i u_i = -Σ F_j and
 //! Σ (p_i - A) × t_i u_i = -Σ (q_j - A) × F_j (u_i the rod's unit vector from its foot p_i
-//! to its top, t_i its tension; F_j the carriage's and the roller's pushes on the support at
-//! q_j). The rail and the hook still carry their rollers in bending from A and from B, and
-//! the tie carries the rail's side to the hook's: a cantilever from B under the rail's
-//! load and the pulls of the rods at A (the `members` module).
+//! to its top, t_i its tension; F_j the carriage's, the roller's and the screw jack's pushes
+//! on the support at q_j: the jack body is mounted on the support, on the rail's line, so
+//! together they are the flap's load). The rail and the hook still carry their rollers in
+//! bending from A and from B, and the tie carries the rail's side to the hook's: a
+//! cantilever from B under the rail's load, the jack's reaction and the pulls of the rods
+//! at A (the `members` module). The planar truss leaves out what the spanwise layers add
+//! (the parts stand side by side, joined at A and B across them): a moment about the
+//! plane's axes that the fittings carry, not sized here.
 //!
 //! Before this (and where no brace or tie clears, still): each strut clamped to the skin,
 //! carrying its rail's root force and couple in bending. On the transport scene's ob-inner
@@ -129,15 +133,15 @@ impl SupportTruss {
 }
 
 /// The truss for a support with its rail from `a` and the hook's clamp at `b`, under the
-/// support's loads at the sampled poses (`loads`, each the carriage's and the roller's
-/// pushes): the triple of rods of least Σ L_i max|t_i| (see the module doc), or None
+/// support's loads at the sampled poses (`loads`, each the carriage's, the roller's and the
+/// screw jack's pushes): the triple of rods of least Σ L_i max|t_i| (see the module doc), or None
 /// where the tie does not clear, a foot has no clear top, or no triple holds the body.
 pub(super) fn place_truss(
     spec: &HookedTrackSpec,
     clearance: &Clearance,
     a: Point2<f64>,
     b: Point2<f64>,
-    loads: &[[(Point2<f64>, Vector2<f64>); 2]],
+    loads: &[[(Point2<f64>, Vector2<f64>); 3]],
 ) -> Option<SupportTruss> {
     let radius = spec.hardware.link_radius_m;
     let outline = &spec.outline;

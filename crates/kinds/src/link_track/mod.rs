@@ -28,6 +28,8 @@ mod linkage;
 mod members;
 mod search;
 
+pub use search::TRADE_CANDIDATES;
+
 use linkage::{Loop, LoopPose};
 
 use flapwright_mechanism::seam::{
@@ -85,6 +87,9 @@ pub struct LinkTrackSpec {
     /// ([`flapwright_mechanism::shared::follow`]); `None`: searched alone.
     #[serde(skip)]
     pub follow: Option<flapwright_mechanism::shared::follow::FollowedMotion>,
+    /// Take this candidate of the search's trade (its index in
+    /// [`LinkTrackSynthesis::trade`]) instead of the one of least cost; `None`: the least.
+    pub trade_index: Option<usize>,
 }
 
 /// Counts of what the search rejected.
@@ -342,10 +347,16 @@ impl LinkTrack {
                 _ => failure(dominant(&counts), describe(&counts)),
             });
         };
-        let trade = match weighing {
-            Some(_) => trade.iter().map(|c| LinkTrackCandidate::of(c, &found)).collect(),
-            None => Vec::new(),
+        let trade = if weighing.is_some() { trade } else { Vec::new() };
+        let found = match spec.trade_index {
+            None => found,
+            Some(index) => *trade.get(index).ok_or(Error::NoSuchTradeCandidate {
+                kind: KIND,
+                index,
+                count: trade.len(),
+            })?,
         };
+        let trade = trade.iter().map(|c| LinkTrackCandidate::of(c, &found)).collect();
         Self::build(spec, found, counts, trade)
     }
 

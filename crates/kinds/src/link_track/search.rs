@@ -591,7 +591,7 @@ fn non_dominated(candidates: Vec<Found>) -> Vec<Found> {
 }
 
 /// Non-dominated candidates kept for the report, at most.
-pub(super) const TRADE_CANDIDATES: usize = 8;
+pub const TRADE_CANDIDATES: usize = 8;
 
 /// The best grid candidate refined by a compass search over the free choices (the fixed
 /// pivot's two coordinates and the track's slope, each only when searched): a step either

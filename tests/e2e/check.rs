@@ -22,6 +22,19 @@ fn default_scene_passes() {
     let junit = std::fs::read_to_string(dir.path().join("junit.xml")).unwrap();
     assert!(junit.contains("failures=\"0\""), "{junit}");
     assert!(junit.contains("inner.screw vs torque-tube"), "one test case per pair");
+    // Every swept pair's and joint's case carries the time its sweep took (s); the pairs
+    // their swept boxes certify were not swept and carry none.
+    let cases: Vec<&str> = junit
+        .split("<testcase ")
+        .skip(1)
+        .map(|c| c.split('>').next().unwrap())
+        .collect();
+    let timed: Vec<f64> = cases
+        .iter()
+        .filter_map(|c| c.split("time=\"").nth(1))
+        .map(|t| t.split('"').next().unwrap().parse::<f64>().expect("a time in seconds"))
+        .collect();
+    assert!(timed.iter().all(|t| t.is_finite() && *t >= 0.0), "{timed:?}");
     let report: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.path().join("flapwright-check/report.json")).unwrap())
             .unwrap();
@@ -43,6 +56,15 @@ fn default_scene_passes() {
     // Pairs certified by their swept boxes are farther apart than required.
     let apart = interference["certified_apart"].as_array().unwrap();
     assert!(!apart.is_empty(), "the two stations' parts are a span apart");
+    let swept =
+        interference["pairs"].as_array().unwrap().len() + interference["declared_contacts"].as_array().unwrap().len();
+    assert_eq!(
+        timed.len(),
+        swept,
+        "a time on each swept case, none on the {} certified apart",
+        apart.len()
+    );
+    assert_eq!(cases.len(), swept + apart.len());
     assert!(apart.iter().all(|p| p["lower_bound_m"].as_f64().unwrap() > 0.003));
     // Joints are checked to stay joined, per station: nut, fitting and screw at A, the
     // pins F and G in their tracks (the screw and its jack body are one rigid body).

@@ -67,8 +67,8 @@ enum Outcome {
     Skipped(String),
 }
 
-/// One JUnit test case.
-fn test_case(name: String, class: String, outcome: Outcome) -> TestCase {
+/// One JUnit test case, with the time its check took (s; None: nothing was swept).
+fn test_case(name: String, class: String, outcome: Outcome, time_s: Option<f64>) -> TestCase {
     let status = match outcome {
         Outcome::Passed => TestCaseStatus::success(),
         Outcome::Failed(kind, message) => {
@@ -85,6 +85,9 @@ fn test_case(name: String, class: String, outcome: Outcome) -> TestCase {
     };
     let mut case = TestCase::new(name, status);
     case.set_classname(class);
+    if let Some(seconds) = time_s.filter(|s| s.is_finite() && *s >= 0.0) {
+        case.set_time(std::time::Duration::from_secs_f64(seconds));
+    }
     case
 }
 
@@ -101,6 +104,7 @@ pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> crat
             format!("{} vs {}", c.part_a, c.part_b),
             pair.station.clone().unwrap_or_else(|| "flap".into()),
             outcome,
+            Some(pair.sweep_time_s),
         ));
     }
     // Pairs certified by their swept boxes alone pass, like swept pairs that clear.
@@ -109,6 +113,7 @@ pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> crat
             format!("{} vs {}", apart.part_a, apart.part_b),
             apart.station.clone().unwrap_or_else(|| "flap".into()),
             Outcome::Passed,
+            None,
         ));
     }
     for contact in &report.declared_contacts {
@@ -121,6 +126,7 @@ pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> crat
             format!("{} joined to {}", d.part_a, d.part_b),
             d.station.clone(),
             outcome,
+            Some(contact.sweep_time_s),
         ));
     }
     // Pairs the check leaves out are skipped cases, so CI counts them (`check --strict`
@@ -130,6 +136,7 @@ pub fn interference_junit(scene_name: &str, report: &InterferenceReport) -> crat
             format!("{} vs {}", skipped.part_a, skipped.part_b),
             skipped.station.clone(),
             Outcome::Skipped(skipped.reason.clone()),
+            None,
         ));
     }
     let mut junit = Report::new("flapwright check");

@@ -917,6 +917,7 @@ mod tests {
             },
             required_clearance_m: 0.005,
             passes,
+            sweep_time_s: 0.0,
         }
     }
 
@@ -936,6 +937,7 @@ mod tests {
                 evaluations: 1,
             },
             passes,
+            sweep_time_s: 0.0,
         }
     }
 

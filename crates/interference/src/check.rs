@@ -51,6 +51,10 @@ pub struct PairResult {
     /// Clearance at least the required minimum (certified: sampled minimum less the
     /// residual bound).
     pub passes: bool,
+    /// Wall time the pair's sweep took (s): for a CI report's per-case time, not written
+    /// to the report (the same scene gives the same report).
+    #[serde(skip)]
+    pub sweep_time_s: f64,
 }
 
 /// One joint checked: parts that touch by design must not come apart by more than the
@@ -65,6 +69,9 @@ pub struct ContactResult {
     pub separation: JointSeparation,
     /// The certified upper bound on the separation is within the play.
     pub passes: bool,
+    /// Wall time the joint's sweep took (s), as [`PairResult::sweep_time_s`].
+    #[serde(skip)]
+    pub sweep_time_s: f64,
 }
 
 /// Why a station's parts are not checked against the skin.
@@ -353,6 +360,7 @@ pub fn check_assembly(
         .into_par_iter()
         .map(|(station, a, b)| {
             let required_clearance_m = required.clearance_for(station.as_deref());
+            let started = std::time::Instant::now();
             let clearance = sweep_pair_for_verdict(a, b, 0.0, end, settings, required_clearance_m)?;
             let passes = clearance.min_clearance_m - clearance.residual_bound_m >= required_clearance_m;
             Ok(PairResult {
@@ -360,6 +368,7 @@ pub fn check_assembly(
                 clearance,
                 required_clearance_m,
                 passes,
+                sweep_time_s: started.elapsed().as_secs_f64(),
             })
         })
         .collect::<Result<Vec<_>>>()?;
@@ -383,12 +392,14 @@ pub fn check_assembly(
                     })
             };
             let (a, b) = (part(&contact.part_a)?, part(&contact.part_b)?);
+            let started = std::time::Instant::now();
             let separation = sweep_contact(a, b, 0.0, end, required.joint_play_m, settings)?;
             let passes = separation.upper_bound_m <= required.joint_play_m;
             Ok(ContactResult {
                 declared: contact.clone(),
                 separation,
                 passes,
+                sweep_time_s: started.elapsed().as_secs_f64(),
             })
         })
         .collect::<Result<Vec<_>>>()?;

@@ -596,6 +596,39 @@ fn link_tracks_are_synthesised_checked_and_exported() {
             .any(|c| c["station"] == "ob-inner" && c["joint"] == "C" && c["kind"] == "pin-in-straight-slot"),
         "{cuts:?}"
     );
+    // Each station's one driven joint (the link's pivot, turned by the rotary actuator)
+    // has the actuator's peak torque as its effort; the passive joints none.
+    for station in stations {
+        let name = station["name"].as_str().unwrap();
+        let peak = station["mechanism"]["load_cases"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .flat_map(|case| case["samples"].as_array().unwrap())
+            .map(|sample| sample["actuator_load"].as_f64().unwrap().abs())
+            .fold(0.0, f64::max);
+        let efforts: Vec<(&str, f64)> = robot
+            .joints
+            .iter()
+            .filter(|j| j.name.starts_with(&format!("{name}_")))
+            .filter(|j| {
+                matches!(
+                    j.joint_type,
+                    urdf_rs::JointType::Revolute | urdf_rs::JointType::Prismatic
+                )
+            })
+            .map(|j| (j.name.as_str(), j.limit.effort))
+            .collect();
+        let driven: Vec<_> = efforts.iter().filter(|(_, e)| *e > 0.0).collect();
+        assert_eq!(driven.len(), 1, "{name}: {efforts:?}");
+        assert!(
+            (driven[0].1 - peak).abs() <= 1e-9 * peak,
+            "{name}: {driven:?} against {peak}"
+        );
+        if station["mechanism"]["kind"] == "link-track" {
+            assert_eq!(driven[0].0, format!("{name}_O"), "the link's pivot");
+        }
+    }
 }
 
 /// The inboard flap on link-tracks (the four-bars swapped, nothing else changed): the outer

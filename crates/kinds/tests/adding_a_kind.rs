@@ -646,6 +646,7 @@ fn the_new_kind_runs_unchanged_through_the_kind_neutral_stages() {
         aft_element: None,
         flap_inertia: None,
         bodies: Vec::new(),
+        actuator_peak_load: None,
     }];
     let base = flapwright_urdf::BaseLink {
         name: "wing".into(),

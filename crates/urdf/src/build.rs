@@ -9,7 +9,7 @@ use urdf_rs::{
     Visual,
 };
 
-use super::layout::{validate_mesh_path, validate_name, validate_stations, StationTree, TreeJointType};
+use super::layout::{validate_mesh_path, validate_name, validate_stations, MovableLimits, StationTree, TreeJointType};
 use super::rpy::origin_from_isometry;
 use super::{BaseLink, CutJoint, MeshRef, RigidInertia, StationMechanism3d, UrdfModel};
 use crate::error::{Error, Result};
@@ -137,13 +137,26 @@ fn add_station(
         }
         robot.links.push(urdf_link);
         let parent_from_child = lift(&(frame_of(link.parent_body).inverse() * link.frame));
+        // The joint the actuator drives carries its peak load as its effort; the passive
+        // ones 0.
+        let effort_of = |limits: &MovableLimits| {
+            let effort = if limits.driven {
+                station
+                    .actuator_peak_load
+                    .filter(|l| l.is_finite())
+                    .map_or(0.0, f64::abs)
+            } else {
+                0.0
+            };
+            (limits.range, limits.velocity, effort)
+        };
         let (joint_type, axis, limit) = match link.joint_type {
             TreeJointType::Fixed => (JointType::Fixed, z, None),
-            TreeJointType::Revolute => (JointType::Revolute, z, movable_limits.next().copied()),
+            TreeJointType::Revolute => (JointType::Revolute, z, movable_limits.next().map(effort_of)),
             TreeJointType::Prismatic { sign } => (
                 JointType::Prismatic,
                 Vector3::x() * sign,
-                movable_limits.next().copied(),
+                movable_limits.next().map(effort_of),
             ),
         };
         robot.joints.push(joint(
@@ -342,13 +355,13 @@ fn joint(
     (parent, child): (&str, &str),
     parent_from_child: &Isometry3<f64>,
     axis: Vector3<f64>,
-    limit: Option<((f64, f64), f64)>,
+    limit: Option<((f64, f64), f64, f64)>,
 ) -> Joint {
     let (xyz, rpy) = origin_from_isometry(parent_from_child);
-    let limit = limit.map_or_else(JointLimit::default, |((lower, upper), velocity)| JointLimit {
+    let limit = limit.map_or_else(JointLimit::default, |((lower, upper), velocity, effort)| JointLimit {
         lower,
         upper,
-        effort: 0.0,
+        effort,
         velocity,
         ..JointLimit::default()
     });

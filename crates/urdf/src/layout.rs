@@ -215,10 +215,12 @@ impl StationTree {
             .collect()
     }
 
-    /// Lower and upper joint values and the largest rate at the actuator's nominal speed,
-    /// per movable link, over the deployment (sampled, widened by the largest step between
-    /// samples so that every value of the deployment lies inside).
-    pub fn limits(&self, mechanism: &dyn FlapMechanism) -> Result<Vec<((f64, f64), f64)>> {
+    /// Lower and upper joint values, the largest rate at the actuator's nominal speed and
+    /// whether the actuator drives it (its value moves one for one with the input, to
+    /// 1e-9 of the travel at every sample), per movable link, over the deployment (sampled,
+    /// widened by the largest step between samples so that every value of the deployment
+    /// lies inside).
+    pub fn limits(&self, mechanism: &dyn FlapMechanism) -> Result<Vec<MovableLimits>> {
         let range = mechanism.input_range();
         let inputs = range.samples(LIMIT_SAMPLES);
         let values = inputs
@@ -233,13 +235,31 @@ impl StationTree {
                 let largest_step = column.windows(2).map(|w| (w[1] - w[0]).abs()).fold(0.0, f64::max);
                 let lower = column.iter().copied().fold(f64::INFINITY, f64::min) - 0.5 * largest_step;
                 let upper = column.iter().copied().fold(f64::NEG_INFINITY, f64::max) + 0.5 * largest_step;
-                (
-                    (lower.min(0.0), upper.max(0.0)),
-                    largest_step / step * nominal_speed.abs(),
-                )
+                let tolerance = 1e-9 * range.travel().abs();
+                let sense = (column[column.len() - 1] - column[0]).signum();
+                let driven = inputs
+                    .iter()
+                    .zip(&column)
+                    .all(|(&q, &value)| ((value - column[0]) - sense * (q - inputs[0])).abs() <= tolerance);
+                MovableLimits {
+                    range: (lower.min(0.0), upper.max(0.0)),
+                    velocity: largest_step / step * nominal_speed.abs(),
+                    driven,
+                }
             })
             .collect())
     }
+}
+
+/// A movable joint's limits over the deployment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct MovableLimits {
+    /// Lower and upper joint values (rad or m).
+    pub range: (f64, f64),
+    /// Largest rate at the actuator's nominal speed (rad/s or m/s).
+    pub velocity: f64,
+    /// The actuator drives this joint: its value moves one for one with the input.
+    pub driven: bool,
 }
 
 /// A key point: its name, the link that carries it, where it sits in that link's frame

@@ -53,10 +53,14 @@
 //!     aft_element: None,
 //!     flap_inertia: None,
 //!     bodies: vec![],
+//!     actuator_peak_load: Some(6.2e3),
 //! }];
 //! let base = BaseLink { name: "wing".into(), meshes: vec![] };
 //! let model = urdf::build_robot("right_wing", &base, &stations)?;
 //! assert!(urdf::check_rules(&model.robot).is_empty());
+//! // The screw's nut slides as the actuator drives it: its joint carries the peak load.
+//! let nut = model.robot.joints.iter().find(|j| j.name == "inner_nut_slide").unwrap();
+//! assert_eq!(nut.limit.effort, 6.2e3);
 //! let xml = urdf::to_xml(&model)?;
 //! assert!(xml.starts_with("<?xml"));
 //! let trajectory = urdf::trajectory(&stations, 11)?;
@@ -74,9 +78,10 @@
 //! moves it ([`StationMechanism3d::aft_element`]). A body without geometry gets an empty
 //! link (mass 0).
 //!
-//! Limitations: joint efforts are 0 (unknown here); joint and velocity limits are the
-//! extremes of 129 samples of the deployment (widened by half the largest step) at the
-//! actuator's nominal speed.
+//! Limits: joint and velocity limits are the extremes of 129 samples of the deployment
+//! (widened by half the largest step) at the actuator's nominal speed; the joint the
+//! actuator drives has the actuator's peak load as its effort
+//! ([`StationMechanism3d::actuator_peak_load`]), the passive joints 0.
 
 mod build;
 mod error;
@@ -139,6 +144,11 @@ pub struct StationMechanism3d<'a> {
     pub flap_inertia: Option<RigidInertia>,
     /// What each body's link shows and weighs; bodies not listed get empty links.
     pub bodies: Vec<BodyGeometry>,
+    /// The actuator's peak load over the load cases (N for a screw's stroke, N m for a
+    /// rotary input): the `effort` of the joint the actuator drives (the one whose value
+    /// moves one for one with the actuator's input); the other joints are passive, effort
+    /// 0. None (no load cases, or an export without them): 0 everywhere.
+    pub actuator_peak_load: Option<f64>,
 }
 
 /// A two-element flap's aft element in the URDF: a link of its own.

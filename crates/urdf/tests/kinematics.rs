@@ -116,6 +116,7 @@ fn placements_at_gimbal_lock_survive_the_file() {
             aft_element: None,
             flap_inertia: None,
             bodies: Vec::new(),
+            actuator_peak_load: None,
         };
         let stations = [station];
         let model = build_robot("gimbal", &base_link(), &stations).unwrap();

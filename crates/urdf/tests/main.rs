@@ -82,6 +82,7 @@ fn two_stations<'a>(inner: &'a CircularArcTrack, outer: &'a CircularArcTrack) ->
             aft_element: None,
             flap_inertia: None,
             bodies: Vec::new(),
+            actuator_peak_load: None,
         },
         StationMechanism3d {
             name: "outer".to_owned(),
@@ -93,6 +94,7 @@ fn two_stations<'a>(inner: &'a CircularArcTrack, outer: &'a CircularArcTrack) ->
             aft_element: None,
             flap_inertia: None,
             bodies: Vec::new(),
+            actuator_peak_load: None,
         },
     ]
 }
@@ -196,6 +198,7 @@ fn bad_inputs_are_named_errors() {
         aft_element: None,
         flap_inertia: None,
         bodies: Vec::new(),
+        actuator_peak_load: None,
     };
     let base = base_link();
     let error = |stations: &[StationMechanism3d]| build_robot("w", &base, stations).unwrap_err();
@@ -250,6 +253,7 @@ fn trajectory_serialises_with_its_documented_keys() {
         aft_element: None,
         flap_inertia: None,
         bodies: Vec::new(),
+        actuator_peak_load: None,
     }];
     let json = serde_json::to_value(trajectory(&stations, 2).unwrap()).unwrap();
     assert_eq!(

@@ -94,6 +94,16 @@ pub fn write_urdf(
                 owns_flap,
                 flap_inertia,
                 bodies: body_geometry(record, solids),
+                // The kinematics' peak over the load cases, where the stage ran (not in
+                // `export` alone: efforts 0 there).
+                actuator_peak_load: record.kinematics.as_ref().and_then(|k| {
+                    k.load_cases
+                        .iter()
+                        .flat_map(|case| &case.samples)
+                        .map(|sample| sample.actuator_load.abs())
+                        .filter(|load| load.is_finite())
+                        .reduce(f64::max)
+                }),
             })
         })
         .collect::<Result<_>>()?;

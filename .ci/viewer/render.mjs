@@ -84,7 +84,15 @@ async function main() {
   model.updateMatrixWorld(true);
 
   let meshes = 0;
-  model.traverse((o) => { if (o.isMesh && o.visible) meshes++; });
+  // Parts found by their report names: three.js strips '.' from node names, so each part
+  // node carries its name in its extras, which GLTFLoader keeps as userData.
+  let named = 0;
+  let dotted = 0;
+  model.traverse((o) => {
+    if (o.isMesh && o.visible) meshes++;
+    const part = o.userData?.flapwright_part;
+    if (typeof part === 'string') { named++; if (part.includes('.')) dotted++; }
+  });
   const box = new THREE.Box3().setFromObject(model);
   const center = box.isEmpty() ? new THREE.Vector3() : box.getCenter(new THREE.Vector3());
   const radius = box.isEmpty() ? 1 : Math.max(box.getBoundingSphere(new THREE.Sphere()).radius, 1e-6);
@@ -107,6 +115,8 @@ async function main() {
   renderer.render(scene, camera);
   report({
     meshes,
+    named,
+    dotted,
     animation: clip ? { name: clip.name, duration: clip.duration, tracks: clip.tracks.length } : null,
     box: box.isEmpty() ? null : [box.min.toArray(), box.max.toArray()],
     gl: renderer.getContext().getParameter(renderer.getContext().VERSION),
@@ -193,5 +203,7 @@ console.log(`render.mjs: ${glbPath} -> ${outPath} (${WIDTH}x${HEIGHT}, ${((Date.
 console.log(`  ${result.gl}`);
 console.log(`  meshes=${result.meshes} animation=${result.animation ? `"${result.animation.name}" ${result.animation.tracks} tracks, posed at ${(result.animation.duration / 2).toFixed(3)} s of ${result.animation.duration.toFixed(3)} s` : 'none'}`);
 console.log(`  bounding box (+Y up): ${JSON.stringify(result.box)}`);
+console.log(`  parts with their report names in userData.flapwright_part: ${result.named} of ${result.meshes} meshes (${result.dotted} of those names with a '.')`);
+if (result.named !== result.meshes) fail(`${result.meshes - result.named} meshes without their report name in userData.flapwright_part`);
 console.log(`  non-background pixels: ${(fraction * 100).toFixed(2)} %`);
 if (fraction < MIN_FRACTION) fail(`picture is empty: ${(fraction * 100).toFixed(2)} % < ${MIN_FRACTION * 100} % non-background pixels`);

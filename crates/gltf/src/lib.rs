@@ -5,7 +5,9 @@
 //! - [`Model`]: named [`Body`]s, each a triangle mesh where it stands at rest with its
 //!   [`Material`], and, for a moving body, its displacement at every sample time.
 //! - [`to_glb`] writes the model as one binary glTF 2.0 file: one node per body (named
-//!   as the body; a moving body's under its pose node, see Precision), all under one root node that turns the aircraft frame into
+//!   as the body, the name also in its `extras` as [`PART_EXTRAS_KEY`], which survives
+//!   three.js's node-name sanitising; a moving body's under its pose node, see
+//!   Precision), all under one root node that turns the aircraft frame into
 //!   glTF's +Y-up frame ([`gltf_from_aircraft`]), and one animation (`deployment`) with
 //!   a translation and a rotation channel per moving body, linear interpolation between
 //!   samples (glTF's `LINEAR`: translations interpolated linearly, rotations spherically).
@@ -193,6 +195,20 @@ pub fn interpolated_displacement(
     let rotation = a.rotation.slerp(&b.rotation, s);
     Isometry3::from_parts(Translation3::from(translation), rotation) * Translation3::from(-anchor.coords)
 }
+
+/// The `extras` of a part's node: `{"flapwright_part": name}`, the report's part name. three.js
+/// strips `.`, `:`, `/`, `[` and `]` from node names (`PropertyBinding.sanitizeNodeName`:
+/// `ib-inner.rail` becomes `ib-innerrail`) but keeps a node's extras as the object's
+/// `userData`, where a viewer finds the part by its report name.
+fn part_extras(name: &str) -> Result<json::Extras> {
+    let extras = serde_json::json!({ PART_EXTRAS_KEY: name });
+    serde_json::value::to_raw_value(&extras)
+        .map(Some)
+        .map_err(|e| Error::Write(e.to_string()))
+}
+
+/// The key of a part node's `extras` that holds the report's part name: `{"flapwright_part": "ib-inner.rail"}`.
+pub const PART_EXTRAS_KEY: &str = "flapwright_part";
 
 /// The name of the node that carries a moving part's coarse pose: the part's name and
 /// `#pose`.
@@ -426,6 +442,7 @@ pub fn to_glb(model: &Model) -> Result<Vec<u8>> {
         let Some(displacements) = &body.displacements else {
             nodes.push(root.push(json::Node {
                 name: Some(body.name.clone()),
+                extras: part_extras(&body.name)?,
                 mesh: Some(mesh),
                 translation: Some(anchor.coords.map(|c| c as f32).into()),
                 ..Default::default()
@@ -436,6 +453,7 @@ pub fn to_glb(model: &Model) -> Result<Vec<u8>> {
         // coarse keyframes), so that the two 32-bit poses compose to the 64-bit one.
         let part = root.push(json::Node {
             name: Some(body.name.clone()),
+            extras: part_extras(&body.name)?,
             mesh: Some(mesh),
             ..Default::default()
         });

@@ -81,6 +81,19 @@ fn every_body_is_a_named_node_under_the_turned_root() {
         ["inner.flap"]
     );
     assert_eq!(document.scenes().count(), 1);
+    // Each part's node carries its report name in its extras (three.js strips the `.`
+    // from `inner.flap`'s node name and keeps the extras as `userData`); the pose and
+    // root nodes carry none.
+    for node in document.nodes() {
+        let extras = node.extras().as_ref().map(|raw| raw.get().to_string());
+        match node.name() {
+            Some(name @ ("wing" | "inner.flap")) => {
+                let value: serde_json::Value = serde_json::from_str(&extras.expect("extras")).unwrap();
+                assert_eq!(value, serde_json::json!({ flapwright_gltf::PART_EXTRAS_KEY: name }));
+            }
+            _ => assert!(extras.is_none(), "{:?}: {extras:?}", node.name()),
+        }
+    }
 }
 
 /// A node's keyframes as stored: translations and rotations (x, y, z, w).

@@ -1,6 +1,7 @@
 //! The hooked-track's wing-fixed solids kept clear of the moving flap: the rail, the screw,
 //! the jack body and the two struts, with their radii, at every sampled pose of the
-//! deployment.
+//! deployment (and, where the support is a truss, its tie and brace: the `truss` module
+//! places them with the same [`Clearance`]).
 //!
 //! Why the search has to: the interference check cuts the flap's slot only for the solids
 //! a joint names in touch with the flap (`flapwright_interference`'s `joined_solids`: the

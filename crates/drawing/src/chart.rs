@@ -33,7 +33,7 @@ const Y_TICKS: usize = 6;
 
 /// Chart number `index` of `plot` with its cell's top-left corner at (`left`, `top`).
 ///
-/// The plot must have been validated (finite, non-empty series).
+/// The plot must have been validated (finite series, one with points at least).
 pub(crate) fn chart(index: usize, plot: &Plot, left: f64, top: f64) -> Group {
     let all = || plot.series.iter().flat_map(|s| s.points.iter());
     let (x_min, x_max) = all().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), (x, _)| {
@@ -128,6 +128,10 @@ pub(crate) fn chart(index: usize, plot: &Plot, left: f64, top: f64) -> Group {
     let mut page_points: Vec<(f64, f64)> = Vec::new();
     for (s, series) in plot.series.iter().enumerate() {
         let (colour, dash) = series_style(s);
+        // A legend entry only: nothing to draw.
+        if series.points.is_empty() {
+            continue;
+        }
         let points: Vec<(f64, f64)> = series.points.iter().map(|(x, y)| to_page(*x, *y)).collect();
         page_points.extend(points.iter().copied());
         let mut series_group = Group::new().set("class", format!("series series-{s}"));

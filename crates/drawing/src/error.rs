@@ -67,8 +67,8 @@ pub enum Error {
         plot: String,
     },
 
-    /// A series has no points.
-    #[error("series `{series}` of plot `{plot}` has no points")]
+    /// No series of a plot has points (the first named).
+    #[error("series `{series}` of plot `{plot}` has no points, nor has any other of the plot")]
     EmptySeries {
         /// Title of the plot.
         plot: String,

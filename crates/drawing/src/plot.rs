@@ -12,7 +12,9 @@ use svg::Document;
 pub struct Series {
     /// Name shown in the legend (when the plot has more than one series).
     pub name: String,
-    /// Samples in drawing order; every value must be finite.
+    /// Samples in drawing order; every value must be finite. None: a legend entry only (a
+    /// series that has nothing to show, e.g. a study's kind that failed, keeps its style
+    /// and its place in the legend), if another series of the plot has points.
     pub points: Vec<(f64, f64)>,
 }
 
@@ -26,7 +28,8 @@ pub struct Plot {
     pub x_label: String,
     /// y-axis label with unit.
     pub y_label: String,
-    /// The lines; at least one, each with at least one point.
+    /// The lines; at least one with at least one point. Each takes its colour and dash by
+    /// its place in this list, so a series that keeps its place keeps its style.
     pub series: Vec<Series>,
 }
 
@@ -39,20 +42,20 @@ const HEADER_PX: f64 = 56.0;
 /// Space between charts, px.
 const GAP_PX: f64 = 20.0;
 
-/// Checks one plot: has series, each non-empty, all finite.
+/// Checks one plot: has series, one with points at least, all finite.
 fn validate_plot(plot: &Plot) -> Result<()> {
     if plot.series.is_empty() {
         return Err(Error::NoSeries {
             plot: plot.title.clone(),
         });
     }
+    if plot.series.iter().all(|series| series.points.is_empty()) {
+        return Err(Error::EmptySeries {
+            plot: plot.title.clone(),
+            series: plot.series[0].name.clone(),
+        });
+    }
     for series in &plot.series {
-        if series.points.is_empty() {
-            return Err(Error::EmptySeries {
-                plot: plot.title.clone(),
-                series: series.name.clone(),
-            });
-        }
         if let Some(index) = series
             .points
             .iter()
@@ -167,6 +170,27 @@ mod tests {
             }
             other => panic!("expected NonFiniteSample, got {other:?}"),
         }
+    }
+
+    /// A series with no points is a legend entry that keeps its place (its style), if
+    /// another series has points.
+    #[test]
+    fn a_series_without_points_is_a_legend_entry() {
+        let mut plot = plot_with(vec![(0.0, 1.0), (1.0, 2.0)]);
+        plot.series.insert(
+            0,
+            Series {
+                name: "failed".into(),
+                points: Vec::new(),
+            },
+        );
+        let svg = render_plots_svg("t", &[plot]).unwrap();
+        assert!(svg.contains("failed"), "in the legend");
+        assert!(!svg.contains("series series-0"), "nothing drawn for it");
+        assert!(
+            svg.contains("series series-1"),
+            "the other keeps its place, so its style"
+        );
     }
 
     #[test]

@@ -676,16 +676,29 @@ fn at_station<'a>(outcomes: &'a [KindOutcome], station: &str) -> Vec<(&'a str, &
         .collect()
 }
 
-/// Gap and overlap against deflection for every kind at `station`, targets marked.
+/// Gap and overlap against deflection for every kind at `station`, targets marked. Each
+/// kind keeps its place, so its colour and dash, in every chart of the study: one that was
+/// not designed here is a legend entry only, "<kind> (failed)".
 fn charts(study: &Study, station: &str) -> Vec<Plot> {
     let figures = at_station(&study.kinds, station);
     let plot = |title: &str, column: usize| {
-        let mut series: Vec<Series> = figures
+        let mut series: Vec<Series> = study
+            .kinds
             .iter()
-            .filter(|(_, f)| !f.gap_overlap.is_empty())
-            .map(|(kind, f)| Series {
-                name: kind.to_string(),
-                points: f.gap_overlap.iter().map(|row| (row[0], row[column])).collect(),
+            .map(|outcome| {
+                let rows = outcome
+                    .stations
+                    .iter()
+                    .find(|f| f.station == station)
+                    .map_or(&[][..], |f| &f.gap_overlap[..]);
+                Series {
+                    name: if rows.is_empty() {
+                        format!("{} (failed)", outcome.kind)
+                    } else {
+                        outcome.kind.clone()
+                    },
+                    points: rows.iter().map(|row| (row[0], row[column])).collect(),
+                }
             })
             .collect();
         // The targets as short marks at their settings' deflections.
@@ -1180,5 +1193,43 @@ mod tests {
         assert!(rank(&deep_and_exact) < rank(&shallow_but_missing));
         assert!(rank(&shallow_but_missing) < rank(&shallow_but_interfering));
         assert!(rank(&figures(true, 0.0, 20.0)) < rank(&deep_and_exact));
+    }
+
+    /// A kind keeps its place, so its style, in the study's charts whichever kinds fail:
+    /// one that failed is a legend entry "<kind> (failed)" with nothing drawn; the targets
+    /// come after the kinds.
+    #[test]
+    fn a_failed_kind_keeps_its_place_in_the_charts_legend() {
+        let designed = StationFigures {
+            gap_overlap: vec![[0.0, 1.0, 6.0], [15.0, 2.0, 4.0]],
+            ..figures(true, 0.0, 30.0)
+        };
+        let outcome = |kind: &str, stations: Vec<StationFigures>| KindOutcome {
+            kind: kind.into(),
+            error: stations.is_empty().then(|| "cannot be synthesised".into()),
+            stations,
+        };
+        let study = Study {
+            scene: "s".into(),
+            kinds: vec![
+                outcome("dropped-hinge", Vec::new()),
+                outcome("four-bar", vec![designed]),
+            ],
+            ranking: Vec::new(),
+            ranking_rule: RANKING_RULE,
+        };
+        for plot in charts(&study, "one") {
+            let names: Vec<&str> = plot.series.iter().map(|s| s.name.as_str()).collect();
+            assert_eq!(
+                names,
+                ["dropped-hinge (failed)", "four-bar", "takeoff target"],
+                "{}",
+                plot.title
+            );
+            assert!(plot.series[0].points.is_empty());
+            assert_eq!(plot.series[1].points.len(), 2);
+        }
+        let svg = flapwright_drawing::render_plots_svg("s", &charts(&study, "one")).unwrap();
+        assert!(svg.contains("dropped-hinge (failed)"), "the legend lists it");
     }
 }

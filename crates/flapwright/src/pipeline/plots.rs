@@ -32,13 +32,14 @@ pub fn station_plots(
     interference: Option<&InterferenceReport>,
     station: &str,
 ) -> Vec<Plot> {
-    // Strokes in mm, angles in degrees.
-    let (x_label, x_scale, load_label) = match input {
-        InputQuantity::Stroke => ("actuator stroke (mm)", 1e3, "actuator force (N)"),
+    // Strokes in mm, angles in degrees; forces and moments in the unit their size asks
+    // (`in_engineering_units`).
+    let (x_label, x_scale, load) = match input {
+        InputQuantity::Stroke => ("actuator stroke [mm]", 1e3, ("actuator force", "N")),
         InputQuantity::Angle => (
-            "actuator angle (deg)",
+            "actuator angle [deg]",
             180.0 / std::f64::consts::PI,
-            "actuator torque (N m)",
+            ("actuator torque", "N m"),
         ),
     };
     let series = |case: &Deployment, name: String, y: &dyn Fn(&DeploymentSample) -> Option<f64>| Series {
@@ -64,35 +65,44 @@ pub fn station_plots(
         .flat_map(|s| s.reactions_n.keys().cloned())
         .collect();
     let mut plots = vec![
-        plot("Flap deflection", "deflection (deg)", first, &|s| {
+        plot("Flap deflection", "deflection [deg]", first, &|s| {
             Some(s.deflection_deg)
         }),
-        plot("Transmission angle", "transmission angle (deg)", first, &|s| {
+        plot("Transmission angle", "transmission angle [deg]", first, &|s| {
             Some(s.transmission_angle_deg)
         }),
-        plot("Actuator load", load_label, cases, &|s| Some(s.actuator_load)),
-        plot("Screw raise torque", "T_R (N m)", cases, &|s| {
-            s.actuator_torques_nm.map(|t| t.raise_torque_nm)
-        }),
-        plot("Screw lower torque", "T_L (N m)", cases, &|s| {
-            s.actuator_torques_nm.map(|t| t.lower_torque_nm)
-        }),
-        Plot {
-            title: format!(
-                "Joint reactions ({})",
-                first.first().map_or("", |c| c.load_case.as_str())
-            ),
-            x_label: x_label.into(),
-            y_label: "reaction (N)".into(),
-            series: first
-                .iter()
-                .flat_map(|c| {
-                    joints
-                        .iter()
-                        .map(|joint| series(c, joint.clone(), &|s| s.reactions_n.get(joint).copied()))
-                })
-                .collect(),
-        },
+        in_engineering_units(plot("Actuator load", "", cases, &|s| Some(s.actuator_load)), load),
+        in_engineering_units(
+            plot("Screw raise torque", "", cases, &|s| {
+                s.actuator_torques_nm.map(|t| t.raise_torque_nm)
+            }),
+            ("T_R", "N m"),
+        ),
+        in_engineering_units(
+            plot("Screw lower torque", "", cases, &|s| {
+                s.actuator_torques_nm.map(|t| t.lower_torque_nm)
+            }),
+            ("T_L", "N m"),
+        ),
+        in_engineering_units(
+            Plot {
+                title: format!(
+                    "Joint reactions ({})",
+                    first.first().map_or("", |c| c.load_case.as_str())
+                ),
+                x_label: x_label.into(),
+                y_label: String::new(),
+                series: first
+                    .iter()
+                    .flat_map(|c| {
+                        joints
+                            .iter()
+                            .map(|joint| series(c, joint.clone(), &|s| s.reactions_n.get(joint).copied()))
+                    })
+                    .collect(),
+            },
+            ("reaction", "N"),
+        ),
     ];
     // Each target as a short mark at its setting's input, 2 % of the travel wide.
     let travel = first
@@ -141,6 +151,32 @@ pub fn station_plots(
     plots.extend(interference.and_then(|report| clearance_plot(report, station)));
     plots.retain(|plot| !plot.series.is_empty() && plot.series.iter().all(|s| !s.points.is_empty()));
     plots
+}
+
+/// `plot` (values in `unit`, N or N m) with its values and its y label in the unit their
+/// largest magnitude asks: N below 10^3, kN below 10^6, MN beyond (a 120 000 N load reads
+/// 120 kN), the label "`quantity` [unit]".
+fn in_engineering_units(mut plot: Plot, (quantity, unit): (&str, &str)) -> Plot {
+    let largest = plot
+        .series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.1.abs()))
+        .filter(|v| v.is_finite())
+        .fold(0.0, f64::max);
+    let (factor, prefix) = if largest >= 1e6 {
+        (1e-6, "M")
+    } else if largest >= 1e3 {
+        (1e-3, "k")
+    } else {
+        (1.0, "")
+    };
+    for series in &mut plot.series {
+        for point in &mut series.points {
+            point.1 *= factor;
+        }
+    }
+    plot.y_label = format!("{quantity} [{prefix}{unit}]");
+    plot
 }
 
 /// How many of a station's pairs its clearance plot shows, closest first.
@@ -194,8 +230,44 @@ fn clearance_plot(report: &InterferenceReport, station: &str) -> Option<Plot> {
     });
     Some(Plot {
         title: "Clearance of the closest pairs".into(),
-        x_label: "deployment (% of the actuator travel)".into(),
-        y_label: "clearance (mm), < 0: overlap".into(),
+        x_label: "deployment [% of the actuator travel]".into(),
+        y_label: "clearance [mm], < 0: overlap".into(),
         series,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn plot_of(values: &[f64]) -> Plot {
+        Plot {
+            title: "t".into(),
+            x_label: "x".into(),
+            y_label: String::new(),
+            series: vec![Series {
+                name: "s".into(),
+                points: values.iter().enumerate().map(|(i, &v)| (i as f64, v)).collect(),
+            }],
+        }
+    }
+
+    /// Forces and moments read in the unit their largest magnitude asks, a negative one
+    /// counted by its size.
+    #[test]
+    fn a_load_plot_takes_the_unit_its_size_asks() {
+        let kilo = in_engineering_units(plot_of(&[1.0e3, -120.0e3]), ("actuator force", "N"));
+        assert_eq!(kilo.y_label, "actuator force [kN]");
+        assert_eq!(kilo.series[0].points[1].1, -120.0);
+        let plain = in_engineering_units(plot_of(&[3.0, 999.0]), ("T_R", "N m"));
+        assert_eq!(
+            (plain.y_label.as_str(), plain.series[0].points[1].1),
+            ("T_R [N m]", 999.0)
+        );
+        let mega = in_engineering_units(plot_of(&[2.5e6]), ("reaction", "N"));
+        assert_eq!(
+            (mega.y_label.as_str(), mega.series[0].points[0].1),
+            ("reaction [MN]", 2.5)
+        );
+    }
 }

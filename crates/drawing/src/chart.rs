@@ -210,13 +210,23 @@ fn legend(plot: &Plot, page_points: &[(f64, f64)], area: (f64, f64, f64, f64)) -
     for (s, series) in plot.series.iter().enumerate() {
         let (colour, dash) = series_style(s);
         let row_y = y + 14.0 + 18.0 * s as f64;
-        let mut sample = line(x + 6.0, row_y - 4.0, x + 38.0, row_y - 4.0, colour, 2.0);
-        if let Some(dash) = dash {
-            sample = sample.set("stroke-dasharray", dash);
+        // A one-point series is drawn as a marker: its legend sample is one too.
+        if series.points.len() == 1 {
+            group = group.add(
+                Circle::new()
+                    .set("cx", num(x + 22.0))
+                    .set("cy", num(row_y - 4.0))
+                    .set("r", "3.5")
+                    .set("fill", colour),
+            );
+        } else {
+            let mut sample = line(x + 6.0, row_y - 4.0, x + 38.0, row_y - 4.0, colour, 2.0);
+            if let Some(dash) = dash {
+                sample = sample.set("stroke-dasharray", dash);
+            }
+            group = group.add(sample);
         }
-        group = group
-            .add(sample)
-            .add(text(&series.name, x + 44.0, row_y, LEGEND_FONT_PX, Anchor::Start, INK));
+        group = group.add(text(&series.name, x + 44.0, row_y, LEGEND_FONT_PX, Anchor::Start, INK));
     }
     group
 }

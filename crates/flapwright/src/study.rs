@@ -701,14 +701,14 @@ fn charts(study: &Study, station: &str) -> Vec<Plot> {
                 }
             })
             .collect();
-        // The targets as short marks at their settings' deflections.
+        // The targets as markers (a one-point series) at their settings' deflections.
         if let Some((_, f)) = figures.first() {
             for miss in &f.setting_misses {
                 let value = miss.target_percent_chord[column - 1];
                 if value.is_finite() && miss.deflection_deg.is_finite() {
                     series.push(Series {
                         name: format!("{} target", miss.setting),
-                        points: vec![(miss.deflection_deg - 0.5, value), (miss.deflection_deg + 0.5, value)],
+                        points: vec![(miss.deflection_deg, value)],
                     });
                 }
             }
@@ -1228,6 +1228,11 @@ mod tests {
             );
             assert!(plot.series[0].points.is_empty());
             assert_eq!(plot.series[1].points.len(), 2);
+            assert_eq!(
+                plot.series[2].points,
+                [(15.0, plot.series[2].points[0].1)],
+                "a marker at the target's deflection"
+            );
         }
         let svg = flapwright_drawing::render_plots_svg("s", &charts(&study, "one")).unwrap();
         assert!(svg.contains("dropped-hinge (failed)"), "the legend lists it");

@@ -104,17 +104,10 @@ pub fn station_plots(
             ("reaction", "N"),
         ),
     ];
-    // Each target as a short mark at its setting's input, 2 % of the travel wide.
-    let travel = first
-        .first()
-        .and_then(|c| Some(c.samples.last()?.input - c.samples.first()?.input))
-        .unwrap_or(0.0);
+    // Each target as a marker (a one-point series) at its setting's input.
     let mark = |label: String, at: f64, value: f64| Series {
         name: label,
-        points: vec![
-            ((at - 0.01 * travel) * x_scale, value),
-            ((at + 0.01 * travel) * x_scale, value),
-        ],
+        points: vec![(at * x_scale, value)],
     };
     let target_marks = targets.iter().flat_map(|t| {
         [

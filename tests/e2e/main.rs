@@ -1,6 +1,7 @@
 //! End-to-end tests: run the real `flapwright` binary and re-read what it wrote with
 //! independent readers.
 
+mod authoring;
 mod bad_input;
 mod check;
 mod default_scene;

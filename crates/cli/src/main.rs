@@ -5,6 +5,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use anyhow::Context;
+mod authoring;
+
 use clap::{Parser, Subcommand};
 use flapwright::pipeline::{self, Inputs, Mode};
 use flapwright::scene::{FileSource, Folder, NoFiles, Scene, SceneError, StlSetting, DEFAULT_SCENE_TOML};
@@ -59,7 +61,22 @@ impl From<At> for StlSetting {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// Design a scene: geometry, planes, mechanisms; writes report.json and the files.
+    /// Write a commented scene to start from, which designs and passes `check` as written.
+    ///
+    /// A small swept wing, one flap on two stations, settings with gap and overlap targets,
+    /// a flight load case. The scene schema is written beside it (`scene.schema.json`).
+    Init {
+        /// The scene file to write (never replaced without --force).
+        #[arg(default_value = "scene.toml")]
+        file: PathBuf,
+        /// The stations' mechanism kind: one synthesised from the flap settings
+        /// (`flapwright kinds`); default: the first of them.
+        #[arg(long)]
+        kind: Option<String>,
+    },
+    /// List the mechanism kinds: one line each, the keys each needs and may take.
+    Kinds,
+    /// Design a scene: geometry, planes, mechanisms, checks, sizing; writes report.json and the files.
     Design {
         /// Scene file (TOML). Without it, the embedded default scene (small aircraft of the thesis).
         scene: Option<PathBuf>,
@@ -67,8 +84,28 @@ enum Command {
         #[arg(long, default_value = "flapwright-out")]
         out: PathBuf,
     },
-    /// Export files for viewers and people (URDF + trajectory, STL, SVG, animated glTF);
-    /// without a flag, all of them. Runs only the stages those files need: STL, URDF and
+    /// Check clearances only: exit 0 when every clearance is met, 1 when not, 2 for bad input.
+    ///
+    /// Runs only the stages the interference check needs. A pair fails when it interferes
+    /// or comes closer than `interference.required_clearance_m`, a joint when its parts
+    /// come apart by more than `interference.joint_play_m`.
+    Check {
+        /// Scene file (TOML). Without it, the embedded default scene.
+        scene: Option<PathBuf>,
+        /// Output folder for report.json (replaced atomically on success).
+        #[arg(long, default_value = "flapwright-check")]
+        out: PathBuf,
+        /// Also write a JUnit XML file (one test case per station and part pair; pairs the
+        /// check leaves out are skipped cases with the reason).
+        #[arg(long)]
+        junit: Option<PathBuf>,
+        /// Fail (exit 1) when any pair is left out of the check, whatever the reason.
+        #[arg(long)]
+        strict: bool,
+    },
+    /// Export files for viewers and people: URDF, STL, SVG, animated glTF.
+    ///
+    /// Without a flag, all of them. Runs only the stages those files need: STL, URDF and
     /// glTF need no interference check, kinematics or sizing; SVG needs the check (its
     /// failing pairs are marked) and the kinematics (its plots).
     Export {
@@ -95,9 +132,10 @@ enum Command {
         #[arg(long, value_enum, default_value = "stowed")]
         at: At,
     },
-    /// Compare mechanism kinds at the scene's stations (`003_...` Table 1, Fig. 17): each
-    /// kind designed in place of the stations' mechanisms, its figures in study.json, gap
-    /// and overlap charts per station, and a ranking.
+    /// Compare the synthesised mechanism kinds at the scene's stations (`003_...` Table 1).
+    ///
+    /// Each kind is designed in place of the stations' mechanisms (`003_...` Fig. 17): its
+    /// figures in study.json, gap and overlap charts per station, and a ranking.
     Study {
         /// Scene file (TOML). Without it, the embedded default scene.
         scene: Option<PathBuf>,
@@ -112,22 +150,11 @@ enum Command {
         #[arg(long, value_delimiter = ',')]
         station: Vec<String>,
     },
-    /// Check clearances only: exit 0 when every clearance meets the scene's minimum, 1 when
-    /// any pair interferes or comes closer, 2 for bad input.
-    Check {
-        /// Scene file (TOML). Without it, the embedded default scene.
-        scene: Option<PathBuf>,
-        /// Output folder for report.json (replaced atomically on success).
-        #[arg(long, default_value = "flapwright-check")]
-        out: PathBuf,
-        /// Also write a JUnit XML file (one test case per station and part pair; pairs the
-        /// check leaves out are skipped cases with the reason).
-        #[arg(long)]
-        junit: Option<PathBuf>,
-        /// Fail (exit 1) when any pair is left out of the check, whatever the reason.
-        #[arg(long)]
-        strict: bool,
-    },
+    /// Print the scene's JSON Schema, for editors with a TOML language server.
+    ///
+    /// Print the scene's JSON Schema (for editors: a TOML language server completes and
+    /// checks keys from it).
+    Schema,
 }
 
 /// A failure with the exit code it maps to.
@@ -242,6 +269,15 @@ fn bad_input(error: anyhow::Error) -> Failure {
 }
 
 fn run(cli: &Cli) -> Result<(), Failure> {
+    match &cli.command {
+        Some(Command::Init { file, kind }) => {
+            let kind = kind.as_deref().unwrap_or(flapwright::scene::template_kinds()[0]);
+            return authoring::init(cli, kind, file);
+        }
+        Some(Command::Kinds) => return authoring::kinds(cli),
+        Some(Command::Schema) => return authoring::schema(),
+        _ => {}
+    }
     if let Some(Command::Study {
         scene,
         out,
@@ -256,7 +292,9 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         Some(Command::Design { scene, out }) => (scene.clone(), out.clone(), Mode::Design, None),
         Some(Command::Check { scene, out, junit, .. }) => (scene.clone(), out.clone(), Mode::Check, junit.clone()),
         Some(Command::Export { scene, out, .. }) => (scene.clone(), out.clone(), Mode::Export, None),
-        Some(Command::Study { .. }) => unreachable!("handled above"),
+        Some(Command::Study { .. } | Command::Init { .. } | Command::Kinds | Command::Schema) => {
+            unreachable!("handled above")
+        }
     };
     let (text, files) = read_scene_text(scene_path.as_deref())?;
     let file_label = scene_path

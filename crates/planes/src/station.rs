@@ -14,7 +14,7 @@ pub const PURE_ROTATION_ANGLE_TOL_RAD: f64 = 1e-12;
 pub const PURE_ROTATION_LENGTH_TOL_M: f64 = 1e-12;
 
 /// How a station's mechanism plane is built.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "kebab-case")]
 pub enum PlaneConstruction {
     /// Perpendicular to the hinge axis (thesis `000`, Ch. 4 step 2).

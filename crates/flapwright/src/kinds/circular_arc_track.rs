@@ -31,7 +31,7 @@ const SCREW_GEOMETRY_KEYS: &str = "base_distance_m, base_angle_deg, crank_length
 
 /// Dimensions of a circular-arc-track mechanism in the station frame (thesis Table 2 names
 /// in the doc comments).
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CircularArcTrackScene {
     /// a1 = |A0 B0|, m.
@@ -72,7 +72,7 @@ pub struct CircularArcTrackScene {
 }
 
 /// `[station.mechanism.hardware]` of a circular-arc track: every key optional (m).
-#[derive(Debug, Clone, Default, Deserialize)]
+#[derive(Debug, Clone, Default, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TrackHardwareScene {
     pub fitting_radius_m: Option<f64>,

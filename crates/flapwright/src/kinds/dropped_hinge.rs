@@ -12,7 +12,7 @@ use super::{check_synthesised, ActuatorChoice, KindScene, RotaryDriveScene, Scre
 use crate::scene::KeyChecker;
 
 /// `[station.mechanism]` with `kind = "dropped-hinge"` (station frame, m).
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct DroppedHingeScene {
     /// Flap mass carried by this station, kg.

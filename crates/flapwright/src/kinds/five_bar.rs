@@ -16,7 +16,7 @@ use crate::scene::KeyChecker;
 
 /// `[station.mechanism]` with `kind = "five-bar"` (m, in `001_...`'s plane: origin at the
 /// crank pivot O, x aft, y up; the document's letter in brackets).
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct FiveBarScene {
     /// |A - O|, the crank (a).
@@ -64,7 +64,7 @@ pub struct FiveBarScene {
 
 /// `aero = { ... }`: lift linear in each flap's deflection at its quarter chord, a constant
 /// pitching moment (positive nose up), at one flight condition.
-#[derive(Debug, Clone, Copy, Deserialize)]
+#[derive(Debug, Clone, Copy, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct AeroScene {
     /// Air speed, m/s.

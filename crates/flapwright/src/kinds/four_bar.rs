@@ -15,7 +15,7 @@ use super::{check_synthesised, KindScene, ScrewDriveScene, SynthesisContext};
 use crate::scene::KeyChecker;
 
 /// `[station.mechanism]` with `kind = "four-bar"` (station frame, m).
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct FourBarScene {
     /// Flap mass carried by this station, kg.

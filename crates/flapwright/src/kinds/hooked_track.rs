@@ -14,7 +14,7 @@ use super::{check_synthesised, KindScene, ScrewDriveScene, SynthesisContext};
 use crate::scene::KeyChecker;
 
 /// `[station.mechanism]` with `kind = "hooked-track"` (station frame, m).
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct HookedTrackScene {
     /// Flap mass carried by this station, kg.

@@ -185,7 +185,7 @@ impl SynthesisContext {
 
 /// `screw = { ... }` of a synthesised kind: the screw jack's thread and the drive shared by
 /// every station on one torque tube (each station's lead is its stroke over `turns`).
-#[derive(Debug, Clone, Copy, Deserialize)]
+#[derive(Debug, Clone, Copy, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields, default)]
 pub struct ScrewDriveScene {
     /// Mean thread radius, m.
@@ -242,7 +242,7 @@ impl ScrewDriveScene {
 }
 
 /// `actuator = "..."` of a kind that may take either (`003_...` Fig. 6).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "kebab-case")]
 pub enum ActuatorChoice {
     /// A screw jack (linear actuator): `screw = { ... }`.
@@ -255,7 +255,7 @@ pub enum ActuatorChoice {
 /// `rotary = { ... }`: a geared rotary actuator's gearing and the drive it shares with
 /// every station on one torque tube (its gear ratio is the shaft's turns over its output's
 /// travel, as a screw's lead is its stroke over the turns).
-#[derive(Debug, Clone, Copy, Deserialize)]
+#[derive(Debug, Clone, Copy, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields, default)]
 pub struct RotaryDriveScene {
     /// Drive-shaft turns over the deployment: the same at every station of one drive.
@@ -456,6 +456,130 @@ impl MechanismScene {
             Self::HookedTrack(m) => m,
             Self::FiveBar(m) => m,
         }
+    }
+}
+
+/// One mechanism kind as `flapwright kinds` lists it, read from the scene's schema (so the
+/// keys listed are the keys the scene accepts).
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct KindSummary {
+    /// The `kind` value.
+    pub name: String,
+    /// One line: what the mechanism is and where it comes from.
+    pub summary: String,
+    /// Synthesised from the flap settings (every other key optional).
+    pub synthesised: bool,
+    /// The keys the kind needs besides `kind`.
+    pub required_keys: Vec<String>,
+    /// The keys it may take, each with a default or a search behind it.
+    pub optional_keys: Vec<String>,
+}
+
+impl MechanismScene {
+    /// Each kind's table schema with its `kind` value and its one-line summary, in
+    /// [`Self::KINDS`] order.
+    fn variant_schemas(
+        generator: &mut schemars::SchemaGenerator,
+    ) -> Vec<(&'static str, &'static str, schemars::Schema)> {
+        use schemars::JsonSchema;
+        vec![
+            (
+                "circular-arc-track",
+                "circular-arc track and screw jack, dimensioned by hand (000_..., Chapters 3-5)",
+                CircularArcTrackScene::json_schema(generator),
+            ),
+            (
+                "dropped-hinge",
+                "hinge below the wing, screw jack or rotary actuator; from stowed and landing (003_...)",
+                DroppedHingeScene::json_schema(generator),
+            ),
+            (
+                "four-bar",
+                "four-bar linkage, screw jack on its crank; from the three settings (003_...)",
+                FourBarScene::json_schema(generator),
+            ),
+            (
+                "link-track",
+                "link and straight track, rotary actuator on the link; from the three settings (003_...)",
+                LinkTrackScene::json_schema(generator),
+            ),
+            (
+                "hooked-track",
+                "carriage on a hooked rail, screw jack along it; from stowed and landing (003_...)",
+                HookedTrackScene::json_schema(generator),
+            ),
+            (
+                "five-bar",
+                "five-bar double-slotted flap, crank-driven, dimensioned by hand (001_...)",
+                FiveBarScene::json_schema(generator),
+            ),
+        ]
+    }
+
+    /// Every kind with its summary and keys, in [`Self::KINDS`] order.
+    pub fn summaries() -> Vec<KindSummary> {
+        let mut generator = schemars::SchemaGenerator::default();
+        Self::variant_schemas(&mut generator)
+            .into_iter()
+            .map(|(name, summary, schema)| {
+                let required: Vec<String> = schema
+                    .get("required")
+                    .and_then(|r| r.as_array())
+                    .map(|r| r.iter().filter_map(|k| k.as_str().map(str::to_string)).collect())
+                    .unwrap_or_default();
+                let optional = schema
+                    .get("properties")
+                    .and_then(|p| p.as_object())
+                    .map(|p| p.keys().filter(|k| !required.contains(k)).cloned().collect())
+                    .unwrap_or_default();
+                KindSummary {
+                    name: name.to_string(),
+                    summary: summary.to_string(),
+                    synthesised: Self::SYNTHESISED_KINDS.contains(&name),
+                    required_keys: required,
+                    optional_keys: optional,
+                }
+            })
+            .collect()
+    }
+}
+
+/// The table of `[station.mechanism]`: one of the kinds' tables, told apart by `kind`
+/// (each variant inlined with its `kind` as a constant, so that an editor completes the
+/// keys of the kind written).
+impl schemars::JsonSchema for MechanismScene {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "MechanismScene".into()
+    }
+
+    fn json_schema(generator: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        let variants: Vec<serde_json::Value> = Self::variant_schemas(generator)
+            .into_iter()
+            .map(|(name, summary, mut schema)| {
+                schema.insert("description".into(), summary.into());
+                if let Some(properties) = schema.get_mut("properties").and_then(|p| p.as_object_mut()) {
+                    properties.insert(
+                        "kind".into(),
+                        serde_json::json!({ "const": name, "description": "The mechanism kind." }),
+                    );
+                }
+                let required = schema
+                    .ensure_object()
+                    .entry("required")
+                    .or_insert_with(|| serde_json::Value::Array(Vec::new()));
+                if let Some(required) = required.as_array_mut() {
+                    required.insert(0, "kind".into());
+                }
+                schema.to_value()
+            })
+            .collect();
+        schemars::json_schema!({
+            "description": "`[station.mechanism]`: `kind` picks the mechanism, the other keys are its dimensions.",
+            "type": "object",
+            "required": ["kind"],
+            "properties": { "kind": { "enum": Self::KINDS } },
+            "oneOf": variants,
+        })
     }
 }
 

@@ -7,7 +7,7 @@ use serde::Deserialize;
 use super::KeyChecker;
 
 /// `[dynamics]`.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct DynamicsScene {
     /// The motor.
@@ -35,7 +35,7 @@ pub struct DynamicsScene {
 }
 
 /// `motor = { ... }`.
-#[derive(Debug, Clone, Copy, Deserialize)]
+#[derive(Debug, Clone, Copy, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MotorScene {
     /// Armature resistance, Ω.
@@ -50,7 +50,7 @@ pub struct MotorScene {
 }
 
 /// `gearbox = { ... }`.
-#[derive(Debug, Clone, Copy, Deserialize)]
+#[derive(Debug, Clone, Copy, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields, default)]
 pub struct GearboxScene {
     /// Motor turns per input turn.
@@ -70,7 +70,7 @@ impl Default for GearboxScene {
 }
 
 /// `supply = { ... }`.
-#[derive(Debug, Clone, Copy, Deserialize)]
+#[derive(Debug, Clone, Copy, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SupplyScene {
     /// Final voltage, V.
@@ -81,7 +81,7 @@ pub struct SupplyScene {
 }
 
 /// `method = "..."`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "kebab-case")]
 pub enum MethodScene {
     /// BDF.

@@ -13,6 +13,7 @@ mod key_path;
 pub(crate) mod nested_error;
 pub(crate) mod parse;
 mod problem;
+mod schema;
 mod settings;
 mod station;
 mod validate;
@@ -22,6 +23,7 @@ pub use airfoil_ref::{load_airfoil, AirfoilRef, AirfoilSource, AIRFOIL_COORDINAT
 pub use dynamics::DynamicsScene;
 pub use files::{FileSource, Folder, MemoryFiles, NoFiles};
 pub use key_path::Location;
+pub use schema::{scene_schema, template, template_kinds, SCHEMA_FILE_NAME, SCHEMA_ID};
 pub use settings::{
     DesignScene, InterferenceScene, MaterialScene, OutputsScene, ResolutionScene, SizingScene, StlSetting,
 };
@@ -41,7 +43,7 @@ use serde::Deserialize;
 pub const DEFAULT_SCENE_TOML: &str = include_str!("../../../../data/scenes/small-aircraft.toml");
 
 /// A whole scene as written in the TOML file.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Scene {
     /// Scene name, used in the report and in output file names.

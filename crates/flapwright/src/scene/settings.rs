@@ -4,7 +4,7 @@
 use serde::Deserialize;
 
 /// `[sizing]`.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SizingScene {
     /// Material of the screws (sized as rods for strength and buckling): a preset
@@ -63,7 +63,7 @@ impl Default for SizingScene {
 
 /// `[interference]`: the clearance check (defaults chosen from the error-vs-time study in
 /// the README).
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct InterferenceScene {
     /// Smallest acceptable clearance between parts, m.
@@ -151,7 +151,7 @@ impl Default for InterferenceScene {
 }
 
 /// `[[materials]]`: a custom material.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MaterialScene {
     /// Name used in `[sizing]`.
@@ -168,7 +168,7 @@ pub struct MaterialScene {
 
 /// `[design]`: what the mechanism searches weigh besides the fairing's depth
 /// ([`flapwright_mechanism::shared::objective`]).
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct DesignScene {
     /// Weight of the actuator's peak load, in reference loads (the largest force the load
@@ -191,7 +191,7 @@ impl Default for DesignScene {
 }
 
 /// `[outputs]`: which results to produce; a stage that no requested output needs is skipped.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct OutputsScene {
     /// Binary STL of every part.
@@ -255,7 +255,7 @@ impl Default for OutputsScene {
 
 /// `[resolution]`: discretisation knobs (defaults chosen from the error-vs-time tables in
 /// the README).
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ResolutionScene {
     /// Airfoil points per side (upper/lower).

@@ -3,7 +3,7 @@
 use serde::Deserialize;
 
 /// `[[station]]`: one support mechanism.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct StationScene {
     /// Station name.
@@ -20,7 +20,7 @@ pub struct StationScene {
 }
 
 /// `[loads]`.
-#[derive(Debug, Clone, Deserialize, Default)]
+#[derive(Debug, Clone, Deserialize, Default, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LoadsScene {
     /// Safety factor on motor torque (CS-25: 1.5).
@@ -34,7 +34,7 @@ pub struct LoadsScene {
 /// the flap, constant or linear from stowed to fully deployed; or a flight condition (the
 /// dynamic pressure, or speed and density, and the flap normal-force coefficient against
 /// deflection), whose flap load is shared among the stations by statics.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LoadCaseScene {
     /// Case name (`cruise`, `landing`).

@@ -3,7 +3,7 @@
 use serde::Deserialize;
 
 /// Which reference line the panel sweep angles are measured on.
-#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default, schemars::JsonSchema)]
 #[serde(rename_all = "kebab-case")]
 pub enum SweepReferenceScene {
     /// Leading-edge sweep.
@@ -14,7 +14,7 @@ pub enum SweepReferenceScene {
 }
 
 /// `[wing]`: sections root to tip and the panels between them.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct WingScene {
     /// Leading edge of the root section, aircraft frame (x aft, y outboard, z up), m.
@@ -37,7 +37,7 @@ fn quarter() -> f64 {
 }
 
 /// `[[wing.sections]]`.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct WingSectionScene {
     /// Spanwise position (aircraft y), m.
@@ -52,7 +52,7 @@ pub struct WingSectionScene {
 }
 
 /// `[[wing.panels]]`: the part of the wing between two consecutive sections.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PanelScene {
     /// Sweep angle on the wing's sweep reference line, deg.
@@ -64,7 +64,7 @@ pub struct PanelScene {
 }
 
 /// `[[flap]]`.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct FlapScene {
     /// Flap name; stations refer to it.
@@ -117,7 +117,7 @@ impl FlapScene {
 /// `[flap.aft_element]`: the second element of a double-slotted flap, nested in the flap's
 /// own section as the flap is in the wing (trailing edges together); the mechanism's
 /// aft-flap body moves it, or it stays fixed to the main element when the kind has none.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct AftElementScene {
     /// Its section (`"NACA 0009"`, a `.dat` file).
@@ -130,7 +130,7 @@ pub struct AftElementScene {
 }
 
 /// `[flap.hinge]`: either two points or a chord fraction and depth.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct HingeScene {
     /// Inboard axis point, aircraft frame, m.
@@ -144,7 +144,7 @@ pub struct HingeScene {
 }
 
 /// `[flap.settings]`.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SettingsScene {
     /// Take-off deflection, deg.
@@ -199,7 +199,7 @@ impl Default for SettingsScene {
 }
 
 /// `[structure]`.
-#[derive(Debug, Clone, Deserialize, Default)]
+#[derive(Debug, Clone, Deserialize, Default, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct StructureScene {
     /// Spars as plates at a chord fraction.
@@ -210,7 +210,7 @@ pub struct StructureScene {
 }
 
 /// `[[structure.spars]]`.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SparScene {
     /// Part name.
@@ -226,7 +226,7 @@ pub struct SparScene {
 }
 
 /// `[structure.torque_tube]`.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TorqueTubeScene {
     /// Polyline of the tube axis, aircraft frame, m (or give `chord_fraction`).

@@ -9,6 +9,7 @@ mod exports;
 mod fuzz;
 mod messages;
 mod output_safety;
+mod pictures;
 mod scene_errors;
 mod sizing_figures;
 mod stage_failures;

@@ -249,3 +249,21 @@ fn a_whole_transport_wing_of_32_stations_is_checked() {
     );
     assert_eq!(report["stations"].as_array().unwrap().len(), 32);
 }
+
+/// A shroud over a flap cut out of the wing section once failed in the meshing stage
+/// ("wing skin: polygon of 131 points cannot be triangulated", exit 1): the flap fills the
+/// section to the upper skin, so no shroud clears it. Now refused at the shroud's key.
+#[test]
+fn a_shroud_over_a_flap_without_its_own_section_is_refused_at_its_key() {
+    let template = flapwright::scene::template("dropped-hinge").expect("the template");
+    let scene = template.replacen(
+        "airfoil = \"NACA 2412\"                   # the flap's own section",
+        "#",
+        1,
+    );
+    assert_ne!(scene, template);
+    assert_rejected(
+        &scene,
+        &["flap[0].shroud_chord_fraction = 0.05: a shroud needs the flap's own section nested in the cove"],
+    );
+}

@@ -226,7 +226,7 @@ fn sweep_dihedral_and_twist(sweep: &str, dihedral: &str, root_twist: &str, tip_t
     true
 }
 
-/// The placard case's flap load is shared among the stations by the lever rule the README
+/// The placard case's flap load is shared among the stations by the lever rule `docs/scene.md`
 /// states (each span between stations simply supported, each overhang wholly to its end
 /// station): per flap, every station's share of the flap area against Simpson's rule on
 /// the scene's own planform, piece by piece (the chord is linear in y on this panel and the

@@ -49,7 +49,7 @@ fn stations_closer_than_the_stated_spacing_are_refused_naming_both() {
     );
 }
 
-/// Item 2: the shares follow the lever rule the README states: on the shipped inboard
+/// Item 2: the shares follow the lever rule `docs/scene.md` states: on the shipped inboard
 /// flap each station's share is what the tributary rule gives from the flap's planform,
 /// and the shares add up to the flap's area.
 #[test]
@@ -76,7 +76,7 @@ fn flap_area_shares_are_bounded_and_add_up() {
 }
 
 /// Item 3: a given `actuator_attachment_fraction` is the attachment used (the search put
-/// it at 0.8 of the arm at ob-inner, where 0.5 was given in the README's default).
+/// it at 0.8 of the arm at ob-inner, where 0.5 was given in the docs' default).
 #[test]
 fn a_given_actuator_attachment_fraction_is_honoured() {
     let scene = transport().replacen(

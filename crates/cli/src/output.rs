@@ -1,7 +1,7 @@
 //! Output folders a user can trust: a failed run never leaves a half-written result, and
 //! no run deletes or overwrites a file Flapwright did not write.
 //!
-//! The guarantees (the README's "Output folders" repeats them):
+//! The guarantees (`docs/commands.md`, "Output folders", repeats them):
 //! - `--out` is resolved once, before anything is read or moved ([`resolve_out`]): made
 //!   absolute, `.` and `..` taken out, symbolic links followed. Every later step uses that
 //!   one path, so `--out ./out/../out` and `--out out/.` are `--out out`. A symbolic link as

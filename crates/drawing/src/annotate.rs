@@ -120,7 +120,12 @@ pub(crate) fn joints_layer(
         }
         let baseline = cy + 0.36 * JOINT_FONT_PX;
         label = label.add(
-            text(&mark.label, cx, baseline, JOINT_FONT_PX, Anchor::Middle, mark.colour).set("font-weight", "bold"),
+            text(&mark.label, cx, baseline, JOINT_FONT_PX, Anchor::Middle, mark.colour)
+                .set("font-weight", "bold")
+                .set(
+                    "data-box",
+                    PageBox::centred(cx, cy, half_width, half_height).attribute(),
+                ),
         );
         labels = labels.add(label);
     }
@@ -245,7 +250,8 @@ pub(crate) fn dimensions_layer(dimensions: &[Dimension], map: &ScreenMap, placer
                 Anchor::Middle,
                 DIMENSION_COLOUR,
             )
-            .set("transform", format!("rotate({} {} {})", num(angle), num(tx), num(ty))),
+            .set("transform", format!("rotate({} {} {})", num(angle), num(tx), num(ty)))
+            .set("data-box", PageBox::centred(tx, ty, box_hw, box_hh).attribute()),
         );
         group = group.add(item);
     }
@@ -266,8 +272,14 @@ pub(crate) fn slot_labels(slots: &[SlotArc], map: &ScreenMap, placer: &mut Label
         if distance > LEADER_MIN_PX {
             label = label.add(line(x, y, cx, cy, "#4d4d4d", 0.7));
         }
-        label = label
-            .add(text(&slot.name, cx, cy + 0.36 * size, size, Anchor::Middle, "#4d4d4d").set("font-style", "italic"));
+        label = label.add(
+            text(&slot.name, cx, cy + 0.36 * size, size, Anchor::Middle, "#4d4d4d")
+                .set("font-style", "italic")
+                .set(
+                    "data-box",
+                    PageBox::centred(cx, cy, half_width, half_height).attribute(),
+                ),
+        );
         group = group.add(label);
     }
     group

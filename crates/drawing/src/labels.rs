@@ -6,6 +6,9 @@
 
 /// Cost weight of overlapping a label or a marker.
 pub(crate) const SOLID_WEIGHT: f64 = 10.0;
+/// Further cost weight of overlapping a placed label: a label takes any free place, then
+/// any place over lines, markers or the frame's edge, before it covers another label.
+const LABEL_WEIGHT: f64 = 1000.0;
 /// Cost weight of overlapping a line.
 pub(crate) const LINE_WEIGHT: f64 = 1.0;
 /// Spacing of the obstacle boxes sampled along a line, px.
@@ -46,6 +49,19 @@ impl PageBox {
         }
     }
 
+    /// The box as the `data-box` attribute of a label's text ("left top right bottom",
+    /// px): readers of the drawing (the tests) check that no two labels overlap.
+    pub fn attribute(&self) -> String {
+        use crate::style::num;
+        format!(
+            "{} {} {} {}",
+            num(self.left),
+            num(self.top),
+            num(self.right),
+            num(self.bottom)
+        )
+    }
+
     /// Area outside `frame`, px^2.
     fn outside(&self, frame: &PageBox) -> f64 {
         let area = (self.right - self.left) * (self.bottom - self.top);
@@ -57,6 +73,8 @@ impl PageBox {
 #[derive(Debug, Clone)]
 pub(crate) struct LabelPlacer {
     taken: Vec<(PageBox, f64)>,
+    /// The labels placed so far.
+    labels: Vec<PageBox>,
     frame: PageBox,
 }
 
@@ -65,6 +83,7 @@ impl LabelPlacer {
     pub fn new(frame: PageBox) -> Self {
         LabelPlacer {
             taken: Vec::new(),
+            labels: Vec::new(),
             frame,
         }
     }
@@ -95,7 +114,8 @@ impl LabelPlacer {
     /// the frame.
     pub fn cost(&self, candidate: &PageBox) -> f64 {
         let overlap: f64 = self.taken.iter().map(|(b, weight)| weight * b.overlap(candidate)).sum();
-        overlap + 100.0 * candidate.outside(&self.frame)
+        let on_labels: f64 = self.labels.iter().map(|b| b.overlap(candidate)).sum();
+        overlap + LABEL_WEIGHT * on_labels + 100.0 * candidate.outside(&self.frame)
     }
 
     /// Places a box of half-size (`half_width`, `half_height`) near (`x`, `y`): tries
@@ -112,12 +132,14 @@ impl LabelPlacer {
             (1.0, 1.0),
             (-1.0, 1.0),
         ];
-        let candidates = [1.0, 2.0, 3.5, 5.0, 7.0, 10.0].iter().flat_map(|ring| {
-            DIRECTIONS.iter().map(move |(dx, dy)| {
-                let distance = gap * ring;
-                (x + dx * (half_width + distance), y + dy * (half_height + distance))
-            })
-        });
+        let candidates = [1.0, 2.0, 3.5, 5.0, 7.0, 10.0, 14.0, 20.0, 28.0]
+            .iter()
+            .flat_map(|ring| {
+                DIRECTIONS.iter().map(move |(dx, dy)| {
+                    let distance = gap * ring;
+                    (x + dx * (half_width + distance), y + dy * (half_height + distance))
+                })
+            });
         self.place_best(candidates, half_width, half_height).1
     }
 
@@ -143,8 +165,9 @@ impl LabelPlacer {
             }
         }
         let (index, (cx, cy), _) = best.unwrap_or((0, (self.frame.left, self.frame.top), 0.0));
-        self.taken
-            .push((PageBox::centred(cx, cy, half_width, half_height), SOLID_WEIGHT));
+        let placed = PageBox::centred(cx, cy, half_width, half_height);
+        self.taken.push((placed, SOLID_WEIGHT));
+        self.labels.push(placed);
         (index, (cx, cy))
     }
 }

@@ -1,5 +1,6 @@
 //! The geometric layers of a station drawing: section parts, slots, swept envelope,
-//! fairing line and the mechanism at each setting (flap outline and links).
+//! fairing line, the mechanism at each setting (flap outline and links) and the break
+//! marks where a section is cut for the view.
 //!
 //! Each function maps station-frame geometry through a [`ScreenMap`] and returns an
 //! SVG group; labels are placed separately (`annotate`).
@@ -253,7 +254,69 @@ pub(crate) fn clashes_layer(
                         crate::style::Anchor::Middle,
                         CLASH_COLOUR,
                     )
-                    .set("font-weight", "bold"),
+                    .set("font-weight", "bold")
+                    .set(
+                        "data-box",
+                        crate::labels::PageBox::centred(cx, cy, half_width, half_height).attribute(),
+                    ),
+                ),
+        );
+    }
+    group
+}
+
+/// How far a break mark reaches past the cut outline at each end, px.
+const BREAK_OVERHANG_PX: f64 = 8.0;
+/// Half the height of a break mark's zigzag, px.
+const BREAK_ZIG_PX: f64 = 6.0;
+
+/// The zigzag line of a break mark from `a` to `b` (page px): straight past both ends,
+/// with a "Z" in its middle.
+pub(crate) fn break_mark_points(a: (f64, f64), b: (f64, f64)) -> Option<Vec<(f64, f64)>> {
+    let length = (b.0 - a.0).hypot(b.1 - a.1);
+    if length < 1e-9 {
+        return None;
+    }
+    let (ux, uy) = ((b.0 - a.0) / length, (b.1 - a.1) / length);
+    let (nx, ny) = (-uy, ux);
+    let at = |along: f64, side: f64| (a.0 + ux * along + nx * side, a.1 + uy * along + ny * side);
+    let (middle, zig) = (0.5 * length, BREAK_ZIG_PX);
+    Some(vec![
+        at(-BREAK_OVERHANG_PX, 0.0),
+        at(middle - zig, 0.0),
+        at(middle - 0.5 * zig, zig),
+        at(middle + 0.5 * zig, -zig),
+        at(middle + zig, 0.0),
+        at(length + BREAK_OVERHANG_PX, 0.0),
+    ])
+}
+
+/// Break marks across the cuts of sections shortened for the view: a white band hides
+/// the straight cut, a thin zigzag line over it says the part goes on.
+pub(crate) fn breaks_layer(breaks: &[[Point2<f64>; 2]], map: &ScreenMap) -> Group {
+    let mut group = Group::new().set("id", "breaks").set("class", "breaks");
+    for [from, to] in breaks {
+        let Some(points) = break_mark_points(map.page_point(from), map.page_point(to)) else {
+            continue;
+        };
+        group = group.add(
+            Group::new()
+                .set("class", "break")
+                .add(title("section cut for the view"))
+                .add(
+                    Polyline::new()
+                        .set("points", points_attribute(&points))
+                        .set("fill", "none")
+                        .set("stroke", "white")
+                        .set("stroke-width", "4"),
+                )
+                .add(
+                    Polyline::new()
+                        .set("points", points_attribute(&points))
+                        .set("fill", "none")
+                        .set("stroke", INK)
+                        .set("stroke-width", "1.2")
+                        .set("stroke-linejoin", "round"),
                 ),
         );
     }

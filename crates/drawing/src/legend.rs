@@ -1,7 +1,9 @@
 //! Footer of a station drawing: legend (settings and parts), and a note block with the
 //! view direction, units, an axis triad and a scale bar in millimetres.
 
-use crate::layers::{part_class, CLASH_COLOUR, ENVELOPE_FILL, ENVELOPE_STROKE, FAIRING_COLOUR, FAIRING_DASH};
+use crate::layers::{
+    break_mark_points, part_class, CLASH_COLOUR, ENVELOPE_FILL, ENVELOPE_STROKE, FAIRING_COLOUR, FAIRING_DASH,
+};
 use crate::model::{PartStyle, StationDrawing};
 use crate::style::{line, num, setting_style, text, Anchor, INK};
 use svg::node::element::{Group, Polygon, Rectangle};
@@ -52,6 +54,9 @@ fn part_entries(drawing: &StationDrawing) -> Vec<(&'static str, Swatch)> {
     if !drawing.slots.is_empty() {
         entries.push(("slot (track)", Swatch::Slot));
     }
+    if !drawing.breaks.is_empty() {
+        entries.push(("section cut for the view", Swatch::Break));
+    }
     for (kind, name) in [
         (PartStyle::WingSkin, "wing skin"),
         (PartStyle::Flap, "flap section"),
@@ -80,6 +85,7 @@ enum Swatch {
     Slot,
     Part(PartStyle),
     Ground,
+    Break,
 }
 
 /// The legend: settings (line style, deflection, joint primes) and parts, in two
@@ -148,6 +154,16 @@ pub(crate) fn legend(drawing: &StationDrawing, x: f64, y: f64, column_px: f64) -
                 Group::new()
                     .set("class", part_class(kind))
                     .add(swatch(px + 4.0, row_y, fill, outline))
+            }
+            Swatch::Break => {
+                let points = break_mark_points((px + 22.0, row_y - 8.0), (px + 22.0, row_y + 8.0)).unwrap_or_default();
+                Group::new().add(
+                    svg::node::element::Polyline::new()
+                        .set("points", crate::style::points_attribute(&points))
+                        .set("fill", "none")
+                        .set("stroke", INK)
+                        .set("stroke-width", "1.2"),
+                )
             }
             Swatch::Ground => Group::new()
                 .add(

@@ -119,6 +119,10 @@ pub struct StationDrawing {
     pub fairing_parts: Vec<Link>,
     /// Pairs that fail the clearance check, marked where they come closest.
     pub clashes: Vec<Clash>,
+    /// Where a section was cut short to keep the mechanism legible: a segment across each
+    /// cut (station frame, m), drawn as a break mark so that the cut does not read as
+    /// the part's edge.
+    pub breaks: Vec<[Point2<f64>; 2]>,
 }
 
 /// A pair that fails the clearance check, as the drawing marks it.

@@ -5,7 +5,8 @@ use crate::annotate::{block_slots, dimensions_layer, joints_layer, slot_labels};
 use crate::error::{Error, Result};
 use crate::labels::{LabelPlacer, PageBox};
 use crate::layers::{
-    clashes_layer, envelope_layer, fairing_layer, fairing_parts_layer, sections_layer, setting_layer, slots_layer,
+    breaks_layer, clashes_layer, envelope_layer, fairing_layer, fairing_parts_layer, sections_layer, setting_layer,
+    slots_layer,
 };
 use crate::legend::{legend, legend_rows, note_block, NOTE_HEIGHT_PX, NOTE_WIDTH_PX, ROW_PX};
 use crate::model::StationDrawing;
@@ -183,6 +184,9 @@ pub fn render_station_svg(drawing: &StationDrawing) -> Result<String> {
         document = document.add(envelope_layer(&drawing.envelope, &map));
     }
     document = document.add(sections_layer(&drawing.sections, &map));
+    if !drawing.breaks.is_empty() {
+        document = document.add(breaks_layer(&drawing.breaks, &map));
+    }
     if !drawing.slots.is_empty() {
         document = document.add(slots_layer(&drawing.slots, &map));
     }

@@ -4,7 +4,7 @@
 //! (L = 1e-6 H) for the implicit methods, whose reference is BDF at rtol 1e-12.
 //!
 //! `cargo run --release -p flapwright-dynamics --example error_against_time` prints a
-//! Markdown table; the README quotes it. Errors are those of the deployment time and of the
+//! Markdown table; `docs/dynamics.md` quotes it. Errors are those of the deployment time and of the
 //! input at half that time; wall time is the median of repeated runs.
 
 use std::time::Instant;

@@ -78,7 +78,7 @@ pub struct Integration {
 }
 
 impl Default for Integration {
-    /// BDF at rtol 1e-6 (the knee of error against run time, see the README), atol 1e-8.
+    /// BDF at rtol 1e-6 (the knee of error against run time, see `docs/dynamics.md`), atol 1e-8.
     fn default() -> Self {
         Self {
             method: Method::Bdf,

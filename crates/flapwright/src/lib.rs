@@ -11,7 +11,7 @@
 //! - [`pipeline`]: runs the stages (geometry, planes, mechanisms, interference, sizing,
 //!   ...) a scene's outputs need, times them, and hands the rendered files to a [`Sink`].
 //! - [`sink`]: where files go ([`Sink`]; [`MemorySink`] keeps them in memory).
-//! - [`report`]: the `report.json` schema (documented in the README).
+//! - [`report`]: the `report.json` schema (documented in `docs/report.md`).
 //! - [`junit`]: JUnit XML of the interference check, for CI.
 //! - [`study`]: the trade study of mechanism kinds at the scene's stations.
 //! - [`error`]: the crate's one error type ([`Error`], [`Result`]): each variant names what

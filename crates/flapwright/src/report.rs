@@ -1,4 +1,4 @@
-//! `report.json`: the stable, documented interface other tools read (schema in the README).
+//! `report.json`: the stable, documented interface other tools read (schema in `docs/report.md`).
 //!
 //! Everything but [`Report::timings`] is a pure function of the scene, so the same scene
 //! gives byte-identical reports apart from that one section.

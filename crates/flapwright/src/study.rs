@@ -129,7 +129,7 @@ pub struct Study {
     pub ranking_rule: &'static str,
 }
 
-/// The ranking rule, as the README states it.
+/// The ranking rule, as `docs/commands.md` states it.
 pub const RANKING_RULE: &str = "clears the wing first; then fewer settings missed by more than 0.5 % of the chord; then the shallower fairing; then the lighter mechanism";
 
 /// The sort key of [`RANKING_RULE`].

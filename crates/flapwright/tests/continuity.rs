@@ -5,7 +5,7 @@
 //! covers the whole range and the other kinds). Every station's peak actuator load and
 //! mechanism mass change by at most 1.5 x between neighbouring steps, and every station
 //! clears. The four-bar, link-track and hooked-track do not meet the bound yet (their
-//! searches choose between basins whose figures differ by 2-7 x: the README's table).
+//! searches choose between basins whose figures differ by 2-7 x: `docs/status.md`'s table).
 
 mod common;
 

@@ -1,4 +1,4 @@
-//! The README's recipe for adding a kind holds: outside a kind's own modules
+//! The recipe for adding a kind (`docs/architecture.md`) holds: outside a kind's own modules
 //! (`crates/kinds/src/<kind>/`, `crates/flapwright/src/kinds/<kind>.rs`), only the kind
 //! registry and the scene enum (`crates/flapwright/src/kinds/mod.rs`) and the kinds crate's
 //! table of contents (`crates/kinds/src/lib.rs`) name a kind in code; no kind names

@@ -424,6 +424,14 @@ fn cut_host_outline(
         }
         tip = lo;
     }
+    // No length clears (the nested section reaches the host's upper skin at its nose): the
+    // shroud's underside would stand on the cove wall and fold the outline onto itself.
+    if tip <= front_u {
+        return Err(Error::BadAirfoil {
+            name: airfoil.name.clone(),
+            reason: "no shroud clears the nested flap's nose (its section reaches the upper skin there): give the flap a thinner section, or no shroud",
+        });
+    }
     let upper = airfoil.surface_line(Surface::Upper);
     let lower = airfoil.surface_line(Surface::Lower);
     let bad = || Error::BadAirfoil {

@@ -223,7 +223,7 @@ mod tests {
         // A rod of length 0.45 m and radius 0.01 m pivots at the origin under a plate at
         // y = 0, from -60 to -120 deg; deepest at -90 deg: 0.46 m. With the samples
         // straddling -90 deg, the sampled depth falls short by 0.45 (1 - cos(dt / 2)),
-        // within the README's rho dt^2 / 8.
+        // within `docs/report.md`'s rho dt^2 / 8.
         let plate = vec![vec![
             Point2::new(-1.0, 0.0),
             Point2::new(1.0, 0.0),

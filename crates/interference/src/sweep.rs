@@ -24,8 +24,8 @@ use crate::refine::{certified_minimum, Minimum, Objective};
 use crate::relative_speed::pair_lipschitz;
 use crate::slabbed::{slabs_of, SlabbedClearance};
 
-/// Resolution knobs of the sweep (defaults chosen from the error-vs-time study in the
-/// README).
+/// Resolution knobs of the sweep (defaults chosen from the error-vs-time study in
+/// `docs/report.md`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SweepSettings {
     /// Evenly spaced samples before any refinement (>= 2).

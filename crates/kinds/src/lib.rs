@@ -17,7 +17,7 @@
 //! members, search); what two or more kinds use lives in [`flapwright_mechanism::shared`],
 //! and what the other stages see of a kind in [`flapwright_mechanism::seam`]. Adding a
 //! kind: a folder here, a line below, its re-exports below, and its row in the scene's
-//! kind table (`flapwright::kinds`); the README's recipe says each step.
+//! kind table (`flapwright::kinds`); `docs/architecture.md`'s recipe says each step.
 //!
 //! Units and frames are the seam's: SI, the station frame (origin A0 = flap hinge, x to
 //! the nose, y up, angles counter-clockwise positive).

@@ -1,4 +1,4 @@
-//! Adding a kind, worked once (the README's "Adding a kind", step 1): a **plain hinge**
+//! Adding a kind, worked once (`docs/architecture.md`, "Adding a kind", step 1): a **plain hinge**
 //! defined here, in the test, with nothing but the public seam and toolbox of
 //! `flapwright-mechanism` (what a folder `crates/kinds/src/plain_hinge/` would use), then fed
 //! unchanged through the kind-neutral consumers the other stages use: the deployment sweep,

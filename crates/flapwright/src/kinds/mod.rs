@@ -4,7 +4,7 @@
 //! a module here, a variant, a `KINDS` name (and a `SYNTHESISED_KINDS` one if it is
 //! synthesised from the settings) and three match arms in this file (`kind`,
 //! `is_synthesised`, the `Deserialize` impl), and its mechanism module in `flapwright-kinds`:
-//! nothing that names another kind (the README's "Adding a kind";
+//! nothing that names another kind (`docs/architecture.md`, "Adding a kind";
 //! `tests/kinds_named_once.rs` checks it).
 
 mod circular_arc_track;

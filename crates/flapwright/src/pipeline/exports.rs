@@ -331,14 +331,29 @@ pub fn write_svgs(
             .filter(|s| record.flap.as_deref() == Some(s.part.as_str()))
             .flat_map(|s| s.polygons.iter().flatten())
             .map(|p| p.x);
+        // Every link over the whole deployment too: a strut's top on the skin, a jack's
+        // mount (the links drawn at 21 drive fractions).
+        let input = mechanism.input_range();
+        let mut swept = Vec::new();
+        for k in 0..=20 {
+            let s = snapshot(
+                mechanism,
+                "",
+                input.at_fraction(k as f64 / 20.0),
+                &FlapOutlines::default(),
+            )?;
+            swept.extend(s.links.into_iter().flat_map(|l| l.points));
+        }
         let reach = notes
             .arcs
             .iter()
             .map(|(_, centre, radius, _, _)| centre.x + radius)
             .chain(stowed.points.iter().map(|p| p.position.x))
+            .chain(swept.iter().map(|p| p.x))
             .chain(own_flap_nose)
             .fold(0.0, f64::max);
         let x_limit = reach + VIEW_MARGIN_M;
+        let mut breaks = Vec::new();
         let sections: Vec<SectionOutline> = sections
             .into_iter()
             .filter_map(|mut s| {
@@ -348,6 +363,7 @@ pub fn write_svgs(
                     .map(|p| clip_x_below(p, x_limit))
                     .filter(|p| p.len() >= 3)
                     .collect();
+                breaks.extend(s.polygons.iter().filter_map(|p| cut_at(p, x_limit)));
                 (!s.polygons.is_empty()).then_some(s)
             })
             .collect();
@@ -384,7 +400,6 @@ pub fn write_svgs(
                     f.settings.landing_deg.to_radians().min(range),
                 )
             });
-        let input = mechanism.input_range();
         let settings = vec![
             snapshot(mechanism, "stowed", input.stowed, &flap_outline)?,
             snapshot(
@@ -400,16 +415,6 @@ pub fn write_svgs(
                 &flap_outline,
             )?,
         ];
-        let mut swept = Vec::new();
-        for k in 0..=20 {
-            let s = snapshot(
-                mechanism,
-                "",
-                input.at_fraction(k as f64 / 20.0),
-                &FlapOutlines::default(),
-            )?;
-            swept.extend(s.links.into_iter().flat_map(|l| l.points));
-        }
         let envelope = vec![convex_hull(swept)];
         let fairing_line = record.fairing.as_ref().filter(|f| f.depth_m > 0.0).map(|f| {
             let y = f.point_st[1];
@@ -483,6 +488,7 @@ pub fn write_svgs(
             dimensions,
             fairing_parts,
             clashes,
+            breaks,
         };
         let name = format!("station-{}.svg", record.station);
         let svg = render_station_svg(&drawing).map_err(|source| Error::DrawingStation {
@@ -576,6 +582,14 @@ fn clashes(report: &InterferenceReport, station: &str, station_from_aircraft: &n
 const VIEW_MARGIN_M: f64 = 0.15;
 
 /// The part of `polygon` with x <= `limit` (Sutherland-Hodgman against one half-plane).
+/// Where [`clip_x_below`] cut `polygon` at `limit`: the segment across the cut, from the
+/// lowest to the highest point on it; None where the polygon did not reach the limit.
+fn cut_at(polygon: &[Point2<f64>], limit: f64) -> Option<[Point2<f64>; 2]> {
+    let on_cut = polygon.iter().filter(|p| p.x == limit).map(|p| p.y);
+    let (low, high) = on_cut.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), y| (lo.min(y), hi.max(y)));
+    (high > low).then(|| [Point2::new(limit, low), Point2::new(limit, high)])
+}
+
 fn clip_x_below(polygon: &[Point2<f64>], limit: f64) -> Vec<Point2<f64>> {
     let mut clipped = Vec::with_capacity(polygon.len() + 2);
     for (i, a) in polygon.iter().enumerate() {

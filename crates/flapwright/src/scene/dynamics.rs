@@ -20,7 +20,7 @@ pub struct DynamicsScene {
     /// `bdf` (default), `esdirk34` or `tsit45` (explicit, for comparison).
     #[serde(default)]
     pub method: MethodScene,
-    /// Relative tolerance of the local error (default 1e-6: the knee, see the README).
+    /// Relative tolerance of the local error (default 1e-6: the knee, see `docs/dynamics.md`).
     #[serde(default = "default_relative_tolerance")]
     pub relative_tolerance: f64,
     /// Absolute tolerance (default 1e-8).

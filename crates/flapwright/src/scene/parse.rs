@@ -130,7 +130,10 @@ impl Fault {
     fn message(&self) -> String {
         match self {
             Self::Missing(_) => "missing: this key is required".into(),
-            Self::Unknown(_) => "unknown key (check the spelling; the README lists the keys of each table)".into(),
+            Self::Unknown(_) => {
+                "unknown key (check the spelling; docs/scene.md and `flapwright kinds` list the keys of each table)"
+                    .into()
+            }
             Self::Other(text) => reword(text),
         }
     }
@@ -292,7 +295,7 @@ mod tests {
             found,
             [
                 "count | invalid type: floating point `1e300`, expected a whole number >= 0",
-                "inner[0].bogus | unknown key (check the spelling; the README lists the keys of each table)",
+                "inner[0].bogus | unknown key (check the spelling; docs/scene.md and `flapwright kinds` list the keys of each table)",
                 "inner[0].length_m | invalid type: string \"a\", expected a number",
                 "inner[0].width_m | missing: this key is required",
                 "inner[1].length_m | missing: this key is required",

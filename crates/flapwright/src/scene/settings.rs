@@ -62,7 +62,7 @@ impl Default for SizingScene {
 }
 
 /// `[interference]`: the clearance check (defaults chosen from the error-vs-time study in
-/// the README).
+/// `docs/report.md`).
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct InterferenceScene {
@@ -254,7 +254,7 @@ impl Default for OutputsScene {
 }
 
 /// `[resolution]`: discretisation knobs (defaults chosen from the error-vs-time tables in
-/// the README).
+/// `docs/report.md`).
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ResolutionScene {

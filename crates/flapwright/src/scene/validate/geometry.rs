@@ -207,6 +207,27 @@ impl Checker<'_> {
         }
     }
 
+    /// A shroud over a flap cut out of the wing section: the flap fills the section to
+    /// the upper skin at its nose, so no shroud clears it (the shroud's search for a length
+    /// that clears ended at none, and the wing skin's outline folded onto itself: "polygon
+    /// of 131 points cannot be triangulated" from the meshing stage). The flap needs its own
+    /// section nested in the cove.
+    fn shroud_needs_a_flap_section(&mut self, path: &str, flap: &FlapScene) {
+        let Some(shroud) = flap
+            .shroud_chord_fraction
+            .filter(|shroud| *shroud > 0.0 && flap.airfoil.is_none())
+        else {
+            return;
+        };
+        self.fail(
+            format!("{path}.shroud_chord_fraction"),
+            format!(
+                "= {}: a shroud needs the flap's own section nested in the cove, and {path}.airfoil is not given: a flap cut out of the wing section fills it up to the upper skin, so no shroud clears its nose; give {path}.airfoil (the wing's airfoil will do: it is scaled into the cove), or no shroud and overlaps of 0 or less",
+                super::number(shroud)
+            ),
+        );
+    }
+
     pub(super) fn flap(&mut self, path: &str, flap: &FlapScene, wing: &WingScene) {
         let (root, tip) = span_of(wing);
         let inboard_ok = self.in_range(&format!("{path}.y_inboard_m"), flap.y_inboard_m, root, tip, false);
@@ -230,6 +251,7 @@ impl Checker<'_> {
             self.in_range(&format!("{path}.{key}"), value, min, max, false);
         }
         self.shroud(path, flap.shroud_chord_fraction);
+        self.shroud_needs_a_flap_section(path, flap);
         if let Some(gap) = flap.side_gap_m {
             let quarter_span = 0.25 * (flap.y_outboard_m - flap.y_inboard_m).abs();
             self.in_range(&format!("{path}.side_gap_m"), gap, 0.0, quarter_span, false);

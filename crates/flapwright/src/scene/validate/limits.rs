@@ -1,5 +1,5 @@
 //! Magnitude limits of scene values: every length, count and resolution has a finite
-//! range, so that a valid scene has bounded run time and memory (the README's scene
+//! range, so that a valid scene has bounded run time and memory (`docs/scene.md`'s scene
 //! reference quotes these numbers).
 //!
 //! The ranges are wide enough for every real wing from a 1/17 wind-tunnel model to the

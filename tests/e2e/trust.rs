@@ -279,36 +279,51 @@ fn a_positive_overlap_without_a_shroud_is_refused_proposing_one() {
 }
 
 /// Item 15: on a swept wing the default side gap lets the flaps' sides pass into the wing
-/// as they deploy; the failing check names `side_gap_m` and a value, and that value clears.
+/// as they deploy; the failing check names `side_gap_m` and a value for each flap. The
+/// value is a lower bound (the depth at the first penetrating sample, and a wider gap moves
+/// the flap's share of the load and with it the mechanisms), so a user may need a second
+/// hint: following them, the check passes within three rounds, each hint larger than the
+/// gap it replaces.
 #[test]
 fn a_side_gap_too_small_for_the_flaps_spanwise_motion_names_the_gap_that_clears() {
-    let scene = transport().replace("side_gap_m = 0.40\n", "");
-    let (_dir, output) = run_on(&scene, &["check"]);
-    let stderr = String::from_utf8_lossy(&output.stderr);
-    assert_eq!(output.status.code(), Some(1), "{stderr}");
-    let mut fixed = scene.clone();
-    for (f, name) in ["inboard", "outboard"].iter().enumerate() {
-        let key = format!("flap[{f}].side_gap_m = ");
-        let at = stderr.find(&key).unwrap_or_else(|| panic!("{key}: {stderr}"));
-        let value: f64 = stderr[at + key.len()..]
-            .split_whitespace()
-            .next()
-            .unwrap()
-            .parse()
-            .unwrap();
-        fixed = fixed.replacen(
-            &format!("name = \"{name}\"\n"),
-            &format!("name = \"{name}\"\nside_gap_m = {value}\n"),
-            1,
-        );
+    let mut scene = transport().replace("side_gap_m = 0.40\n", "");
+    let mut gaps: [Option<f64>; 2] = [None, None];
+    for round in 0..3 {
+        let (_dir, output) = run_on(&scene, &["check"]);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        if output.status.code() == Some(0) {
+            assert!(round > 0, "the default side gap cannot clear: {stderr}");
+            return;
+        }
+        assert_eq!(output.status.code(), Some(1), "{stderr}");
+        let mut hinted = false;
+        for (f, name) in ["inboard", "outboard"].iter().enumerate() {
+            let key = format!("flap[{f}].side_gap_m = ");
+            let Some(at) = stderr.find(&key) else {
+                assert!(round > 0, "{key}: {stderr}");
+                continue;
+            };
+            let value: f64 = stderr[at + key.len()..]
+                .split_whitespace()
+                .next()
+                .unwrap()
+                .parse()
+                .unwrap();
+            assert!(gaps[f].is_none_or(|gap| value > gap), "{key}{value} after {gaps:?}");
+            scene = match gaps[f] {
+                Some(gap) => scene.replacen(&format!("side_gap_m = {gap}\n"), &format!("side_gap_m = {value}\n"), 1),
+                None => scene.replacen(
+                    &format!("name = \"{name}\"\n"),
+                    &format!("name = \"{name}\"\nside_gap_m = {value}\n"),
+                    1,
+                ),
+            };
+            gaps[f] = Some(value);
+            hinted = true;
+        }
+        assert!(hinted, "a failing check without a side-gap hint: {stderr}");
     }
-    let (_dir, output) = run_on(&fixed, &["check"]);
-    assert_eq!(
-        output.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    panic!("three rounds of side-gap hints did not clear: {gaps:?}");
 }
 
 /// A command that needs a wing, on a 2D scene, is bad input located like every scene

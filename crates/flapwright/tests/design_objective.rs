@@ -87,3 +87,35 @@ fn a_trade_index_beyond_the_largest_trade_is_refused_by_key_and_line() {
     assert!(error.contains(&format!("{line}:")), "line {line}: {error}");
     assert!(error.contains('7'), "the allowed range: {error}");
 }
+
+/// The four-bar's screw jack weighed (the default `[design]`) against the shallowest clear
+/// placement (weight 0 and no cap): on the transport's inboard four-bars the shallowest
+/// takes hold of the crank near its pivot and carries 1.1-2.0 times the flap's air load;
+/// weighed, each screw carries less, at most the largest force the load cases put on the
+/// flap at its station (`four_bar_actuator_load_cap = 1`, reference loads), for a fairing
+/// no shallower.
+#[test]
+fn weighed_the_four_bars_screw_carries_at_most_the_flaps_load() {
+    let shallowest = common::designed(&format!(
+        "{TRANSPORT}\n[design]\nactuator_load_weight = 0.0\nfour_bar_actuator_load_cap = 100.0\n"
+    ));
+    let weighed = common::designed(TRANSPORT);
+    for station in ["ib-inner", "ib-outer"] {
+        let depth = |report: &flapwright::report::Report| {
+            let s = report.stations.iter().find(|s| s.name == station).expect("station");
+            s.mechanism.as_ref().expect("a mechanism").details["synthesis"]["depth_below_section_m"]
+                .as_f64()
+                .expect("depth")
+        };
+        let (before, after) = (
+            common::peak_actuator_load(&shallowest, station),
+            common::peak_actuator_load(&weighed, station),
+        );
+        assert!(after < before, "{station}: {after} N weighed against {before} N");
+        assert!(depth(&weighed) >= depth(&shallowest) - 1e-12, "{station}");
+        // The station's air load at landing: C_N q n S (1.3 x 4636 Pa x 2 x its area share,
+        // 7.5 and 5.3 m², docs/transport-flap-figures.md) is 90.5 and 64.0 kN.
+        let air = if station == "ib-inner" { 90.5e3 } else { 64.0e3 };
+        assert!(after <= air, "{station}: {after} N against the air load {air} N");
+    }
+}

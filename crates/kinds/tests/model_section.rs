@@ -128,6 +128,9 @@ pub fn four_bar_spec() -> FourBarSpec {
         screw_drive: drive(),
         hardware: LinkHardware::for_flap_chord(0.8),
         outline,
+        design_loads: Vec::new(),
+        load_weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
+        load_cap: flapwright_kinds::four_bar::DEFAULT_JACK_LOAD_CAP,
     }
 }
 

@@ -23,6 +23,7 @@ fn the_objectives_load_by_virtual_work_equals_each_kinds_statics() {
             loads: vec![flight.clone()],
             flap_mass: mechanism.flap_mass().unwrap(),
             weight: DEFAULT_LOAD_WEIGHT,
+            load_cap: None,
         };
         // Inputs measured from stowed, as the objective's body rotations are.
         let travel = range.travel();

@@ -8,8 +8,8 @@ ob-inner's axis_offset_m 1.4-1.6 m by 0.02 m (the issue asks 0.1 deg, 0.05 %c an
 this is half the resolution; `--full` takes the issue's steps). Prints per sweep, kind and station the largest ratio of the
 peak actuator load and of the mechanism mass between neighbouring steps (with where), and
 the clearance verdict of every step (y/n, - where the kind was not designed), how many
-neighbouring steps change the topology the study states (`topology`: the hooked-track's
-and the link-track's), and the largest ratio (load or mass) between neighbours of one
+neighbouring steps change the topology the study states (`topology`: the hooked-track's,
+the link-track's and the four-bar's), and the largest ratio (load or mass) between neighbours of one
 topology, which the report does not explain.
 """
 import json, os, re, subprocess, sys

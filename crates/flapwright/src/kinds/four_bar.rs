@@ -112,6 +112,9 @@ impl KindScene for FourBarScene {
             screw_drive: context.screw_drive(self.screw.drive()),
             hardware: flap.hardware,
             outline: flap.outline.clone(),
+            design_loads: context.design_loads.clone(),
+            load_weight: context.actuator_load_weight,
+            load_cap: context.four_bar_actuator_load_cap,
         };
         // Follow the flap's first station (where the scene fixes neither moving pivot): the
         // same points of the flap section and the nearest deflection schedule at every

@@ -198,7 +198,8 @@ pub fn gap_overlap_warnings(station: &str, position: &crate::pipeline::record::F
 /// `y_inboard_m` or `y_outboard_m`): the flap's side moved spanwise past its side gap as it
 /// deployed (a hinge line not square to the streamwise sides, or a conical motion, moves
 /// them). Says which side and the `side_gap_m` that would keep the required clearance
-/// there: the gap now plus the depth plus the clearance, rounded up to the millimetre.
+/// there: the gap now plus the depth (below the certified clearance, the smallest found
+/// less the check's residual bound) plus the clearance, rounded up to the millimetre.
 pub fn side_gap_hints(
     scene: &Scene,
     model: &flapwright_geom::parts::WingModel,
@@ -215,7 +216,10 @@ pub fn side_gap_hints(
         let Some((f, flap)) = scene.flap.iter().enumerate().find(|(_, f)| f.name == flap_name) else {
             continue;
         };
-        let depth = c.penetration_m.max(0.0) + (pair.required_clearance_m - c.min_clearance_m.max(0.0)).max(0.0);
+        // What the check can certify: the smallest clearance found less what may lie
+        // between its evaluations (a pair left uncertain fails too).
+        let certified = (c.min_clearance_m - c.residual_bound_m).max(0.0);
+        let depth = c.penetration_m.max(0.0) + (pair.required_clearance_m - certified).max(0.0);
         let reach = depth + 0.01;
         let y = wing_point[1];
         let side = if (y - flap.y_inboard_m).abs() <= reach {

@@ -176,6 +176,16 @@ pub struct DesignScene {
     /// fairing's depth in flap chords; 0: the shallowest mechanism whatever it carries.
     #[serde(default = "default_actuator_load_weight")]
     pub actuator_load_weight: f64,
+    /// The four-bar's screw load, in reference loads, above which its placement trades
+    /// steeply (each reference load over it worth two flap chords of fairing depth): the
+    /// shallowest clear placement whose screw carries at most this; default 1, the whole
+    /// air and inertia load on the flap.
+    #[serde(default = "default_four_bar_actuator_load_cap")]
+    pub four_bar_actuator_load_cap: f64,
+}
+
+fn default_four_bar_actuator_load_cap() -> f64 {
+    flapwright_kinds::four_bar::DEFAULT_JACK_LOAD_CAP
 }
 
 fn default_actuator_load_weight() -> f64 {
@@ -186,6 +196,7 @@ impl Default for DesignScene {
     fn default() -> Self {
         Self {
             actuator_load_weight: default_actuator_load_weight(),
+            four_bar_actuator_load_cap: default_four_bar_actuator_load_cap(),
         }
     }
 }

@@ -89,6 +89,7 @@ impl DroppedHingeSpec {
             loads: self.design_loads.clone(),
             flap_mass: self.flap_mass,
             weight: self.load_weight,
+            load_cap: None,
         })
     }
 }

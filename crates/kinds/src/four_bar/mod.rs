@@ -85,7 +85,40 @@ pub struct FourBarSpec {
     pub hardware: LinkHardware,
     /// The station's sections: the search region and the fixed pivots' region.
     pub outline: StationOutline,
+    /// The station's load cases, under which the screw jack's placement weighs its force
+    /// ([`FourBarSpec::weighing`]); empty: the shallowest clear placement.
+    #[serde(skip)]
+    pub design_loads: Vec<flapwright_mechanism::LoadCase>,
+    /// Weight of the screw's peak load against the fairing's depth.
+    #[serde(skip)]
+    pub load_weight: f64,
+    /// The screw's load (reference loads) above which the placement trades steeply.
+    #[serde(skip)]
+    pub load_cap: f64,
 }
+
+impl FourBarSpec {
+    /// How the jack's placement weighs its load: the least depth in flap chords plus
+    /// [`Self::load_weight`] times the peak screw force in reference loads, each reference
+    /// load above [`Self::load_cap`] costing
+    /// [`flapwright_mechanism::shared::objective::CAP_EXCESS_WEIGHT`] more; `None` without
+    /// load cases (the shallowest clear placement).
+    pub fn weighing(&self) -> Option<flapwright_mechanism::shared::objective::LoadWeighing> {
+        (!self.design_loads.is_empty()).then(|| flapwright_mechanism::shared::objective::LoadWeighing {
+            loads: self.design_loads.clone(),
+            flap_mass: self.flap_mass,
+            weight: self.load_weight,
+            load_cap: Some(self.load_cap),
+        })
+    }
+}
+
+/// The default of [`FourBarSpec::load_cap`]: the four-bar's screw carries at most the
+/// largest force the load cases put on the flap where a clear placement allows. Unweighed,
+/// the shallowest placement took hold of the crank near its pivot and carried 1.1-2.0
+/// times it on `transport-flap` (`003_...` Table 1's four-bar: 0.55), its load jumping 2x
+/// between neighbouring settings as the grid's lever changed.
+pub const DEFAULT_JACK_LOAD_CAP: f64 = 1.0;
 
 /// What a four-bar follows of another station of its flap ([`FourBarSpec::follow`]).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -169,6 +202,78 @@ pub struct FourBarSynthesis {
     pub placement_clear: bool,
     /// What the search rejected (all zero when both moving pivots were given).
     pub search: FourBarSearch,
+    /// The arrangement the search chose (its discrete choices).
+    pub topology: FourBarTopology,
+}
+
+/// The four-bar's arrangement, the discrete choices its search spans: neighbouring inputs
+/// whose designs differ in it are different mechanisms, whose figures may differ by
+/// several times (issue 37's continuity: a jump the report must state).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct FourBarTopology {
+    /// Which of the two links the screw turns: the one whose moving pivot is forward on the
+    /// flap, or the aft one.
+    pub crank: CrankLink,
+    /// Where the screw takes hold of the crank: between its pivots, or on a horn beyond its
+    /// fixed pivot (which turns the other way about it).
+    pub attachment: ScrewAttachment,
+    /// Where the screw's mount stands, stowed: ahead of its attachment or behind it.
+    pub mount: MountSide,
+}
+
+/// The link a four-bar's screw turns ([`FourBarTopology::crank`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum CrankLink {
+    /// The link whose moving pivot is the forward one on the flap.
+    Forward,
+    /// The link whose moving pivot is the aft one.
+    Aft,
+}
+
+/// Where a screw takes hold of the arm it turns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ScrewAttachment {
+    /// Between the arm's fixed and moving pivots.
+    OnArm,
+    /// On a horn beyond the fixed pivot.
+    Horn,
+}
+
+/// Where a screw's mount stands against its attachment, stowed, along the station's
+/// forward direction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum MountSide {
+    /// Ahead of the attachment.
+    Ahead,
+    /// Behind it.
+    Behind,
+}
+
+impl FourBarTopology {
+    /// The arrangement of a crank O1-A1 with the other moving pivot at `a2`, the screw
+    /// taking hold at `attachment` with its mount at `mount` (stowed; x forward).
+    pub fn of(o1: Point2<f64>, a1: Point2<f64>, a2: Point2<f64>, attachment: Point2<f64>, mount: Point2<f64>) -> Self {
+        Self {
+            crank: if a1.x >= a2.x {
+                CrankLink::Forward
+            } else {
+                CrankLink::Aft
+            },
+            attachment: if (attachment - o1).dot(&(a1 - o1)) >= 0.0 {
+                ScrewAttachment::OnArm
+            } else {
+                ScrewAttachment::Horn
+            },
+            mount: if mount.x >= attachment.x {
+                MountSide::Ahead
+            } else {
+                MountSide::Behind
+            },
+        }
+    }
 }
 
 /// A four-bar synthesised for one station.
@@ -433,5 +538,26 @@ impl FlapMechanism for FourBar {
             warnings.push("no default place of a strut from a fixed pivot to the wing's lower skin, or of a beam between the pivots, kept clear of the structure and the flap at the sampled poses".into());
         }
         warnings
+    }
+}
+
+#[cfg(test)]
+mod topology_tests {
+    use super::*;
+
+    /// The crank is named by its moving pivot's place on the flap, the screw's hold by the
+    /// side of the fixed pivot it lies on, the mount by its side of the hold.
+    #[test]
+    fn the_topology_names_the_crank_the_screws_hold_and_the_mounts_side() {
+        let p = Point2::new;
+        let (o1, a1) = (p(0.0, 0.0), p(-0.2, 0.4));
+        let on_arm = FourBarTopology::of(o1, a1, p(-0.6, 0.5), p(-0.1, 0.2), p(0.3, 0.1));
+        assert_eq!(on_arm.crank, CrankLink::Forward);
+        assert_eq!(on_arm.attachment, ScrewAttachment::OnArm);
+        assert_eq!(on_arm.mount, MountSide::Ahead);
+        let horn = FourBarTopology::of(o1, a1, p(0.3, 0.5), p(0.1, -0.2), p(-0.3, -0.3));
+        assert_eq!(horn.crank, CrankLink::Aft);
+        assert_eq!(horn.attachment, ScrewAttachment::Horn);
+        assert_eq!(horn.mount, MountSide::Behind);
     }
 }

@@ -7,8 +7,8 @@ use super::bodies::bodies_and_joints;
 use super::linkage::{Loop, LoopPose};
 use super::search::{candidate, candidates, check_pair, search_failure, Candidate};
 use super::{
-    failure, mm, FollowStation, FourBar, FourBarSearch, FourBarSpec, FourBarSynthesis, CLEAR_FINALISTS, FINALISTS,
-    LOOP_SAMPLES, RATE_INTERVALS,
+    failure, mm, FollowStation, FourBar, FourBarSearch, FourBarSpec, FourBarSynthesis, FourBarTopology,
+    CLEAR_FINALISTS, FINALISTS, LOOP_SAMPLES, RATE_INTERVALS,
 };
 use flapwright_mechanism::seam::FlapMechanism;
 use flapwright_mechanism::shared::geometry::turn_angle;
@@ -224,11 +224,7 @@ impl FourBar {
             margin,
             &spec.outline,
             &flap_at,
-            // Not weighed by the load yet: on `transport-flap` the weighed jack (0.73-0.82
-            // of the air load instead of 1.14-2.08) deepens the fairing from 64-67 % to
-            // 69-73 % of the flap chord and its slower flap per unit stroke leaves the
-            // check's clearance uncertified within its evaluations (issue 37).
-            None,
+            spec.weighing().as_ref(),
         );
         let mut placement_clear = true;
         let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)
@@ -317,6 +313,7 @@ impl FourBar {
             placement_clear,
             nominal_speed_mps,
             search,
+            topology: FourBarTopology::of(loop_.o1, loop_.a1, loop_.a2, attachment, mount),
         };
         let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &loop_, &drive, link_rates);
         let mut four_bar = Self {

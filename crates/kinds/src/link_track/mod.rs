@@ -717,6 +717,7 @@ impl LinkTrackSpec {
             loads: self.design_loads.clone(),
             flap_mass: self.flap_mass,
             weight: self.load_weight,
+            load_cap: None,
         })
     }
 }

@@ -45,7 +45,16 @@ pub struct LoadWeighing {
     pub flap_mass: FlapMass,
     /// Weight of the peak load in reference loads against the depth in flap chords.
     pub weight: f64,
+    /// A load (reference loads) above which every further reference load costs
+    /// [`CAP_EXCESS_WEIGHT`] more: a search then takes the shallowest candidate whose
+    /// actuator carries at most this, and trades steeply beyond it. `None`: no cap.
+    pub load_cap: Option<f64>,
 }
+
+/// The cost of each reference load above [`LoadWeighing::load_cap`], against the depth in
+/// flap chords: a fairing half a flap chord deeper is worth a quarter of the reference load
+/// over the cap.
+pub const CAP_EXCESS_WEIGHT: f64 = 2.0;
 
 impl LoadWeighing {
     /// The torque (N m, magnitude, the largest over the load cases) that the body turning
@@ -116,7 +125,10 @@ impl LoadWeighing {
         } else {
             0.0
         };
-        depth_m / flap_chord_m.max(1e-9) + self.weight * load
+        let excess = self
+            .load_cap
+            .map_or(0.0, |cap| CAP_EXCESS_WEIGHT * (load - cap).max(0.0));
+        depth_m / flap_chord_m.max(1e-9) + self.weight * load + excess
     }
 }
 
@@ -135,6 +147,7 @@ mod tests {
                 gravity_mps2: Vector2::new(0.0, -9.81),
             },
             weight: DEFAULT_LOAD_WEIGHT,
+            load_cap: None,
         }
     }
 

@@ -81,6 +81,13 @@ impl Checker<'_> {
             10.0,
             false,
         );
+        self.in_range(
+            "design.four_bar_actuator_load_cap",
+            scene.design.four_bar_actuator_load_cap,
+            0.05,
+            100.0,
+            false,
+        );
         let interference = &scene.interference;
         self.in_range(
             "interference.required_clearance_m",

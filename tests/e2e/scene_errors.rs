@@ -230,6 +230,9 @@ fn a_whole_transport_wing_of_32_stations_is_checked() {
         }
     }
     scene.push_str(&text[end..]);
+    // At the evaluation cap the test was written at (the shipped scene's is larger for its
+    // four-bars' rockers, which these dropped hinges do not have).
+    let scene = scene.replace("max_evaluations = 2400", "max_evaluations = 1200");
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("scene.toml"), scene).unwrap();
     let output = crate::run_flapwright(dir.path(), &["check", "scene.toml", "--out", "out", "--quiet"]);

@@ -117,24 +117,46 @@ impl KindScene for FourBarScene {
             load_cap: context.four_bar_actuator_load_cap,
         };
         // Follow the flap's first station (where the scene fixes neither moving pivot): the
-        // same points of the flap section and the nearest deflection schedule at every
-        // station move the rigid flap alike; where none builds here, this station searches.
-        let follow = context.companion.as_ref().and_then(|c| {
-            let mut points: Vec<_> = c
-                .attachments
-                .iter()
-                .filter_map(|&a| flap.outline.flap_point(a))
-                .collect();
-            points.sort_by(|a, b| b.x.total_cmp(&a.x));
-            (points.len() == 2 && c.attachments.len() == 2).then(|| FollowStation {
-                pivots: [points[0], points[1]],
-                deflections_rad: c.deflections_rad.clone(),
-            })
-        });
+        // same points of the flap section and the nearest motion at every station move the
+        // rigid flap alike; where none builds here, this station searches. The first station
+        // synthesised again follows the second's motion from the second's pivots
+        // (`FollowedMotion::attachments`), so that the two meet between their paths.
+        let follow = match (&context.followed, &context.companion) {
+            (Some(followed), companion) if followed.attachments.len() == 2 => {
+                let mut points = followed.attachments.clone();
+                points.sort_by(|a, b| b.x.total_cmp(&a.x));
+                Some(FollowStation {
+                    pivots: [points[0], points[1]],
+                    deflections_rad: companion
+                        .as_ref()
+                        .map(|c| c.deflections_rad.clone())
+                        .unwrap_or_default(),
+                    motion: Some(followed.clone()),
+                })
+            }
+            (_, Some(c)) => {
+                let mut points: Vec<_> = c
+                    .attachments
+                    .iter()
+                    .filter_map(|&a| flap.outline.flap_point(a))
+                    .collect();
+                points.sort_by(|a, b| b.x.total_cmp(&a.x));
+                (points.len() == 2 && c.attachments.len() == 2).then(|| FollowStation {
+                    pivots: [points[0], points[1]],
+                    deflections_rad: c.deflections_rad.clone(),
+                    motion: None,
+                })
+            }
+            _ => None,
+        };
         let spec = FourBarSpec { follow, ..spec };
         FourBar::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)
             .map_err(|e| format!("cannot be synthesised: {e}"))
+    }
+
+    fn follows_motion(&self) -> bool {
+        true
     }
 
     fn geometry_keys(&self) -> &'static str {

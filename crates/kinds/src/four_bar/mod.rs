@@ -128,6 +128,13 @@ pub struct FollowStation {
     pub pivots: [Point2<f64>; 2],
     /// Its flap deflection at evenly spaced drive fractions from 0 to 1 (rad).
     pub deflections_rad: Vec<f64>,
+    /// Its flap's rigid motion as this station's plane sees it, where the caller knows
+    /// it: the candidates are then ranked by their flap's largest distance from it
+    /// ([`flapwright_mechanism::shared::follow::FollowedMotion::miss`]) instead of by the
+    /// deflection schedule alone, which left the transport's inboard flap 8-10 mm from a
+    /// rigid motion at landing gaps of 2.1-2.5 %c.
+    #[serde(skip)]
+    pub motion: Option<flapwright_mechanism::shared::follow::FollowedMotion>,
 }
 
 /// Counts of what the free-choice search rejected, for the report and for a failure's
@@ -204,6 +211,10 @@ pub struct FourBarSynthesis {
     pub search: FourBarSearch,
     /// The arrangement the search chose (its discrete choices).
     pub topology: FourBarTopology,
+    /// The station of the same flap whose motion this one's last search followed, and the
+    /// largest distance (m) of this station's flap from it over the deployment, at points
+    /// near the flap's leading and trailing edges ([`flapwright_mechanism::shared::follow`]).
+    pub followed: Option<flapwright_mechanism::shared::follow::FollowedStation>,
 }
 
 /// The four-bar's arrangement, the discrete choices its search spans: neighbouring inputs

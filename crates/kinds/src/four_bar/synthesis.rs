@@ -314,6 +314,7 @@ impl FourBar {
             nominal_speed_mps,
             search,
             topology: FourBarTopology::of(loop_.o1, loop_.a1, loop_.a2, attachment, mount),
+            followed: None,
         };
         let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &loop_, &drive, link_rates);
         let mut four_bar = Self {
@@ -331,7 +332,9 @@ impl FourBar {
     /// The four-bar that moves the flap most like `follow`'s station: pairs from a grid of
     /// [`FOLLOW_STEPS`]² points within [`FOLLOW_REACH`] of the flap chord about each of its
     /// pivots, nearest first; of the first [`FOLLOW_BUILDS`] whose whole mechanism builds
-    /// clear, the one whose deflection schedule is nearest; `None` when none builds clear.
+    /// clear, the one whose flap stays nearest `follow`'s motion (its largest miss at the
+    /// flap's 5 % and 95 % chord points over the deployment) where the caller gives it,
+    /// else the one whose deflection schedule is nearest; `None` when none builds clear.
     fn following(spec: &FourBarSpec, follow: &FollowStation, chord: f64, flap_chord: f64) -> Option<Self> {
         let around = |centre: Point2<f64>| -> Vec<Point2<f64>> {
             let step = 2.0 * FOLLOW_REACH * flap_chord / (FOLLOW_STEPS - 1) as f64;
@@ -362,6 +365,42 @@ impl FourBar {
             }
         }
         pairs.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let mismatch_of = |four_bar: &Self| -> f64 {
+            let range = four_bar.input_range();
+            match &follow.motion {
+                Some(motion) => {
+                    let points: Vec<Point2<f64>> = flapwright_mechanism::shared::follow::MISS_CHORD_FRACTIONS
+                        .iter()
+                        .filter_map(|&chord_fraction| {
+                            spec.outline
+                                .flap_point(flapwright_mechanism::shared::outline::FlapPoint {
+                                    chord_fraction,
+                                    depth_fraction: 0.0,
+                                })
+                        })
+                        .collect();
+                    motion.miss(&points, &|fraction| {
+                        four_bar
+                            .loop_pose(range.at_fraction(fraction))
+                            .ok()
+                            .map(|(_, pose)| pose.flap)
+                    })
+                }
+                None => {
+                    let samples = follow.deflections_rad.len().max(2) - 1;
+                    follow
+                        .deflections_rad
+                        .iter()
+                        .enumerate()
+                        .map(|(k, target)| {
+                            four_bar
+                                .deflection_at_input(range.at_fraction(k as f64 / samples as f64))
+                                .map_or(f64::INFINITY, |d| (d - target).abs())
+                        })
+                        .fold(0.0, f64::max)
+                }
+            }
+        };
         let mut search = FourBarSearch::default();
         let mut best: Option<(f64, Self)> = None;
         let mut built = 0;
@@ -382,23 +421,22 @@ impl FourBar {
                 continue;
             }
             built += 1;
-            let samples = follow.deflections_rad.len().max(2) - 1;
-            let range = four_bar.input_range();
-            let mismatch = follow
-                .deflections_rad
-                .iter()
-                .enumerate()
-                .map(|(k, target)| {
-                    four_bar
-                        .deflection_at_input(range.at_fraction(k as f64 / samples as f64))
-                        .map_or(f64::INFINITY, |d| (d - target).abs())
-                })
-                .fold(0.0, f64::max);
+            let mismatch = mismatch_of(&four_bar);
             if best.as_ref().is_none_or(|(m, _)| mismatch < *m) {
                 best = Some((mismatch, four_bar));
             }
         }
-        best.map(|(_, four_bar)| four_bar)
+        best.map(|(miss, mut four_bar)| {
+            four_bar.synthesis.followed =
+                follow
+                    .motion
+                    .as_ref()
+                    .map(|motion| flapwright_mechanism::shared::follow::FollowedStation {
+                        station: motion.station.clone(),
+                        miss_m: miss,
+                    });
+            four_bar
+        })
     }
 
     /// The designer's choices.

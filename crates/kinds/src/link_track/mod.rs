@@ -229,20 +229,11 @@ pub struct LinkTrackSynthesis {
     /// The station of the same flap whose motion this one followed, and the largest
     /// distance (m) of this station's flap from it over the deployment, at points near the
     /// flap's leading and trailing edges ([`flapwright_mechanism::shared::follow`]).
-    pub followed: Option<FollowedStation>,
+    pub followed: Option<flapwright_mechanism::shared::follow::FollowedStation>,
     /// The refined candidates no other beats on both the fairing's depth and the
     /// actuator's peak torque, shallowest first (at most eight; empty without load cases):
     /// the trade the weight `[design] actuator_load_weight` chose from.
     pub trade: Vec<LinkTrackCandidate>,
-}
-
-/// See [`LinkTrackSynthesis::followed`].
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct FollowedStation {
-    /// The station followed.
-    pub station: String,
-    /// The largest miss (m).
-    pub miss_m: f64,
 }
 
 /// One of the non-dominated candidates of the link-track's search.
@@ -456,10 +447,13 @@ impl LinkTrack {
             actuator: spec.rotary.actuator_for(travel),
             search: counts,
             trade,
-            followed: spec.follow.as_ref().map(|f| FollowedStation {
-                station: f.station.clone(),
-                miss_m: found.follow_miss,
-            }),
+            followed: spec
+                .follow
+                .as_ref()
+                .map(|f| flapwright_mechanism::shared::follow::FollowedStation {
+                    station: f.station.clone(),
+                    miss_m: found.follow_miss,
+                }),
         };
         // The flap's rate: certified on RATE_INTERVALS pieces of the deployment, or from the
         // transmission angle alone.

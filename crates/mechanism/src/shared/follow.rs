@@ -45,6 +45,15 @@ pub struct FollowedMotion {
     pub attachments: Vec<Point2<f64>>,
 }
 
+/// What a follower's record says of the motion it followed.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct FollowedStation {
+    /// The station followed.
+    pub station: String,
+    /// The largest miss from its motion (m, [`FollowedMotion::miss`]).
+    pub miss_m: f64,
+}
+
 impl FollowedMotion {
     /// The drive fraction of sample `k`.
     pub fn fraction(&self, k: usize) -> f64 {

@@ -369,16 +369,7 @@ impl FourBar {
             let range = four_bar.input_range();
             match &follow.motion {
                 Some(motion) => {
-                    let points: Vec<Point2<f64>> = flapwright_mechanism::shared::follow::MISS_CHORD_FRACTIONS
-                        .iter()
-                        .filter_map(|&chord_fraction| {
-                            spec.outline
-                                .flap_point(flapwright_mechanism::shared::outline::FlapPoint {
-                                    chord_fraction,
-                                    depth_fraction: 0.0,
-                                })
-                        })
-                        .collect();
+                    let points = flapwright_mechanism::shared::follow::miss_points(&spec.outline);
                     motion.miss(&points, &|fraction| {
                         four_bar
                             .loop_pose(range.at_fraction(fraction))

@@ -507,16 +507,7 @@ pub(super) fn check(
     // The followed station's motion, at the same drive fractions (the link's rotation over
     // its rotation to landing).
     let follow_miss = spec.follow.as_ref().map_or(0.0, |follow| {
-        let points: Vec<Point2<f64>> = flapwright_mechanism::shared::follow::MISS_CHORD_FRACTIONS
-            .iter()
-            .filter_map(|&chord_fraction| {
-                spec.outline
-                    .flap_point(flapwright_mechanism::shared::outline::FlapPoint {
-                        chord_fraction,
-                        depth_fraction: 0.0,
-                    })
-            })
-            .collect();
+        let points = flapwright_mechanism::shared::follow::miss_points(&spec.outline);
         follow.miss(&points, &|s| loop_.at(turns[1] * s).map(|pose| pose.flap))
     });
     let cost = cost + flapwright_mechanism::shared::follow::FOLLOW_WEIGHT * follow_miss / flap_chord;

@@ -30,6 +30,20 @@ pub const FOLLOW_WEIGHT: f64 = 200.0;
 /// measured at.
 pub const MISS_CHORD_FRACTIONS: [f64; 2] = [0.05, 0.95];
 
+/// The points a miss is measured at: the stowed flap section's chord line at
+/// [`MISS_CHORD_FRACTIONS`] (station frame, m); fewer where the outline has no flap.
+pub fn miss_points(outline: &crate::shared::outline::StationOutline) -> Vec<Point2<f64>> {
+    MISS_CHORD_FRACTIONS
+        .iter()
+        .filter_map(|&chord_fraction| {
+            outline.flap_point(crate::shared::outline::FlapPoint {
+                chord_fraction,
+                depth_fraction: 0.0,
+            })
+        })
+        .collect()
+}
+
 /// The flap poses a follower station should reach, in its own station frame.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FollowedMotion {

@@ -10,6 +10,7 @@ use crate::report::{Exports, PartReport, Report, SceneInfo, StageTiming, Station
 use crate::scene::{FileSource, Scene};
 use crate::sink::Sink;
 
+mod actuator_ranges;
 pub mod animation;
 pub mod dynamics;
 pub mod exports;
@@ -232,6 +233,18 @@ pub fn design_with_progress(
             }
             Ok(())
         })?;
+        for record in &records {
+            if let Some(report) = &record.kinematics {
+                let cases = flight_loads::load_cases(scene, record);
+                // The local flap chord, which the fairing's length is measured in.
+                let flap_chord_m = record
+                    .fairing
+                    .as_ref()
+                    .filter(|f| f.length_percent_flap_chord > 0.0)
+                    .map(|f| f.length_m / (0.01 * f.length_percent_flap_chord));
+                warnings.extend(actuator_ranges::warnings(&record.station, report, &cases, flap_chord_m));
+            }
+        }
     }
     let mut dynamics_runs = Vec::new();
     if let (true, Some(settings)) = (full, &scene.dynamics) {

@@ -6,9 +6,10 @@ mod common;
 const LIGHT_AIRCRAFT: &str = include_str!("../../../data/scenes/light-aircraft.toml");
 const TRANSPORT: &str = include_str!("../../../data/scenes/transport-flap.toml");
 
-/// The light aircraft's dropped hinges take hold of the arm near the hinge: strokes of
-/// 32-33 mm and leads under 1 mm (40 turns), which the warnings name with their figures;
-/// with 10 turns the lead is four times as coarse and no longer warned about.
+/// The light aircraft's dropped hinges take hold of the arm near the hinge (their flap
+/// chord leaves little room): strokes of 52 mm and leads of 1.3 mm (40 turns; 32 mm and
+/// 0.8 mm before the placements weighed a short stroke), which the warnings name with their
+/// figures; with 10 turns the lead is four times as coarse and no longer warned about.
 #[test]
 fn a_short_stroke_and_a_fine_lead_are_warned_about_with_their_figures() {
     let report = common::designed(LIGHT_AIRCRAFT);

@@ -22,8 +22,9 @@ use crate::pipeline::record::MechanismReport;
 pub const MAX_LINEAR_LOAD_PER_AIR_LOAD: f64 = 1.0;
 /// See the module's table (2.5 times Table 1's link-track).
 pub const MAX_ROTARY_TORQUE_PER_AIR_MOMENT: f64 = 0.25;
-/// See the module's table (half the shorter public stroke, m).
-pub const MIN_STROKE_M: f64 = 0.1;
+/// See the module's table (half the shorter public stroke, m); the weighed screw-jack
+/// placements take no shorter stroke without a penalty.
+pub const MIN_STROKE_M: f64 = flapwright_mechanism::shared::objective::MIN_STROKE_M;
 /// See the module's table (m).
 pub const MIN_SCREW_LEAD_M: f64 = 0.002;
 

@@ -56,6 +56,13 @@ pub struct LoadWeighing {
 /// over the cap.
 pub const CAP_EXCESS_WEIGHT: f64 = 2.0;
 
+/// The shortest stroke a weighed screw-jack placement takes without a penalty (m): flap
+/// ball-screw actuators of a business jet and a turboprop stroke 220 and 400 mm
+/// (rosner-tdl.de, "Landing flaps drive system"); this is half the shorter. A placement
+/// weighed by a light load alone took hold of a dropped hinge's arm at the hinge, with
+/// strokes of 32-44 mm and leads under 1.1 mm on the light aircraft.
+pub const MIN_STROKE_M: f64 = 0.1;
+
 impl LoadWeighing {
     /// The torque (N m, magnitude, the largest over the load cases) that the body turning
     /// the flap needs about its pivot at each rotation of `rotations` (rad, from 0 to

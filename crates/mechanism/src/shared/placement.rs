@@ -125,7 +125,8 @@ pub fn screw_jack_placement(
                         torque.map_or(f64::INFINITY, |t| t * rate)
                     })
                     .fold(0.0, f64::max);
-                w.cost(depth, flap_chord, peak, *reference)
+                let stroke = (drive.stroke_at(rotation_rad) - drive.stroke_at(0.0)).abs();
+                w.cost(depth, flap_chord, peak, *reference) + short_stroke_cost(stroke)
             }
             None => depth / flap_chord,
         };
@@ -182,6 +183,15 @@ pub fn screw_jack_placement(
     evaluate(placement)
         .and_then(|(pair, cost)| cost.map(|_| pair))
         .ok_or(fallback)
+}
+
+/// What a weighed placement adds for a stroke shorter than
+/// [`crate::shared::objective::MIN_STROKE_M`]: [`crate::shared::objective::CAP_EXCESS_WEIGHT`]
+/// per minimum stroke short of it (a stroke of half the minimum costs a flap chord of
+/// fairing depth), so that a light load does not let the screw take hold at the hinge.
+fn short_stroke_cost(stroke_m: f64) -> f64 {
+    use crate::shared::objective::{CAP_EXCESS_WEIGHT, MIN_STROKE_M};
+    CAP_EXCESS_WEIGHT * ((MIN_STROKE_M - stroke_m) / MIN_STROKE_M).max(0.0)
 }
 
 /// A screw jack's free choices: the attachment's fraction of the arm, the standoff (m) and

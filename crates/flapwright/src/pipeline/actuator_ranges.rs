@@ -46,12 +46,7 @@ pub fn air_load_n(cases: &[LoadCase]) -> Option<f64> {
 /// load cases and the local flap chord (m, where known).
 pub fn warnings(station: &str, report: &MechanismReport, cases: &[LoadCase], flap_chord_m: Option<f64>) -> Vec<String> {
     let mut found = Vec::new();
-    let peak = report
-        .load_cases
-        .iter()
-        .flat_map(|case| &case.samples)
-        .map(|sample| sample.actuator_load.abs())
-        .fold(0.0, f64::max);
+    let peak = report.peak_actuator_load();
     let air = air_load_n(cases);
     match &report.actuator {
         Actuator::ScrewJack { screw, .. } => {
@@ -95,4 +90,43 @@ pub fn warnings(station: &str, report: &MechanismReport, cases: &[LoadCase], fla
         }
     }
     found
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use flapwright_mechanism::shared::load_case::{ExternalMoment, FlapNormalForce};
+
+    fn flight(rows: Vec<(f64, f64)>, newtons_per_coefficient: f64) -> LoadCase {
+        LoadCase {
+            name: "placard".into(),
+            external_moment: ExternalMoment::Constant(0.0),
+            include_inertia: false,
+            flap_normal_force: Some(FlapNormalForce {
+                coefficients: rows,
+                newtons_per_coefficient,
+                at_stowed_m: nalgebra::Point2::new(-0.4, 0.0),
+                normal_stowed: nalgebra::Vector2::new(0.0, 1.0),
+            }),
+            load_factor: 2.0,
+        }
+    }
+
+    /// `transport-flap`'s placard case at `ib-inner` by hand: q = 0.5 x 1.225 x 87² =
+    /// 4,636 Pa, n = 2, S = 7.51 m² (its share), C_N 1.3 at 35 deg: 90.5 kN
+    /// (`docs/transport-flap-figures.md`). The largest C_N of the table counts, whatever
+    /// its row; a moment case has none.
+    #[test]
+    fn the_air_load_is_the_largest_normal_force_c_n_q_n_s() {
+        let q = 0.5 * 1.225 * 87.0_f64.powi(2);
+        let per_coefficient = q * 2.0 * 7.51;
+        let rows = vec![(0.0, 0.3), (15f64.to_radians(), 0.8), (35f64.to_radians(), 1.3)];
+        let air = air_load_n(&[flight(rows, per_coefficient)]).expect("a flight case");
+        assert!((air - 90.5e3).abs() < 0.05e3, "{air}");
+        let moment = LoadCase {
+            flap_normal_force: None,
+            ..flight(Vec::new(), 0.0)
+        };
+        assert_eq!(air_load_n(&[moment]), None);
+    }
 }

@@ -77,6 +77,24 @@ pub struct MechanismReport {
     pub flap_load_share: Option<crate::pipeline::record::FlapLoadShare>,
 }
 
+impl MechanismReport {
+    /// The largest |actuator load| (N, or N m for a rotary actuator) over every load case's
+    /// samples; NaN where a sample's is, so that a comparison with it fails.
+    pub fn peak_actuator_load(&self) -> f64 {
+        self.load_cases
+            .iter()
+            .flat_map(|case| &case.samples)
+            .map(|sample| sample.actuator_load.abs())
+            .fold(0.0, |peak: f64, load| {
+                if peak.is_nan() || load.is_nan() {
+                    f64::NAN
+                } else {
+                    peak.max(load)
+                }
+            })
+    }
+}
+
 /// Each flap carried by two or more placed stations, with those stations' records, in the
 /// order the flaps first appear.
 pub fn flaps_on_several_stations(records: &[StationRecord]) -> Vec<(&str, Vec<&StationRecord>)> {

@@ -24,24 +24,13 @@ pub fn designed(text: &str) -> Report {
 /// where a sample's is (so that a test comparing it fails).
 #[allow(dead_code)] // each test file compiles this module; not every one compares loads
 pub fn peak_actuator_load(report: &Report, station: &str) -> f64 {
-    let station = report
+    report
         .stations
         .iter()
         .find(|s| s.name == station)
-        .unwrap_or_else(|| panic!("station {station}"));
-    station
+        .unwrap_or_else(|| panic!("station {station}"))
         .mechanism
         .as_ref()
         .expect("a mechanism")
-        .load_cases
-        .iter()
-        .flat_map(|case| &case.samples)
-        .map(|sample| sample.actuator_load.abs())
-        .fold(0.0, |peak: f64, load| {
-            if peak.is_nan() || load.is_nan() {
-                f64::NAN
-            } else {
-                peak.max(load)
-            }
-        })
+        .peak_actuator_load()
 }

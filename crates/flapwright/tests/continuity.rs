@@ -1,19 +1,23 @@
-//! Issue 37's continuity at reduced resolution, for the kind that meets it: the transport
-//! scene with a dropped hinge at every station, both flaps' landing deflection and landing
-//! gap and `ob-inner`'s offset each stepped once either way (0.2 deg, 0.1 %c, 0.02 m: half the
-//! issue's resolution, as `data/validation/continuity/sweep.py`, whose table in its README
-//! covers the whole range and the other kinds). Every station's peak actuator load and
-//! mechanism mass change by at most 1.5 x between neighbouring steps, and every station
-//! clears. The link-track and hooked-track do not meet the bound yet, nor the four-bar's mass (their
-//! searches choose between basins whose figures differ by 2-7 x: `docs/status.md`'s table).
+//! Issue 37's continuity at reduced resolution, for the kinds that meet it: the transport
+//! scene with a dropped hinge (or a link-track) at every station, both flaps' landing
+//! deflection and landing gap and `ob-inner`'s offset each stepped once either way (0.2 deg,
+//! 0.1 %c, 0.02 m: half the issue's resolution, as `data/validation/continuity/sweep.py`,
+//! whose table in its README covers the whole range and the other kinds). Every station's
+//! peak actuator load and mechanism mass change by at most 1.5 x between neighbouring
+//! steps, or the report states a change of the mechanism's arrangement between them
+//! (`details.synthesis.topology`), and every station clears. The hooked-track and the
+//! four-bar's mass do not meet the bound yet (`docs/status.md`'s table).
 
 mod common;
 
 const TRANSPORT: &str = include_str!("../../../data/scenes/transport-flap.toml");
 
-/// Per station: name, peak actuator load (N) over the load cases, mechanism mass (kg);
-/// and whether every station clears.
-type Figures = (Vec<(String, f64, f64)>, bool);
+/// One station's figures: name, peak actuator load (N) over the load cases, mechanism
+/// mass (kg) and the arrangement its synthesis states (`null` where the kind states none).
+type StationFigures = (String, f64, f64, serde_json::Value);
+
+/// Per station its figures; and whether every station clears.
+type Figures = (Vec<StationFigures>, bool);
 
 fn figures(text: &str) -> Figures {
     let report = common::designed(text);
@@ -22,10 +26,12 @@ fn figures(text: &str) -> Figures {
         .stations
         .iter()
         .map(|station| {
+            let synthesis = &station.mechanism.as_ref().expect("a mechanism").details["synthesis"];
             (
                 station.name.clone(),
                 common::peak_actuator_load(&report, &station.name),
                 sizing.masses.station_kg(&station.name),
+                synthesis["topology"].clone(),
             )
         })
         .collect();
@@ -33,14 +39,31 @@ fn figures(text: &str) -> Figures {
     (stations, clears)
 }
 
-fn variant(replace: &str, with: &str) -> String {
-    let base = TRANSPORT.replace("kind = \"four-bar\"", "kind = \"dropped-hinge\"");
+/// The transport scene with `kind` at every station and `replace` replaced `with`.
+fn variant(kind: &str, replace: &str, with: &str) -> String {
+    let mut base = TRANSPORT.to_string();
+    for other in ["four-bar", "dropped-hinge"] {
+        base = base.replace(&format!("kind = \"{other}\""), &format!("kind = \"{kind}\""));
+    }
     assert!(base.contains(replace), "the transport scene has {replace}");
     base.replace(replace, with)
 }
 
 #[test]
 fn dropped_hinge_loads_and_masses_change_smoothly_between_neighbouring_inputs() {
+    changes_smoothly("dropped-hinge");
+}
+
+/// The link-track (issue 37): its torque weighed at `rotary_actuator_load_weight` 1 and
+/// its struts placed clear chose, sweeping the landing gap 1.5-2.5 %c by 0.05, between
+/// links of one arrangement whose torques differed by up to 2.3x at the weight 0.2; now
+/// within 1.33x, or a stated change.
+#[test]
+fn link_track_loads_and_masses_change_smoothly_or_state_the_change() {
+    changes_smoothly("link-track");
+}
+
+fn changes_smoothly(kind: &str) {
     use rayon::prelude::*;
     let sweeps: [(&str, [&str; 3]); 3] = [
         (
@@ -67,7 +90,7 @@ fn dropped_hinge_loads_and_masses_change_smoothly_between_neighbouring_inputs() 
     let texts: Vec<(usize, String)> = sweeps
         .iter()
         .enumerate()
-        .flat_map(|(k, (replace, steps))| steps.iter().map(move |with| (k, variant(replace, with))))
+        .flat_map(|(k, (replace, steps))| steps.iter().map(move |with| (k, variant(kind, replace, with))))
         .collect();
     let designed: Vec<(usize, Figures)> = texts.par_iter().map(|(k, text)| (*k, figures(text))).collect();
     for (k, (replace, steps)) in sweeps.iter().enumerate() {
@@ -79,21 +102,23 @@ fn dropped_hinge_loads_and_masses_change_smoothly_between_neighbouring_inputs() 
             for (a, b) in pair[0].0.iter().zip(&pair[1].0) {
                 assert_eq!(a.0, b.0);
                 let ratio = |x: f64, y: f64| x.max(y) / x.min(y);
-                for (name, load, mass) in [a, b] {
+                for (name, load, mass, _) in [a, b] {
                     assert!(
                         load.is_finite() && *load > 0.0 && mass.is_finite() && *mass > 0.0,
                         "{name}: load {load} N, mass {mass} kg"
                     );
                 }
                 let (load, mass) = (ratio(a.1, b.1), ratio(a.2, b.2));
+                let stated = a.3 != b.3;
                 assert!(
-                    load <= 1.5 && mass <= 1.5,
-                    "{} over {replace}: load {:.1} -> {:.1} kN (x{load:.2}), mass {:.1} -> {:.1} kg (x{mass:.2})",
+                    (load <= 1.5 && mass <= 1.5) || stated,
+                    "{kind} {} over {replace}: load {:.1} -> {:.1} kN (x{load:.2}), mass {:.1} -> {:.1} kg (x{mass:.2}), arrangement {} both",
                     a.0,
                     a.1 / 1e3,
                     b.1 / 1e3,
                     a.2,
-                    b.2
+                    b.2,
+                    a.3
                 );
             }
         }

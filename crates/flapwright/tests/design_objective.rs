@@ -1,5 +1,6 @@
-//! `[design] actuator_load_weight` (issue 37): the searches weigh the actuator's load under
-//! the station's load cases against the fairing's depth; 0 gives back the shallowest.
+//! `[design] actuator_load_weight` and `rotary_actuator_load_weight` (issue 37): the
+//! searches weigh the actuator's load under the station's load cases against the fairing's
+//! depth; 0 gives back the shallowest.
 
 mod common;
 
@@ -35,7 +36,7 @@ fn ob_inner_link(text: &str) -> (f64, f64, f64) {
 #[test]
 fn weighed_by_its_load_the_link_turns_further_than_the_shallowest_link() {
     let (shallowest_turn, shallowest_depth, shallowest_peak) =
-        ob_inner_link(&link_track_at_ob_inner("[design]\nactuator_load_weight = 0.0\n"));
+        ob_inner_link(&link_track_at_ob_inner("[design]\nrotary_actuator_load_weight = 0.0\n"));
     let (weighed_turn, weighed_depth, weighed_peak) = ob_inner_link(&link_track_at_ob_inner(""));
     // The shallowest link turns less than 20 deg to the flap's 35 and needs more than
     // 150 kN m (issue 37: 212 kN m in the study with the flap on two stations); 003
@@ -61,18 +62,16 @@ fn weighed_by_its_load_the_link_turns_further_than_the_shallowest_link() {
 
 #[test]
 fn a_load_weight_out_of_range_is_refused_by_key_and_line() {
-    let text = link_track_at_ob_inner("[design]\nactuator_load_weight = 11.0\n");
-    let error = Scene::from_toml(&text, &NoFiles)
-        .expect_err("11 is out of range")
-        .to_string();
-    assert!(error.contains("design.actuator_load_weight"), "{error}");
-    let line = text
-        .lines()
-        .position(|l| l.starts_with("actuator_load_weight"))
-        .unwrap()
-        + 1;
-    assert!(error.contains(&format!("{line}:")), "line {line}: {error}");
-    assert!(error.contains("10"), "the allowed range: {error}");
+    for key in ["actuator_load_weight", "rotary_actuator_load_weight"] {
+        let text = link_track_at_ob_inner(&format!("[design]\n{key} = 11.0\n"));
+        let error = Scene::from_toml(&text, &NoFiles)
+            .expect_err("11 is out of range")
+            .to_string();
+        assert!(error.contains(&format!("design.{key}")), "{error}");
+        let line = text.lines().position(|l| l.starts_with(key)).unwrap() + 1;
+        assert!(error.contains(&format!("{line}:")), "line {line}: {error}");
+        assert!(error.contains("10"), "the allowed range: {error}");
+    }
 }
 
 #[test]

@@ -1,6 +1,6 @@
 """Continuity sweep of issue 37 on transport-flap.toml (reduced resolution).
 
-Usage: python3 sweep.py BINARY WORKDIR [--full] [study options, e.g. --kinds hooked-track]
+Usage: python3 sweep.py BINARY WORKDIR [--full] [--only landing,gap,offset] [--design key=value ...] [study options, e.g. --kinds hooked-track]
 
 Runs `BINARY study` on variants of data/scenes/transport-flap.toml: both flaps' landing
 deflection 34-36 deg by 0.2 deg, both flaps' landing gap 1.5-2.5 %c by 0.1, and
@@ -14,8 +14,18 @@ topology, which the report does not explain.
 """
 import json, os, re, subprocess, sys
 
-BIN = sys.argv[1]; WORK = sys.argv[2]; EXTRA = [a for a in sys.argv[3:] if a != '--full']
-FULL = '--full' in sys.argv[3:]
+BIN = sys.argv[1]; WORK = sys.argv[2]
+ARGS = sys.argv[3:]
+FULL = '--full' in ARGS
+# `--only landing,gap` runs those sweeps alone (all three by default).
+ONLY = None
+if '--only' in ARGS:
+    i = ARGS.index('--only'); ONLY = ARGS[i + 1].split(','); ARGS = ARGS[:i] + ARGS[i + 2:]
+# `--design key=value` (repeatable) adds a `[design]` key to every variant.
+DESIGN = []
+while '--design' in ARGS:
+    i = ARGS.index('--design'); DESIGN.append(ARGS[i + 1]); ARGS = ARGS[:i] + ARGS[i + 2:]
+EXTRA = [a for a in ARGS if a != '--full']
 TAG = 'v'
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 os.makedirs(WORK, exist_ok=True)
@@ -28,6 +38,8 @@ def variant(kind, value):
         s = re.sub(r'landing_gap_percent = [0-9.]+', f'landing_gap_percent = {value:.3f}', s)
     elif kind == 'offset':
         s = s.replace('axis_offset_m = 1.5\n', f'axis_offset_m = {value:.3f}\n', 1)
+    if DESIGN:
+        s += '\n[design]\n' + ''.join(f'{d}\n' for d in DESIGN)
     return s
 def run(kind, value):
     path = os.path.join(WORK, f'{TAG}-{kind}-{value:.3f}')
@@ -47,6 +59,7 @@ STEPS = 21 if FULL else 11
 sweeps = {kind: [start + (stop - start) * i / (STEPS - 1) for i in range(STEPS)]
           for kind, start, stop in (('landing', 34.0, 36.0), ('gap', 1.5, 2.5), ('offset', 1.4, 1.6))}
 for kind, values in sweeps.items():
+    if ONLY and kind not in ONLY: continue
     rows = [run(kind, v) for v in values]
     keys = sorted(set().union(*[r.keys() for r in rows]))
     for key in keys:

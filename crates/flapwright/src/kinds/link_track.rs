@@ -96,7 +96,7 @@ impl KindScene for LinkTrackScene {
             hardware: flap.hardware,
             outline: flap.outline.clone(),
             design_loads: context.design_loads.clone(),
-            load_weight: context.actuator_load_weight,
+            load_weight: context.rotary_actuator_load_weight,
             follow: context.followed.clone(),
             trade_index: self.trade_index,
         };

@@ -58,6 +58,9 @@ pub struct SynthesisContext {
     /// `[design] actuator_load_weight`: the weight of the actuator's load against the
     /// fairing's depth in the searches.
     pub actuator_load_weight: f64,
+    /// `[design] rotary_actuator_load_weight`: the weight of a rotary actuator's torque
+    /// against the fairing's depth in the searches.
+    pub rotary_actuator_load_weight: f64,
     /// `[design] four_bar_actuator_load_cap`: the four-bar's screw load, in reference
     /// loads, above which its placement trades steeply.
     pub four_bar_actuator_load_cap: f64,

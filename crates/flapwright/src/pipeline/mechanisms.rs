@@ -84,6 +84,7 @@ pub fn synthesise_all(
                 .collect()
         };
         context.actuator_load_weight = scene.design.actuator_load_weight;
+        context.rotary_actuator_load_weight = scene.design.rotary_actuator_load_weight;
         context.four_bar_actuator_load_cap = scene.design.four_bar_actuator_load_cap;
         context.sized = sized.get(i).copied().unwrap_or_default();
         inputs.push((placed, context, flap_behind_wing, Vec::new()));

@@ -171,11 +171,19 @@ pub struct MaterialScene {
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct DesignScene {
-    /// Weight of the actuator's peak load, in reference loads (the largest force the load
-    /// cases put on the flap; times the flap chord for a rotary actuator), against the
-    /// fairing's depth in flap chords; 0: the shallowest mechanism whatever it carries.
+    /// Weight of a screw jack's peak load, in reference loads (the largest force the load
+    /// cases put on the flap), against the fairing's depth in flap chords (the dropped
+    /// hinge's and the four-bar's jack placement); 0: the shallowest placement whatever
+    /// its screw carries.
     #[serde(default = "default_actuator_load_weight")]
     pub actuator_load_weight: f64,
+    /// Weight of a rotary actuator's peak torque, in reference torques (that force times
+    /// the flap chord), against the fairing's depth in flap chords (the link-track's
+    /// search); 0: the shallowest link whatever it needs. Default 1: five times the screw
+    /// jacks' weight, since a rotary actuator carries about a fifth as many of its
+    /// reference loads (`003_...` Table 1: 0.09 against 0.29-0.55).
+    #[serde(default = "default_rotary_actuator_load_weight")]
+    pub rotary_actuator_load_weight: f64,
     /// The four-bar's screw load, in reference loads, above which its placement trades
     /// steeply (each reference load over it worth two flap chords of fairing depth): the
     /// shallowest clear placement whose screw carries at most this; default 1, the whole
@@ -192,10 +200,15 @@ fn default_actuator_load_weight() -> f64 {
     flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT
 }
 
+fn default_rotary_actuator_load_weight() -> f64 {
+    flapwright_mechanism::shared::objective::DEFAULT_ROTARY_LOAD_WEIGHT
+}
+
 impl Default for DesignScene {
     fn default() -> Self {
         Self {
             actuator_load_weight: default_actuator_load_weight(),
+            rotary_actuator_load_weight: default_rotary_actuator_load_weight(),
             four_bar_actuator_load_cap: default_four_bar_actuator_load_cap(),
         }
     }

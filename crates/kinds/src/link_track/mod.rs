@@ -144,6 +144,22 @@ pub struct LinkTrackTopology {
     pub sweep: LinkSweep,
     /// Where its fixed pivot stands.
     pub pivot: PivotPlace,
+    /// Which way the carriage runs along the track as the flap deploys.
+    pub track: TrackRun,
+}
+
+/// Which way a link-track's carriage runs along its track as the flap deploys (station
+/// frame, x to the nose): aft and up from a carriage near the flap's middle, or forward and
+/// down from one near its nose, whose track and strut are longer (on `transport-flap`'s
+/// `ob-outer`, from a landing gap of 1.60 to 1.65 %c: the track's strut 4.6 -> 19 kg for
+/// the same torque).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum TrackRun {
+    /// Towards -x: aft.
+    Aft,
+    /// Towards +x: forward.
+    Forward,
 }
 
 /// Which way a link turns (station frame, +z out of the plane).
@@ -167,7 +183,7 @@ pub enum LinkSweep {
 }
 
 impl LinkTrackTopology {
-    fn of(landing_rotation_rad: f64, pivot: PivotPlace) -> Self {
+    fn of(landing_rotation_rad: f64, pivot: PivotPlace, track_direction: Vector2<f64>) -> Self {
         Self {
             turning: if landing_rotation_rad >= 0.0 {
                 TurningSense::CounterClockwise
@@ -180,6 +196,11 @@ impl LinkTrackTopology {
                 LinkSweep::WithinQuarterTurn
             },
             pivot,
+            track: if track_direction.x > 0.0 {
+                TrackRun::Forward
+            } else {
+                TrackRun::Aft
+            },
         }
     }
 }
@@ -293,6 +314,55 @@ fn failure(defect: SynthesisDefect, detail: String) -> Error {
     }
 }
 
+/// Where a link-track's two struts meet the wing's lower skin: from the link's fixed pivot
+/// and from the track's forward end, each kept clear of the structure and of the flap at
+/// the sampled poses (`shared::placement::strut_top`); `None` where no top clears.
+struct StrutPlacement {
+    tops: [Option<Point2<f64>>; 2],
+    /// The track's forward and aft ends, a nut's radius beyond the carriage's travel.
+    track_ends: [Point2<f64>; 2],
+}
+
+impl StrutPlacement {
+    fn of(spec: &LinkTrackSpec, found: &search::Found) -> Self {
+        let loop_ = &found.loop_;
+        let travel = found.turns[1];
+        let samples = flapwright_mechanism::shared::placement::PLACEMENT_SAMPLES;
+        let flap_poses: Vec<Isometry2<f64>> = (0..=samples)
+            .filter_map(|k| loop_.at(travel * k as f64 / samples as f64).map(|p| p.flap))
+            .collect();
+        let landing_c = loop_.c + loop_.d.into_inner() * loop_.at(travel).map_or(0.0, |p| p.travel);
+        let extra = spec.hardware.nut_radius_m;
+        let track_ends = [
+            loop_.c - loop_.d.into_inner() * extra,
+            landing_c + loop_.d.into_inner() * extra,
+        ];
+        let ahead = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
+        let margin = spec.hardware.link_radius_m;
+        let strut = |from: Point2<f64>, avoid| {
+            flapwright_mechanism::shared::placement::strut_top(
+                &spec.outline,
+                from,
+                &ahead,
+                margin,
+                margin,
+                &flap_poses,
+                avoid,
+            )
+        };
+        let first = strut(loop_.o, None);
+        let second = strut(track_ends[0], first);
+        Self {
+            tops: [first, second],
+            track_ends,
+        }
+    }
+
+    fn clear(&self) -> bool {
+        self.tops.iter().all(Option::is_some)
+    }
+}
+
 impl LinkTrack {
     /// Synthesises the link and the track through the three precision positions. Errors
     /// ([`Error::Synthesis`]): no feasible pair, with the dominant defect and the counts;
@@ -332,13 +402,29 @@ impl LinkTrack {
                 }
             }
         }
-        let Some((found, trade)) = search::refine_best(&spec, weighing.as_ref(), feasible, flap_chord) else {
+        let refined = search::refine_best(&spec, weighing.as_ref(), feasible, flap_chord);
+        if refined.is_empty() {
             return Err(match (last_failure, counts.pairs) {
                 (Some((defect, detail)), 1) => failure(defect, detail),
                 _ => failure(dominant(&counts), describe(&counts)),
             });
+        }
+        // The refined mechanisms whose struts place clear of the wing and the flap, or all
+        // of them where none does (the report then says no strut clears): at landing
+        // deflections of 35.6-36 deg the outboard flap's least costly link hung from a pivot
+        // in the cove, 0.4 m shallower, with no strut to the wing that clears.
+        let clear: Vec<search::Found> = refined
+            .iter()
+            .filter(|found| StrutPlacement::of(&spec, found).clear())
+            .copied()
+            .collect();
+        let buildable = if clear.is_empty() { refined } else { clear };
+        let found = buildable[0];
+        let trade = if weighing.is_some() {
+            search::non_dominated(buildable)
+        } else {
+            Vec::new()
         };
-        let trade = if weighing.is_some() { trade } else { Vec::new() };
         let found = match spec.trade_index {
             None => found,
             Some(index) => *trade.get(index).ok_or(Error::NoSuchTradeCandidate {
@@ -385,33 +471,10 @@ impl LinkTrack {
         } else {
             0.0
         };
-        let pose_at =
-            |k: usize| loop_.at(travel * k as f64 / flapwright_mechanism::shared::placement::PLACEMENT_SAMPLES as f64);
-        let flap_poses: Vec<Isometry2<f64>> = (0..=flapwright_mechanism::shared::placement::PLACEMENT_SAMPLES)
-            .filter_map(|k| pose_at(k).map(|p| p.flap))
-            .collect();
-        let landing_c = loop_.c + loop_.d.into_inner() * loop_.at(travel).map_or(0.0, |p| p.travel);
-        let extra = spec.hardware.nut_radius_m;
-        let track_ends = [
-            loop_.c - loop_.d.into_inner() * extra,
-            landing_c + loop_.d.into_inner() * extra,
-        ];
-        let ahead = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
-        let margin = spec.hardware.link_radius_m;
-        let strut = |from: Point2<f64>, avoid| {
-            flapwright_mechanism::shared::placement::strut_top(
-                &spec.outline,
-                from,
-                &ahead,
-                margin,
-                margin,
-                &flap_poses,
-                avoid,
-            )
-        };
-        let first = strut(loop_.o, None);
-        let second = strut(track_ends[0], first);
-        let placement_clear = first.is_some() && second.is_some();
+        let struts = StrutPlacement::of(&spec, &found);
+        let track_ends = struts.track_ends;
+        let [first, second] = struts.tops;
+        let placement_clear = struts.clear();
         let fallback = |p: Point2<f64>| {
             spec.outline
                 .wing_lower_point(p.x)
@@ -430,7 +493,7 @@ impl LinkTrack {
         let synthesis = LinkTrackSynthesis {
             link_pivot_m: loop_.o,
             link_pivot_place,
-            topology: LinkTrackTopology::of(found.turns[1], link_pivot_place),
+            topology: LinkTrackTopology::of(found.turns[1], link_pivot_place, loop_.d.into_inner()),
             link_flap_pivot_m: loop_.a,
             carriage_m: loop_.c,
             track_direction: loop_.d.into_inner(),
@@ -722,23 +785,24 @@ mod topology_tests {
 
     #[test]
     fn the_topology_names_the_links_sense_and_whether_it_turns_past_a_quarter_turn() {
-        let t = LinkTrackTopology::of(-2.0, PivotPlace::TrailingEdgeBay);
+        let t = LinkTrackTopology::of(-2.0, PivotPlace::TrailingEdgeBay, Vector2::new(-0.3, -0.9));
         assert_eq!(
-            (t.turning, t.sweep, t.pivot),
+            (t.turning, t.sweep, t.pivot, t.track),
             (
                 TurningSense::Clockwise,
                 LinkSweep::PastQuarterTurn,
-                PivotPlace::TrailingEdgeBay
+                PivotPlace::TrailingEdgeBay,
+                TrackRun::Aft
             )
         );
-        let t = LinkTrackTopology::of(0.7, PivotPlace::OutsideWing);
+        let t = LinkTrackTopology::of(0.7, PivotPlace::OutsideWing, Vector2::new(0.4, 0.9));
         assert_eq!(
-            (t.turning, t.sweep),
-            (TurningSense::CounterClockwise, LinkSweep::WithinQuarterTurn)
+            (t.turning, t.sweep, t.track),
+            (TurningSense::CounterClockwise, LinkSweep::WithinQuarterTurn, TrackRun::Forward)
         );
         assert_eq!(
             serde_json::to_value(t).unwrap(),
-            serde_json::json!({"turning": "counter-clockwise", "sweep": "within-quarter-turn", "pivot": "outside-wing"})
+            serde_json::json!({"turning": "counter-clockwise", "sweep": "within-quarter-turn", "pivot": "outside-wing", "track": "forward"})
         );
     }
 }

@@ -532,16 +532,16 @@ const REFINEMENTS: usize = 6;
 /// other (`flapwright_mechanism::shared::follow`), and the pair clears.
 const REFINED_STARTS: usize = 12;
 
-/// The least costly mechanism after refining the [`REFINED_STARTS`] least costly grid
-/// candidates that lie apart (pivots a tenth of the flap chord or track slopes 5 deg
-/// apart): the cost over the free choices has several basins, and the grid's best basin
-/// need not hold the best refined mechanism. `None` without a feasible candidate.
+/// The [`REFINED_STARTS`] least costly grid candidates that lie apart (pivots a tenth of
+/// the flap chord or track slopes 5 deg apart), each refined, least costly first: the cost
+/// over the free choices has several basins, and the grid's best basin need not hold the
+/// best refined mechanism. Empty without a feasible candidate.
 pub(super) fn refine_best(
     spec: &LinkTrackSpec,
     weighing: Option<&LoadWeighing>,
     mut feasible: Vec<Found>,
     flap_chord: f64,
-) -> Option<(Found, Vec<Found>)> {
+) -> Vec<Found> {
     feasible.sort_by(|a, b| a.cost.total_cmp(&b.cost));
     let mut starts: Vec<Found> = Vec::new();
     for found in feasible {
@@ -555,29 +555,32 @@ pub(super) fn refine_best(
             }
         }
     }
-    let refined: Vec<Found> = starts
+    let mut refined: Vec<Found> = starts
         .into_iter()
         .map(|start| refine(spec, weighing, start, flap_chord))
         .collect();
-    let best = *refined.iter().min_by(|a, b| a.cost.total_cmp(&b.cost))?;
-    Some((best, non_dominated(refined)))
+    refined.sort_by(|a, b| a.cost.total_cmp(&b.cost));
+    refined
 }
 
-/// The candidates no other beats on both depth and peak load, shallowest first, at most
-/// [`TRADE_CANDIDATES`]: the trade between the fairing and the actuator a user may pick
-/// from.
-fn non_dominated(candidates: Vec<Found>) -> Vec<Found> {
+/// The candidates no other beats on both depth and peak load, and the least costly one
+/// (`candidates` come least costly first; with a followed motion its cost also weighs the
+/// miss): the [`TRADE_CANDIDATES`] least costly of them, shallowest first. The trade
+/// between the fairing and the actuator a user may pick from, the chosen one always in it.
+pub(super) fn non_dominated(candidates: Vec<Found>) -> Vec<Found> {
     let dominates = |a: &Found, b: &Found| {
         a.depth <= b.depth && a.peak_load <= b.peak_load && (a.depth < b.depth || a.peak_load < b.peak_load)
     };
     let mut front: Vec<Found> = candidates
         .iter()
-        .filter(|c| !candidates.iter().any(|o| dominates(o, c)))
-        .copied()
+        .enumerate()
+        .filter(|&(k, c)| k == 0 || !candidates.iter().any(|o| dominates(o, c)))
+        .map(|(_, c)| *c)
         .collect();
-    front.sort_by(|a, b| a.depth.total_cmp(&b.depth));
+    front.sort_by(|a, b| a.cost.total_cmp(&b.cost));
     front.dedup_by(|a, b| (a.depth - b.depth).abs() < 1e-9 && (a.peak_load - b.peak_load).abs() < 1e-9);
     front.truncate(TRADE_CANDIDATES);
+    front.sort_by(|a, b| a.depth.total_cmp(&b.depth));
     front
 }
 

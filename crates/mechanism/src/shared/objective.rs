@@ -32,6 +32,16 @@ use crate::shared::load_case::LoadCase;
 /// depth in flap chords (see the module's docs).
 pub const DEFAULT_LOAD_WEIGHT: f64 = 0.2;
 
+/// Default weight of a rotary actuator's peak torque, in reference torques (the largest
+/// force times the flap chord), against the depth in flap chords: five times
+/// [`DEFAULT_LOAD_WEIGHT`], since a rotary actuator carries about a fifth as many of its
+/// reference loads as a screw jack does of its own (`003_...` Table 1 at `ob-inner`: the
+/// link-track's 12.1 kN m is 0.09 of 86 kN times the flap chord, the screw jacks carry
+/// 0.29-0.55 of 86 kN). At 0.2 the torque hardly counted: on `transport-flap`'s outboard
+/// flap the link-track's choice jumped between links turning 40 and 150 deg as the landing
+/// gap moved by 0.05 %c, its torque by up to 7.6x (`data/validation/continuity/`).
+pub const DEFAULT_ROTARY_LOAD_WEIGHT: f64 = 1.0;
+
 /// Relative step of the central differences of the flap's pose (of the body's rotation
 /// range): the truncation error is of the step squared, the rounding of 1e-16 over it.
 const DIFFERENCE_STEP: f64 = 1e-4;

@@ -82,6 +82,13 @@ impl Checker<'_> {
             false,
         );
         self.in_range(
+            "design.rotary_actuator_load_weight",
+            scene.design.rotary_actuator_load_weight,
+            0.0,
+            10.0,
+            false,
+        );
+        self.in_range(
             "design.four_bar_actuator_load_cap",
             scene.design.four_bar_actuator_load_cap,
             0.05,

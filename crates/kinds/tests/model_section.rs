@@ -173,5 +173,6 @@ pub fn hooked_track_spec() -> HookedTrackSpec {
         hardware: LinkHardware::for_flap_chord(0.8),
         outline,
         design_loads: vec![flapwright_mechanism::LoadCase::thesis_cruise()],
+        follow: None,
     }
 }

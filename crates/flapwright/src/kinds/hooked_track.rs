@@ -119,10 +119,17 @@ impl KindScene for HookedTrackScene {
             hardware: flap.hardware,
             outline: flap.outline.clone(),
             design_loads: context.design_loads.clone(),
+            follow: context.followed.clone(),
         };
         HookedTrack::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)
             .map_err(|e| format!("cannot be synthesised: {e}"))
+    }
+
+    /// The rail and the hook shape the flap's path between stowed and landing: the flap's
+    /// stations follow each other's motion.
+    fn follows_motion(&self) -> bool {
+        true
     }
 
     fn geometry_keys(&self) -> &'static str {

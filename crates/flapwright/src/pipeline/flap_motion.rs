@@ -36,6 +36,11 @@ pub fn fitted_flap_motion(
 /// Drive fractions (intervals) a followed motion is sampled at.
 pub const FOLLOWED_SAMPLES: usize = 24;
 
+/// A lead reaches its take-off setting where its flap's section passes within this
+/// fraction of the flap chord of the setting's (the kinds that take it as a precision
+/// position meet it to 1e-9 m).
+const TAKEOFF_REACHED: f64 = 1e-4;
+
 /// The flap poses, in the station frame of `follower`, of the rigid motion the station
 /// `lead` (synthesised first on `flap`, with its take-off `lead_takeoff`) gives the flap:
 /// what the follower's search stays near ([`flapwright_mechanism::shared::follow`]).
@@ -73,14 +78,36 @@ pub fn followed_motion(
         Some(lifted(&pose.flap))
     };
     // The corrections at the settings, as (rotation vector, translation).
-    let takeoff_fraction = range.fraction(mechanism.input_at_deflection(lead_takeoff.deflection_rad).ok()?);
+    let takeoff_input = mechanism.input_at_deflection(lead_takeoff.deflection_rad).ok()?;
+    let takeoff_fraction = range.fraction(takeoff_input);
+    // A lead that does not reach its take-off setting in its own plane (the hooked-track's
+    // take-off is not a precision position: it misses by 0.1-0.2 m on `transport-flap`) is
+    // followed as it moves, corrected towards the landing pose alone: corrected towards the
+    // setting, the followed motion was one no hooked-track can move, and the follower's
+    // search gave up 30 % of the flap chord of fairing depth trying.
+    let lead_points = flapwright_interference::fit_points(&lead_placed.polygons_of(|name| name == flap));
+    let (lowest_x, highest_x) = lead_points
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| (lo.min(p.x), hi.max(p.x)));
+    let reach = TAKEOFF_REACHED * (highest_x - lowest_x).max(0.0);
+    let meets_takeoff = mechanism.pose(takeoff_input).ok().is_some_and(|pose| {
+        lead_points
+            .iter()
+            .all(|p| (pose.flap * p - lead_takeoff.flap * p).norm() <= reach)
+    });
     let corrections = match lead_placed.setting_poses_ac {
         Some([takeoff, landing]) => {
             let at = |pose: Isometry3<f64>, fraction: f64| -> Option<(Vector3<f64>, Vector3<f64>)> {
                 let c = pose * planar_at(fraction)?.inverse();
                 Some((c.rotation.scaled_axis(), c.translation.vector))
             };
-            Some([at(takeoff, takeoff_fraction)?, at(landing, 1.0)?])
+            let landing = at(landing, 1.0)?;
+            let takeoff = if meets_takeoff {
+                at(takeoff, takeoff_fraction)?
+            } else {
+                (landing.0 * takeoff_fraction, landing.1 * takeoff_fraction)
+            };
+            Some([takeoff, landing])
         }
         None => None,
     };

@@ -87,6 +87,10 @@ pub struct HookedTrackSpec {
     /// module); empty: the rail and the hook on cantilevered struts.
     #[serde(skip)]
     pub design_loads: Vec<LoadCase>,
+    /// The motion of the flap's station synthesised first, which this one follows: the
+    /// search weighs its flap's miss from it (`flapwright_mechanism::shared::follow`).
+    #[serde(skip)]
+    pub follow: Option<flapwright_mechanism::shared::follow::FollowedMotion>,
 }
 
 /// The hooked-track's arrangement, the discrete choices its search spans: neighbouring
@@ -254,6 +258,10 @@ pub struct HookedTrackSynthesis {
     pub topology: HookedTrackTopology,
     /// What the search rejected.
     pub search: HookedTrackSearch,
+    /// The station of the same flap whose motion this one followed, and the largest miss
+    /// from it; `None` for the flap's first station.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub followed: Option<flapwright_mechanism::shared::follow::FollowedStation>,
 }
 
 /// A hooked-track synthesised for one station.
@@ -490,6 +498,13 @@ impl HookedTrack {
             truss,
             topology: HookedTrackTopology::of(d, rail_ends[0], rail.f, rail.g, found.mount),
             search: counts,
+            followed: spec
+                .follow
+                .as_ref()
+                .map(|f| flapwright_mechanism::shared::follow::FollowedStation {
+                    station: f.station.clone(),
+                    miss_m: found.follow_miss,
+                }),
         };
         let (bodies, joints) = bodies::bodies_and_joints(&spec, &synthesis, &rail, certified);
         Ok(Self {

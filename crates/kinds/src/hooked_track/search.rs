@@ -34,6 +34,7 @@ use super::clearance::{place_struts, Clearance, Struts};
 use super::rail::Rail;
 use super::{HookedTrackSearch, HookedTrackSpec};
 use flapwright_mechanism::shared::feasibility::{check_deployment, DeploymentRules, LoopSample};
+use flapwright_mechanism::shared::follow::FOLLOW_WEIGHT;
 use flapwright_mechanism::shared::outline::FlapPoint;
 use flapwright_mechanism::SynthesisDefect;
 
@@ -79,6 +80,8 @@ pub(super) struct Found {
     /// Largest distance at F and G between the flap at the take-off deflection and the
     /// take-off setting (m).
     pub(super) takeoff_miss: f64,
+    /// The largest miss from the followed station's motion (m), 0 without one.
+    pub(super) follow_miss: f64,
     /// Where the struts stand, clear of the flap.
     pub(super) struts: Struts,
 }
@@ -86,10 +89,20 @@ pub(super) struct Found {
 impl Found {
     /// What the search minimises: the fairing's depth plus the take-off miss, a metre of
     /// either as bad as a metre of the other (the lead-in is the one choice that moves
-    /// the take-off pose; F and G mostly set the depth).
+    /// the take-off pose; F and G mostly set the depth), plus the miss from a followed
+    /// station's motion at [`FOLLOW_WEIGHT`] (in flap chords against the depth in flap
+    /// chords, as the link-track's and the four-bar's searches weigh it).
     pub(super) fn cost(&self) -> f64 {
-        self.depth + self.takeoff_miss
+        self.depth + self.takeoff_miss + FOLLOW_WEIGHT * self.follow_miss
     }
+}
+
+/// The largest miss (m) of `rail`'s flap from the followed motion of `spec`, at the same
+/// fractions of the stroke; 0 without one.
+fn follow_miss(spec: &HookedTrackSpec, rail: &Rail, points: &[Point2<f64>]) -> f64 {
+    spec.follow.as_ref().map_or(0.0, |follow| {
+        follow.miss(points, &|fraction| rail.at(fraction * rail.stroke_m).map(|pose| pose.flap))
+    })
 }
 
 /// The first stroke of `rail` where the flap reaches `deflection_rad` (the flap holds its
@@ -142,6 +155,8 @@ pub(super) struct Candidates {
     forward: Vec<Attachment>,
     aft: Vec<Attachment>,
     leads: Vec<f64>,
+    /// Where a follower's miss from the followed motion is measured (stowed flap points).
+    miss_points: Vec<Point2<f64>>,
 }
 
 /// A bracket's pin (m) and the depth below the sections (m) it alone gives a rail.
@@ -152,8 +167,18 @@ impl Candidates {
         let hw = &spec.hardware;
         let landing = spec.landing.flap;
         let below = |p: Point2<f64>, radius: f64| spec.outline.depth_below(p).map_or(0.0, |depth| depth + radius);
+        // A follower also tries the followed station's carriage and roller where the same
+        // places of this flap section are: the same rail scaled to this section moves the flap
+        // nearly as the followed one does, and the grid may miss it.
+        let seeds = |given: Option<Point2<f64>>, which: usize| -> Vec<Point2<f64>> {
+            match (&spec.follow, given) {
+                (Some(follow), None) => follow.attachments.get(which).copied().into_iter().collect(),
+                _ => Vec::new(),
+            }
+        };
         let forward = attachments(spec, spec.forward_attachment, &FORWARD_FRACTIONS, &DEPTHS)
             .into_iter()
+            .chain(seeds(spec.forward_attachment, 0))
             .map(|f| {
                 let [start, end] = rail_ends_of(f, landing * f, hw.nut_radius_m);
                 (f, below(start, hw.link_radius_m).max(below(end, hw.link_radius_m)))
@@ -161,10 +186,21 @@ impl Candidates {
             .collect();
         let aft = attachments(spec, spec.aft_attachment, &AFT_FRACTIONS, &DEPTHS)
             .into_iter()
+            .chain(seeds(spec.aft_attachment, 1))
             .map(|g| (g, below(g, hw.nut_radius_m).max(below(landing * g, hw.nut_radius_m))))
             .collect();
         let leads = spec.lead_fraction.map_or(LEADS.to_vec(), |l| vec![l]);
-        Self { forward, aft, leads }
+        let miss_points = if spec.follow.is_some() {
+            flapwright_mechanism::shared::follow::miss_points(&spec.outline)
+        } else {
+            Vec::new()
+        };
+        Self {
+            forward,
+            aft,
+            leads,
+            miss_points,
+        }
     }
 
     pub(super) fn len(&self) -> usize {
@@ -187,6 +223,8 @@ pub(super) struct Prepared {
     rail: Rail,
     /// The take-off miss (m), part of the bound and of the cost.
     takeoff_miss: f64,
+    /// The miss from the followed motion (m), part of the bound and of the cost.
+    follow_miss: f64,
     /// The depth of the rail's ends and of the roller stowed and at landing below the
     /// sections (all part of [`Found::depth`]) plus the take-off miss: at most
     /// [`Found::cost`].
@@ -244,10 +282,12 @@ pub(super) fn prepare(
     // meets the exact one to 1e-6 of the span (its `reached` test): the bound gives that
     // much away, so that it stays at most the cost.
     let takeoff_miss = takeoff(spec, &rail).1;
+    let follow_miss = follow_miss(spec, &rail, &candidates.miss_points);
     Ok(Prepared {
         rail,
         takeoff_miss,
-        lower_bound: depth + takeoff_miss - LANDING_MATCH * rail.span,
+        follow_miss,
+        lower_bound: depth + takeoff_miss + FOLLOW_WEIGHT * follow_miss - LANDING_MATCH * rail.span,
     })
 }
 
@@ -478,6 +518,7 @@ pub(super) fn check(
         min_transmission,
         depth,
         takeoff_miss: prepared.takeoff_miss,
+        follow_miss: prepared.follow_miss,
     };
     // The branch and bound's premise, checked on every rail of every debug run (the
     // tests'): the bound never exceeds the cost.

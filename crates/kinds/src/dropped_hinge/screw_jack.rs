@@ -8,7 +8,7 @@ use serde::Serialize;
 use super::{failure, mm, DroppedHingeSpec, TRANSMISSION_SAMPLES};
 use flapwright_mechanism::shared::geometry::turn_about;
 use flapwright_mechanism::shared::placement::{place_screw_jack, JackSize, ScrewJackChoice};
-use flapwright_mechanism::shared::rocker_drive::RockerDrive;
+use flapwright_mechanism::shared::rocker_drive::{JackInstallation, RockerDrive};
 use flapwright_mechanism::shared::screw_jack::{ScrewDrive, ScrewJack};
 use flapwright_mechanism::{Result, SynthesisDefect};
 
@@ -26,6 +26,8 @@ pub struct DroppedHingeScrewJack {
     pub stroke_m: [f64; 2],
     /// Smallest transmission angle of the drive over the deployment (rad, sampled).
     pub min_transmission_angle_rad: f64,
+    /// Its end pressure angles and its mount's turn from `004_...`'s installation.
+    pub installation: JackInstallation,
     /// The screw chosen from the drive: lead, radius, friction.
     pub screw: ScrewJack,
     /// Screw length (m): the longest stroke and the nut.
@@ -90,6 +92,7 @@ pub(super) fn screw_jack_layout(
         actuator_attachment_m: attachment,
         stroke_m,
         min_transmission_angle_rad: min_transmission,
+        installation: JackInstallation::of(&drive, turn),
         screw,
         screw_length_m,
         nominal_speed_mps,

@@ -178,6 +178,8 @@ pub struct FourBarSynthesis {
     /// Smallest transmission angle of the screw on the crank over the deployment (rad,
     /// sampled): the deployment samples report the smaller of the two.
     pub drive_min_transmission_angle_rad: f64,
+    /// The screw's end pressure angles and its mount's turn from `004_...`'s installation.
+    pub jack_installation: flapwright_mechanism::shared::rocker_drive::JackInstallation,
     /// A certified lower bound on it between samples (rad).
     pub certified_min_transmission_angle_rad: f64,
     /// Depth of the whole mechanism (every solid, over the deployment) below the stowed

@@ -299,6 +299,7 @@ impl FourBar {
             crank_rotation_rad: turns,
             min_transmission_angle_rad: min_transmission,
             drive_min_transmission_angle_rad: drive_min,
+            jack_installation: flapwright_mechanism::shared::rocker_drive::JackInstallation::of(&drive, travel),
             certified_min_transmission_angle_rad: certified,
             depth_below_section_m: 0.0,
             precision_miss_m: miss,

@@ -139,7 +139,8 @@ pub fn screw_jack_placement(
     // up to 1.4 rad (80 deg) either way, where the transmission rule allows.
     for &fraction in fractions {
         for &standoff in standoffs {
-            for turn in TURNS {
+            let equal = equal_pressure_turn(pivot, on_arm(fraction), rotation_rad, standoff);
+            for turn in TURNS.into_iter().chain(equal) {
                 let placement = (fraction, standoff, turn);
                 let Some((pair, cost)) = evaluate(placement) else {
                     continue;
@@ -247,6 +248,41 @@ fn refine(
         steps = steps.map(|step| 0.5 * step);
     }
     (here, cost)
+}
+
+/// The mount's turn about the attachment's mid-travel position, from the square mount at
+/// `standoff_m` ([`mount_square_at_mid_travel`]), that makes the two end pressure angles
+/// equal: `004_...`'s exact variant (`LandingGearSpec::synthesise_equal_pressure_angles`),
+/// where the square mount is its closed form, equal only as the mount recedes. Bisection
+/// within [`MAX_TURN`] either way; `None` where the difference keeps its sign there or a
+/// drive cannot be built.
+fn equal_pressure_turn(pivot: Point2<f64>, attachment: Point2<f64>, rotation_rad: f64, standoff_m: f64) -> Option<f64> {
+    let square = mount_square_at_mid_travel(pivot, attachment, rotation_rad, standoff_m);
+    let middle = turn_about(pivot, 0.5 * rotation_rad) * attachment;
+    let difference = |turn: f64| -> Option<f64> {
+        let drive = RockerDrive::try_new(pivot, turn_about(middle, turn) * square, attachment).ok()?;
+        let [start, end] = drive.end_pressure_angles_rad(rotation_rad);
+        let difference = start - end;
+        difference.is_finite().then_some(difference)
+    };
+    // A bracket: the first neighbours of 16 turns across the range whose differences have
+    // opposite signs (either end may not build: a toggle within the rotation).
+    let turns: Vec<f64> = (0..16).map(|k| -MAX_TURN + 2.0 * MAX_TURN * k as f64 / 15.0).collect();
+    let values: Vec<Option<f64>> = turns.iter().map(|&turn| difference(turn)).collect();
+    let k = (0..15).find(|&k| matches!((values[k], values[k + 1]), (Some(a), Some(b)) if a.signum() != b.signum()))?;
+    let (mut low, mut high) = (turns[k], turns[k + 1]);
+    let mut at_low = values[k]?;
+    // 40 halvings: 0.19 rad to 2e-13 rad.
+    for _ in 0..40 {
+        let mid = 0.5 * (low + high);
+        let at_mid = difference(mid)?;
+        if at_mid.signum() == at_low.signum() {
+            (low, at_low) = (mid, at_mid);
+        } else {
+            high = mid;
+        }
+    }
+    Some(0.5 * (low + high))
 }
 
 /// The first attachment fraction a screw-jack search tries: the arm's middle.

@@ -121,6 +121,17 @@ impl RockerDrive {
             .fold(f64::INFINITY, f64::min)
     }
 
+    /// The pressure angles at the two ends of a rotation from 0 to `rotation_rad` (rad):
+    /// between the screw's force and the attachment's velocity, π/2 less the transmission
+    /// angle (`004_...`'s figure of merit: small and equal at both ends). NaN at an end the
+    /// drive cannot reach.
+    pub fn end_pressure_angles_rad(&self, rotation_rad: f64) -> [f64; 2] {
+        [0.0, rotation_rad].map(|psi| {
+            self.state(self.stroke_at(psi))
+                .map_or(f64::NAN, |state| std::f64::consts::FRAC_PI_2 - state.transmission_angle_rad)
+        })
+    }
+
     /// True when the body turns from 0 to `rotation_rad` without the screw passing through
     /// the pivot's line (a toggle): γ stays inside (0, π) with `margin_rad` to spare.
     pub fn clear_of_toggles(&self, rotation_rad: f64, margin_rad: f64) -> bool {
@@ -296,6 +307,12 @@ impl RockerDrive {
 /// behind the attachment's mid-travel position, along the line of its motion there, so the
 /// screw is square to the arm at mid-travel (transmission angle π/2), the transmission angle
 /// at both ends is about π/2 - |rotation|/2, and the stroke grows as the body turns.
+///
+/// This is `004_...`'s closed-form installation (Yastrebov & Polyushkova, eqs. 4-5: the end
+/// positions symmetric, ±θ/2, about the position where the rod is tangent to the crank's
+/// circle), with the crank the pivot-attachment arm and the pivot distance the
+/// pivot-mount one: test `the_square_mount_is_004s_installation` checks the end pressure
+/// angles against [`crate::landing_gear::LandingGearSpec::synthesise`].
 pub fn mount_square_at_mid_travel(
     pivot: Point2<f64>,
     attachment: Point2<f64>,
@@ -309,9 +326,91 @@ pub fn mount_square_at_mid_travel(
     middle - motion * standoff_m
 }
 
+/// How a screw jack stands against `004_...`'s installation: what the report says of a
+/// placed jack (issue 37, "actuators placed by rule").
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct JackInstallation {
+    /// The pressure angles at stowed and at the end of the rotation (rad,
+    /// [`RockerDrive::end_pressure_angles_rad`]): `004_...` makes them small and equal.
+    pub end_pressure_angles_rad: [f64; 2],
+    /// The mount's turn from `004_...`'s installation at the same distance
+    /// ([`mount_turn_from_square`], rad): 0 where the placement kept it.
+    pub mount_turn_from_004_rad: f64,
+}
+
+impl JackInstallation {
+    /// The installation of `drive` turning its body by `rotation_rad`.
+    pub fn of(drive: &RockerDrive, rotation_rad: f64) -> Self {
+        Self {
+            end_pressure_angles_rad: drive.end_pressure_angles_rad(rotation_rad),
+            mount_turn_from_004_rad: mount_turn_from_square(drive.pivot, drive.attachment, rotation_rad, drive.mount),
+        }
+    }
+}
+
+/// How far `mount` stands turned about the attachment's mid-travel position from the mount
+/// [`mount_square_at_mid_travel`] places at the same distance (rad, counter-clockwise): 0
+/// where a placement kept `004_...`'s installation, the turn a placement search gave it to
+/// keep the jack clear of the wing or to lower its load otherwise.
+pub fn mount_turn_from_square(
+    pivot: Point2<f64>,
+    attachment: Point2<f64>,
+    rotation_rad: f64,
+    mount: Point2<f64>,
+) -> f64 {
+    let middle = turn_about(pivot, 0.5 * rotation_rad) * attachment;
+    let square = mount_square_at_mid_travel(pivot, attachment, rotation_rad, 1.0) - middle;
+    let actual = mount - middle;
+    square.perp(&actual).atan2(square.dot(&actual))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The mount square to the arm at mid-travel is `004_...`'s installation: its end
+    /// pressure angles are those of the landing-gear method's closed form
+    /// ([`crate::landing_gear::LandingGearSpec::synthesise`]) for the same crank (pivot to attachment),
+    /// pivot distance (pivot to mount) and rotation, either sense; and its turn from itself
+    /// is zero, a turned mount's the turn.
+    #[test]
+    fn the_square_mount_is_004s_installation() {
+        let (pivot, attachment) = (Point2::new(0.1, -0.2), Point2::new(-0.25, -0.1));
+        let (mut compared, mut checked_refusals) = (0, 0);
+        for rotation in [0.6_f64, -0.6, 1.1, -1.4] {
+            for standoff in [0.3, 0.8, 2.0] {
+                let mount = mount_square_at_mid_travel(pivot, attachment, rotation, standoff);
+                let drive = RockerDrive::try_new(pivot, mount, attachment).unwrap();
+                let ours = drive.end_pressure_angles_rad(rotation);
+                let gear = crate::landing_gear::LandingGearSpec {
+                    pivot_distance_m: (mount - pivot).norm(),
+                    crank_length_m: (attachment - pivot).norm(),
+                    rotation_rad: rotation.abs(),
+                    stroke_time_s: 1.0,
+                }
+                .synthesise();
+                // 004 refuses an end beyond a toggle (a short standoff for a large turn):
+                // the drive then passes through one too.
+                let Ok(gear) = gear else {
+                    assert!(!drive.clear_of_toggles(rotation, 0.0), "{rotation} {standoff}");
+                    checked_refusals += 1;
+                    continue;
+                };
+                compared += 1;
+                let theirs = [gear.start_pressure_angle_rad, gear.end_pressure_angle_rad];
+                for (a, b) in ours.iter().zip(theirs) {
+                    assert!((a.abs() - b).abs() < 1e-12, "{rotation} {standoff}: {ours:?} against {theirs:?}");
+                }
+                let stroke = (drive.stroke_at(rotation) - drive.stroke_at(0.0)).abs();
+                assert!((stroke - gear.stroke_m.abs()).abs() < 1e-12, "{stroke} against {}", gear.stroke_m);
+                assert!(mount_turn_from_square(pivot, attachment, rotation, mount).abs() < 1e-12);
+                let middle = turn_about(pivot, 0.5 * rotation) * attachment;
+                let turned = turn_about(middle, 0.3) * mount;
+                assert!((mount_turn_from_square(pivot, attachment, rotation, turned) - 0.3).abs() < 1e-12);
+            }
+        }
+        assert!(compared >= 10 && checked_refusals >= 1, "{compared} compared, {checked_refusals} refused");
+    }
 
     /// The rotation a stroke gives round-trips through `stroke_at`, either sense, and the
     /// rate matches a central difference.

@@ -435,6 +435,28 @@ pub fn turning_flap(pivot: Point2<f64>, rotation_rad: f64) -> Vec<Isometry2<f64>
 mod tests {
     use super::*;
 
+    /// `004_...`'s exact variant: the turned mount's end pressure angles are equal, and
+    /// the turn shrinks as the mount recedes (the square mount, the closed form, is equal
+    /// only in the limit), either sense of rotation.
+    #[test]
+    fn the_equal_pressure_turn_equalises_the_end_pressure_angles() {
+        let (pivot, attachment) = (Point2::new(0.0, 0.0), Point2::new(-0.3, -0.1));
+        for rotation in [0.6_f64, -0.6, 1.2] {
+            let mut previous = f64::INFINITY;
+            for standoff in [0.4, 0.8, 1.6, 3.2] {
+                let turn = equal_pressure_turn(pivot, attachment, rotation, standoff).expect("a turn");
+                let middle = turn_about(pivot, 0.5 * rotation) * attachment;
+                let mount = turn_about(middle, turn) * mount_square_at_mid_travel(pivot, attachment, rotation, standoff);
+                let [start, end] = RockerDrive::try_new(pivot, mount, attachment)
+                    .unwrap()
+                    .end_pressure_angles_rad(rotation);
+                assert!((start - end).abs() < 1e-9, "{rotation} {standoff}: {start} against {end}");
+                assert!(turn.abs() < previous, "{rotation} {standoff}: {turn}");
+                previous = turn.abs();
+            }
+        }
+    }
+
     /// The compass search walks from a grid point into a smooth bowl's minimum to within
     /// its last steps (0.05, a quarter of the standoff and 0.175 rad over 2^5), never
     /// leaves its bounds, never takes a placement it is told is not clear, and never ends

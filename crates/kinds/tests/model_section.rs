@@ -88,6 +88,7 @@ pub fn dropped_hinge_spec() -> DroppedHingeSpec {
             mount: None,
             standoff_m: 0.4,
             drive: drive(),
+            trade_index: None,
         },
         support_points: None,
         flap_mass: flap_mass(),

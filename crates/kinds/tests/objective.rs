@@ -285,3 +285,68 @@ fn a_link_track_takes_the_trade_candidate_it_is_given_by_index() {
         other => panic!("{other:?}"),
     }
 }
+
+/// The dropped hinge's weighed jack placement lists its trade between the jack's depth and
+/// its load (no candidate beats another on both, the chosen one the least costly), and
+/// `trade_index` takes another candidate: the jack synthesised is that candidate (its
+/// attachment and mount as listed, its peak load as listed to 2 %: the list samples 17
+/// poses, `peak_load` 33), marked chosen; an index the trade does not have is refused,
+/// naming the count.
+#[test]
+fn a_dropped_hinge_takes_the_jack_trade_candidate_it_is_given_by_index() {
+    use crate::synthesised::model_section::dropped_hinge_spec;
+    use flapwright_kinds::dropped_hinge::{DroppedHinge, DroppedHingeActuator, DroppedHingeSpec};
+    let flight = flight_load();
+    let spec = DroppedHingeSpec {
+        design_loads: vec![flight.clone()],
+        ..dropped_hinge_spec()
+    };
+    let with_index = |index: usize| {
+        let mut spec = spec.clone();
+        if let DroppedHingeActuator::ScrewJack { trade_index, .. } = &mut spec.actuator {
+            *trade_index = Some(index);
+        }
+        spec
+    };
+    let weighed = DroppedHinge::synthesise(spec.clone()).unwrap();
+    let trade = weighed
+        .synthesis()
+        .screw_jack
+        .as_ref()
+        .expect("a screw jack")
+        .trade
+        .clone();
+    assert!(trade.len() >= 2, "a trade to pick from: {trade:?}");
+    let chosen: Vec<_> = trade.iter().filter(|c| c.chosen).collect();
+    assert_eq!(chosen.len(), 1);
+    assert!(trade.iter().all(|c| c.cost >= chosen[0].cost));
+    for a in &trade {
+        for b in &trade {
+            let beats = a.depth_below_pivot_m < b.depth_below_pivot_m && a.peak_load_n < b.peak_load_n;
+            assert!(!beats || b.chosen, "{a:?} beats {b:?}");
+        }
+    }
+    assert!(trade
+        .windows(2)
+        .all(|w| w[0].depth_below_pivot_m <= w[1].depth_below_pivot_m));
+    for (index, candidate) in trade.iter().enumerate() {
+        let picked = DroppedHinge::synthesise(with_index(index)).unwrap();
+        let jack = picked.synthesis().screw_jack.clone().expect("a screw jack");
+        assert_eq!(jack.actuator_attachment_m, candidate.attachment_m, "candidate {index}");
+        assert_eq!(jack.actuator_mount_m, candidate.mount_m, "candidate {index}");
+        let marked: Vec<usize> = (0..jack.trade.len()).filter(|&k| jack.trade[k].chosen).collect();
+        assert_eq!(marked, vec![index]);
+        let load = peak_load(&picked, &flight);
+        assert!(
+            (load - candidate.peak_load_n).abs() <= 0.02 * candidate.peak_load_n,
+            "candidate {index}: {load} against {}",
+            candidate.peak_load_n
+        );
+    }
+    match DroppedHinge::synthesise(with_index(trade.len())) {
+        Err(flapwright_mechanism::Error::NoSuchTradeCandidate { index, count, .. }) => {
+            assert_eq!((index, count), (trade.len(), trade.len()));
+        }
+        other => panic!("{:?}", other.map(|_| "a mechanism")),
+    }
+}

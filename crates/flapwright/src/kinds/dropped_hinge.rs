@@ -47,6 +47,10 @@ pub struct DroppedHingeScene {
     /// The rotary actuator's gearing and the shared drive.
     #[serde(default)]
     pub rotary: RotaryDriveScene,
+    /// Take this candidate of the screw jack placement's trade (the report's
+    /// `details.synthesis.trade`, from 0) instead of the one the weights choose; absent:
+    /// theirs.
+    pub trade_index: Option<usize>,
 }
 
 pub(super) fn default_attachments() -> [f64; 2] {
@@ -90,6 +94,10 @@ impl KindScene for DroppedHingeScene {
                 &format!("{path}.attachment_chord_fractions"),
                 format!("= [{forward}, {aft}]: the aft attachment must lie at least 5 % of the flap chord behind the forward one"),
             );
+        }
+        if let Some(index) = self.trade_index {
+            let most = flapwright_mechanism::shared::placement::JACK_TRADE_CANDIDATES - 1;
+            checker.in_range(&format!("{path}.trade_index"), index as f64, 0.0, most as f64, false);
         }
         if let Some(fraction) = self.actuator_attachment_fraction {
             checker.in_range(
@@ -155,6 +163,7 @@ impl KindScene for DroppedHingeScene {
                     mount: self.actuator_mount_m.map(point),
                     standoff_m: 0.5 * flap.flap_chord_m,
                     drive: context.screw_drive(self.screw.drive()),
+                    trade_index: self.trade_index,
                 },
                 ActuatorChoice::Rotary => DroppedHingeActuator::Rotary(self.rotary.drive()),
             },
@@ -172,6 +181,6 @@ impl KindScene for DroppedHingeScene {
     }
 
     fn geometry_keys(&self) -> &'static str {
-        "the flap's landing setting, attachment_chord_fractions, actuator, actuator_attachment_fraction and actuator_mount_m"
+        "the flap's landing setting, attachment_chord_fractions, actuator, actuator_attachment_fraction, actuator_mount_m and trade_index"
     }
 }

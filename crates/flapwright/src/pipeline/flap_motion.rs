@@ -88,7 +88,9 @@ pub fn followed_motion(
     let lead_points = flapwright_interference::fit_points(&lead_placed.polygons_of(|name| name == flap));
     let (lowest_x, highest_x) = lead_points
         .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| (lo.min(p.x), hi.max(p.x)));
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p.x), hi.max(p.x))
+        });
     let reach = TAKEOFF_REACHED * (highest_x - lowest_x).max(0.0);
     let meets_takeoff = mechanism.pose(takeoff_input).ok().is_some_and(|pose| {
         lead_points

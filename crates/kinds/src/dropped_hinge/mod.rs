@@ -121,6 +121,9 @@ pub enum DroppedHingeActuator {
         standoff_m: f64,
         /// The screw's thread and the shared drive.
         drive: ScrewDrive,
+        /// Take this candidate of the placement's trade (the report's `trade`, from 0)
+        /// instead of the one the weights choose; `None`: theirs.
+        trade_index: Option<usize>,
     },
     /// A geared rotary actuator on the hinge, fixed to the support truss, its output the
     /// hinged structure: the input is the flap's turn about the hinge.
@@ -256,6 +259,7 @@ impl DroppedHinge {
                 mount,
                 standoff_m,
                 drive,
+                trade_index,
             } => {
                 let choice = ScrewJackChoice {
                     arm: (spec.flap_attachments[0], hinge),
@@ -273,7 +277,8 @@ impl DroppedHinge {
                 // transport's outboard flap, the check requiring 3 mm) let the screw take
                 // hold nearer the forward attachment (ob-inner 87.1 -> 65.1 kN, ob-outer
                 // 79.4 -> 54.6 kN), every station of the four aircraft scenes still clear.
-                let (rocker, layout) = screw_jack_layout(&spec, hinge, &choice, &drive, JACK_MARGIN_SHARE * margin)?;
+                let (rocker, layout) =
+                    screw_jack_layout(&spec, hinge, &choice, &drive, JACK_MARGIN_SHARE * margin, trade_index)?;
                 let actuator = Actuator::ScrewJack {
                     screw: layout.screw,
                     screw_length_m: layout.screw_length_m,

@@ -7,10 +7,10 @@ use serde::Serialize;
 
 use super::{failure, mm, DroppedHingeSpec, TRANSMISSION_SAMPLES};
 use flapwright_mechanism::shared::geometry::turn_about;
-use flapwright_mechanism::shared::placement::{place_screw_jack, JackSize, ScrewJackChoice};
+use flapwright_mechanism::shared::placement::{place_screw_jack, JackSize, JackTradeCandidate, ScrewJackChoice};
 use flapwright_mechanism::shared::rocker_drive::{JackInstallation, RockerDrive};
 use flapwright_mechanism::shared::screw_jack::{ScrewDrive, ScrewJack};
-use flapwright_mechanism::{Result, SynthesisDefect};
+use flapwright_mechanism::{Error, Result, SynthesisDefect};
 
 /// The screw jack of a dropped hinge, as synthesis laid it out.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -28,6 +28,11 @@ pub struct DroppedHingeScrewJack {
     pub min_transmission_angle_rad: f64,
     /// Its end pressure angles and its mount's turn from `004_...`'s installation.
     pub installation: JackInstallation,
+    /// The placement's trade between the jack's depth and its load, the chosen one marked
+    /// ([`flapwright_mechanism::shared::placement::PlacedJack::trade`]); a scene's
+    /// `trade_index` picks another.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub trade: Vec<JackTradeCandidate>,
     /// The screw chosen from the drive: lead, radius, friction.
     pub screw: ScrewJack,
     /// Screw length (m): the longest stroke and the nut.
@@ -45,13 +50,14 @@ pub(super) fn screw_jack_layout(
     choice: &ScrewJackChoice,
     screw_drive: &ScrewDrive,
     margin: f64,
+    trade_index: Option<usize>,
 ) -> Result<(RockerDrive, DroppedHingeScrewJack)> {
     let turn = spec.landing.deflection_rad;
     let hw = spec.hardware;
     let size = JackSize::new(&hw, screw_drive.mean_radius_m);
     let flap_at = |psi: f64| Some(turn_about(hinge, psi));
     let weighing = spec.weighing();
-    let (attachment, mount, actuator_clear) = place_screw_jack(
+    let placed = place_screw_jack(
         hinge,
         turn,
         choice,
@@ -61,6 +67,26 @@ pub(super) fn screw_jack_layout(
         &flap_at,
         weighing.as_ref(),
     );
+    let (attachment, mount, actuator_clear, trade) = match trade_index {
+        None => (placed.attachment, placed.mount, placed.clear, placed.trade),
+        Some(index) => {
+            let picked = placed.trade.get(index).ok_or(Error::NoSuchTradeCandidate {
+                kind: super::KIND,
+                index,
+                count: placed.trade.len(),
+            })?;
+            let trade = placed
+                .trade
+                .iter()
+                .enumerate()
+                .map(|(k, c)| JackTradeCandidate {
+                    chosen: k == index,
+                    ..*c
+                })
+                .collect();
+            (picked.attachment_m, picked.mount_m, true, trade)
+        }
+    };
     let drive = RockerDrive::try_new(hinge, mount, attachment).map_err(|_| {
         failure(
             SynthesisDefect::Toggle,
@@ -93,6 +119,7 @@ pub(super) fn screw_jack_layout(
         stroke_m,
         min_transmission_angle_rad: min_transmission,
         installation: JackInstallation::of(&drive, turn),
+        trade,
         screw,
         screw_length_m,
         nominal_speed_mps,

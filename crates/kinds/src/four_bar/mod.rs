@@ -180,6 +180,10 @@ pub struct FourBarSynthesis {
     pub drive_min_transmission_angle_rad: f64,
     /// The screw's end pressure angles and its mount's turn from `004_...`'s installation.
     pub jack_installation: flapwright_mechanism::shared::rocker_drive::JackInstallation,
+    /// The jack placement's trade between its depth and its load, the chosen one marked
+    /// ([`flapwright_mechanism::shared::placement::PlacedJack::trade`]).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub jack_trade: Vec<flapwright_mechanism::shared::placement::JackTradeCandidate>,
     /// A certified lower bound on it between samples (rad).
     pub certified_min_transmission_angle_rad: f64,
     /// Depth of the whole mechanism (every solid, over the deployment) below the stowed

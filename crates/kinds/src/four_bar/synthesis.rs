@@ -216,7 +216,7 @@ impl FourBar {
         };
         let size = JackSize::new(&hw, spec.screw_drive.mean_radius_m);
         let flap_at = |phi: f64| loop_.at(phi).map(|p| p.flap);
-        let (attachment, mount, actuator_clear) = place_screw_jack(
+        let placed = place_screw_jack(
             loop_.o1,
             travel,
             &choice,
@@ -226,6 +226,7 @@ impl FourBar {
             &flap_at,
             spec.weighing().as_ref(),
         );
+        let (attachment, mount, actuator_clear) = (placed.attachment, placed.mount, placed.clear);
         let mut placement_clear = true;
         let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)
             .filter_map(|k| loop_.at(travel * k as f64 / PLACEMENT_SAMPLES as f64).map(|p| p.flap))
@@ -300,6 +301,7 @@ impl FourBar {
             min_transmission_angle_rad: min_transmission,
             drive_min_transmission_angle_rad: drive_min,
             jack_installation: flapwright_mechanism::shared::rocker_drive::JackInstallation::of(&drive, travel),
+            jack_trade: placed.trade,
             certified_min_transmission_angle_rad: certified,
             depth_below_section_m: 0.0,
             precision_miss_m: miss,

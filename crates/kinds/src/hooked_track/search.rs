@@ -101,7 +101,9 @@ impl Found {
 /// fractions of the stroke; 0 without one.
 fn follow_miss(spec: &HookedTrackSpec, rail: &Rail, points: &[Point2<f64>]) -> f64 {
     spec.follow.as_ref().map_or(0.0, |follow| {
-        follow.miss(points, &|fraction| rail.at(fraction * rail.stroke_m).map(|pose| pose.flap))
+        follow.miss(points, &|fraction| {
+            rail.at(fraction * rail.stroke_m).map(|pose| pose.flap)
+        })
     })
 }
 

@@ -798,7 +798,11 @@ mod topology_tests {
         let t = LinkTrackTopology::of(0.7, PivotPlace::OutsideWing, Vector2::new(0.4, 0.9));
         assert_eq!(
             (t.turning, t.sweep, t.track),
-            (TurningSense::CounterClockwise, LinkSweep::WithinQuarterTurn, TrackRun::Forward)
+            (
+                TurningSense::CounterClockwise,
+                LinkSweep::WithinQuarterTurn,
+                TrackRun::Forward
+            )
         );
         assert_eq!(
             serde_json::to_value(t).unwrap(),

@@ -18,6 +18,44 @@ pub const PLACEMENT_SAMPLES: usize = 16;
 /// A screw's attachment on the turning body and its mount (stowed, m).
 pub type AttachmentAndMount = (Point2<f64>, Point2<f64>);
 
+/// A clear placement a weighed screw-jack search found: one of the trade between the
+/// jack's depth and its load that the report lists (issue 37), so that a designer sees what
+/// a deeper or a shallower jack would carry and may pick it by index.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct JackTradeCandidate {
+    /// The screw's attachment on the body, stowed (m).
+    pub attachment_m: Point2<f64>,
+    /// The screw's mount (m).
+    pub mount_m: Point2<f64>,
+    /// How far the jack body and the screw's free end reach below the body's pivot over
+    /// the deployment (m).
+    pub depth_below_pivot_m: f64,
+    /// The screw's peak force under the load cases (N).
+    pub peak_load_n: f64,
+    /// The search's cost ([`LoadWeighing::cost`] plus the short-stroke term).
+    pub cost: f64,
+    /// The search's choice.
+    pub chosen: bool,
+}
+
+/// Trade candidates kept for the report, at most.
+pub const JACK_TRADE_CANDIDATES: usize = 8;
+
+/// A placed screw jack.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlacedJack {
+    /// The screw's attachment on the body, stowed (m).
+    pub attachment: Point2<f64>,
+    /// The screw's mount (m).
+    pub mount: Point2<f64>,
+    /// False when no candidate kept clear (the first that transmits, or the first).
+    pub clear: bool,
+    /// The clear placements no other beats on both depth and load, and the chosen one: the
+    /// [`JACK_TRADE_CANDIDATES`] least costly, shallowest first; empty without a weighing or
+    /// when the designer gives the mount.
+    pub trade: Vec<JackTradeCandidate>,
+}
+
 /// What the screw jack's solids measure (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct JackSize {
@@ -56,7 +94,7 @@ pub fn screw_jack_placement(
     outline: &StationOutline,
     flap_at: &dyn Fn(f64) -> Option<Isometry2<f64>>,
     weighing: Option<&LoadWeighing>,
-) -> Result<AttachmentAndMount, Option<AttachmentAndMount>> {
+) -> Result<(AttachmentAndMount, Vec<JackTradeCandidate>), Option<AttachmentAndMount>> {
     let rotations: Vec<f64> = (0..=PLACEMENT_SAMPLES)
         .map(|k| rotation_rad * k as f64 / PLACEMENT_SAMPLES as f64)
         .collect();
@@ -71,7 +109,7 @@ pub fn screw_jack_placement(
     let on_arm = |fraction: f64| arm.0 + (arm.1 - arm.0) * fraction;
     // One candidate: None where the drive cannot be built or transmits too little, else
     // the attachment, the mount and the cost where clear (None where not).
-    let evaluate = |(fraction, standoff, turn): Placement| -> Option<(AttachmentAndMount, Option<f64>)> {
+    let evaluate = |(fraction, standoff, turn): Placement| -> Option<(AttachmentAndMount, Option<Figures>)> {
         let attachment = on_arm(fraction);
         let square = mount_square_at_mid_travel(pivot, attachment, rotation_rad, standoff);
         let middle = turn_about(pivot, 0.5 * rotation_rad) * attachment;
@@ -112,7 +150,7 @@ pub fn screw_jack_placement(
             .map(|state| (mount + (state.attachment - mount).normalize() * length).y)
             .fold(mount.y - size.body_radius_m - 0.5 * size.body_length_m, f64::min);
         let depth = pivot.y - lowest;
-        let cost = match &loading {
+        let (cost, peak) = match &loading {
             Some((w, torques, reference)) => {
                 // The screw's force: the body's torque times dψ/ds.
                 let peak = rotations
@@ -126,12 +164,24 @@ pub fn screw_jack_placement(
                     })
                     .fold(0.0, f64::max);
                 let stroke = (drive.stroke_at(rotation_rad) - drive.stroke_at(0.0)).abs();
-                w.cost(depth, flap_chord, peak, *reference) + short_stroke_cost(stroke)
+                (
+                    w.cost(depth, flap_chord, peak, *reference) + short_stroke_cost(stroke),
+                    peak,
+                )
             }
-            None => depth / flap_chord,
+            None => (depth / flap_chord, f64::NAN),
         };
-        Some(((attachment, mount), Some(cost)))
+        Some(((attachment, mount), Some(Figures { cost, depth, peak })))
     };
+    let candidate_of = |(attachment, mount): AttachmentAndMount, figures: Figures| JackTradeCandidate {
+        attachment_m: attachment,
+        mount_m: mount,
+        depth_below_pivot_m: figures.depth,
+        peak_load_n: figures.peak,
+        cost: figures.cost,
+        chosen: false,
+    };
+    let mut clear_candidates: Vec<JackTradeCandidate> = Vec::new();
     let mut fallback = None;
     let mut best: Option<(Placement, f64)> = None;
     // The screw square to the arm at mid-travel first, then turned either way about the
@@ -146,9 +196,10 @@ pub fn screw_jack_placement(
                     continue;
                 };
                 fallback = fallback.or(Some(pair));
-                if let Some(cost) = cost {
-                    if best.is_none_or(|(_, c)| cost < c) {
-                        best = Some((placement, cost));
+                if let Some(figures) = cost {
+                    clear_candidates.push(candidate_of(pair, figures));
+                    if best.is_none_or(|(_, c)| figures.cost < c) {
+                        best = Some((placement, figures.cost));
                     }
                 }
             }
@@ -161,7 +212,7 @@ pub fn screw_jack_placement(
     // shorter stroke and a larger force, which the grid's coarse steps keep in check.
     if loading.is_none() {
         return evaluate(best.0)
-            .and_then(|(pair, cost)| cost.map(|_| pair))
+            .and_then(|(pair, cost)| cost.map(|_| (pair, Vec::new())))
             .ok_or(fallback);
     }
     // The refinement stays within the grid's standoffs and turns, and its fraction within
@@ -178,12 +229,56 @@ pub fn screw_jack_placement(
         range(standoffs),
         (-MAX_TURN, MAX_TURN),
     ];
-    let cost_of = |placement: Placement| evaluate(placement).and_then(|(_, cost)| cost);
+    let cost_of = |placement: Placement| evaluate(placement).and_then(|(_, figures)| figures.map(|f| f.cost));
     let (placement, _) = refine(best, bounds, &cost_of);
     // The refined placement is clear (the search takes only clear ones).
-    evaluate(placement)
-        .and_then(|(pair, cost)| cost.map(|_| pair))
-        .ok_or(fallback)
+    let Some((pair, Some(figures))) = evaluate(placement) else {
+        return Err(fallback);
+    };
+    let chosen = JackTradeCandidate {
+        chosen: true,
+        ..candidate_of(pair, figures)
+    };
+    Ok((pair, jack_trade(chosen, clear_candidates)))
+}
+
+/// What a placement costs and measures.
+#[derive(Debug, Clone, Copy)]
+struct Figures {
+    cost: f64,
+    /// Below the pivot (m).
+    depth: f64,
+    /// The screw's peak force (N); NaN without a weighing.
+    peak: f64,
+}
+
+/// The trade: `chosen` and the `candidates` no other beats on both depth and peak load,
+/// the [`JACK_TRADE_CANDIDATES`] least costly, shallowest first.
+fn jack_trade(chosen: JackTradeCandidate, candidates: Vec<JackTradeCandidate>) -> Vec<JackTradeCandidate> {
+    let all: Vec<JackTradeCandidate> = std::iter::once(chosen).chain(candidates).collect();
+    let dominates = |a: &JackTradeCandidate, b: &JackTradeCandidate| {
+        a.depth_below_pivot_m <= b.depth_below_pivot_m
+            && a.peak_load_n <= b.peak_load_n
+            && (a.depth_below_pivot_m < b.depth_below_pivot_m || a.peak_load_n < b.peak_load_n)
+    };
+    let mut front: Vec<JackTradeCandidate> = all
+        .iter()
+        .filter(|c| c.chosen || !all.iter().any(|o| dominates(o, c)))
+        .copied()
+        .collect();
+    // The chosen one first among equals, so that the dedup keeps it.
+    front.sort_by(|a, b| a.cost.total_cmp(&b.cost).then(b.chosen.cmp(&a.chosen)));
+    front.dedup_by(|a, b| {
+        (a.depth_below_pivot_m - b.depth_below_pivot_m).abs() < 1e-9 && (a.peak_load_n - b.peak_load_n).abs() < 1e-9
+    });
+    if let Some(k) = front.iter().position(|c| c.chosen) {
+        // The refined choice costs least; keep it whatever the truncation.
+        let chosen = front.remove(k);
+        front.insert(0, chosen);
+    }
+    front.truncate(JACK_TRADE_CANDIDATES);
+    front.sort_by(|a, b| a.depth_below_pivot_m.total_cmp(&b.depth_below_pivot_m));
+    front
 }
 
 /// What a weighed placement adds for a stroke shorter than
@@ -314,7 +409,6 @@ pub struct ScrewJackChoice {
 /// `choice.other_fractions` of the arm) and standoffs 1, 1.6, 2.4 and 0.7 times
 /// `choice.standoff_m`; when none is clear, the first that transmits well enough (or the
 /// first candidate) and `false`.
-/// Returns (attachment, mount, clear).
 #[allow(clippy::too_many_arguments)]
 pub fn place_screw_jack(
     pivot: Point2<f64>,
@@ -325,12 +419,18 @@ pub fn place_screw_jack(
     outline: &StationOutline,
     flap_at: &dyn Fn(f64) -> Option<Isometry2<f64>>,
     weighing: Option<&LoadWeighing>,
-) -> (Point2<f64>, Point2<f64>, bool) {
+) -> PlacedJack {
     let (from, to) = choice.arm;
     let on_arm = |fraction: f64| from + (to - from) * fraction;
     let first = on_arm(choice.attachment_fraction.unwrap_or(DEFAULT_ATTACHMENT_FRACTION));
+    let placed = |attachment, mount, clear, trade| PlacedJack {
+        attachment,
+        mount,
+        clear,
+        trade,
+    };
     if let Some(mount) = choice.mount {
-        return (first, mount, true);
+        return placed(first, mount, true, Vec::new());
     }
     let others: &[f64] = if choice.attachment_fraction.is_some() {
         &[]
@@ -354,12 +454,13 @@ pub fn place_screw_jack(
         flap_at,
         weighing,
     ) {
-        Ok((attachment, mount)) => (attachment, mount, true),
-        Err(Some((attachment, mount))) => (attachment, mount, false),
-        Err(None) => (
+        Ok(((attachment, mount), trade)) => placed(attachment, mount, true, trade),
+        Err(Some((attachment, mount))) => placed(attachment, mount, false, Vec::new()),
+        Err(None) => placed(
             first,
             mount_square_at_mid_travel(pivot, first, rotation_rad, choice.standoff_m),
             false,
+            Vec::new(),
         ),
     }
 }
@@ -446,11 +547,15 @@ mod tests {
             for standoff in [0.4, 0.8, 1.6, 3.2] {
                 let turn = equal_pressure_turn(pivot, attachment, rotation, standoff).expect("a turn");
                 let middle = turn_about(pivot, 0.5 * rotation) * attachment;
-                let mount = turn_about(middle, turn) * mount_square_at_mid_travel(pivot, attachment, rotation, standoff);
+                let mount =
+                    turn_about(middle, turn) * mount_square_at_mid_travel(pivot, attachment, rotation, standoff);
                 let [start, end] = RockerDrive::try_new(pivot, mount, attachment)
                     .unwrap()
                     .end_pressure_angles_rad(rotation);
-                assert!((start - end).abs() < 1e-9, "{rotation} {standoff}: {start} against {end}");
+                assert!(
+                    (start - end).abs() < 1e-9,
+                    "{rotation} {standoff}: {start} against {end}"
+                );
                 assert!(turn.abs() < previous, "{rotation} {standoff}: {turn}");
                 previous = turn.abs();
             }

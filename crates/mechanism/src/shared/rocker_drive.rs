@@ -127,8 +127,9 @@ impl RockerDrive {
     /// drive cannot reach.
     pub fn end_pressure_angles_rad(&self, rotation_rad: f64) -> [f64; 2] {
         [0.0, rotation_rad].map(|psi| {
-            self.state(self.stroke_at(psi))
-                .map_or(f64::NAN, |state| std::f64::consts::FRAC_PI_2 - state.transmission_angle_rad)
+            self.state(self.stroke_at(psi)).map_or(f64::NAN, |state| {
+                std::f64::consts::FRAC_PI_2 - state.transmission_angle_rad
+            })
         })
     }
 
@@ -399,17 +400,27 @@ mod tests {
                 compared += 1;
                 let theirs = [gear.start_pressure_angle_rad, gear.end_pressure_angle_rad];
                 for (a, b) in ours.iter().zip(theirs) {
-                    assert!((a.abs() - b).abs() < 1e-12, "{rotation} {standoff}: {ours:?} against {theirs:?}");
+                    assert!(
+                        (a.abs() - b).abs() < 1e-12,
+                        "{rotation} {standoff}: {ours:?} against {theirs:?}"
+                    );
                 }
                 let stroke = (drive.stroke_at(rotation) - drive.stroke_at(0.0)).abs();
-                assert!((stroke - gear.stroke_m.abs()).abs() < 1e-12, "{stroke} against {}", gear.stroke_m);
+                assert!(
+                    (stroke - gear.stroke_m.abs()).abs() < 1e-12,
+                    "{stroke} against {}",
+                    gear.stroke_m
+                );
                 assert!(mount_turn_from_square(pivot, attachment, rotation, mount).abs() < 1e-12);
                 let middle = turn_about(pivot, 0.5 * rotation) * attachment;
                 let turned = turn_about(middle, 0.3) * mount;
                 assert!((mount_turn_from_square(pivot, attachment, rotation, turned) - 0.3).abs() < 1e-12);
             }
         }
-        assert!(compared >= 10 && checked_refusals >= 1, "{compared} compared, {checked_refusals} refused");
+        assert!(
+            compared >= 10 && checked_refusals >= 1,
+            "{compared} compared, {checked_refusals} refused"
+        );
     }
 
     /// The rotation a stroke gives round-trips through `stroke_at`, either sense, and the

@@ -87,6 +87,23 @@ fn a_trade_index_beyond_the_largest_trade_is_refused_by_key_and_line() {
     assert!(error.contains('7'), "the allowed range: {error}");
 }
 
+#[test]
+fn a_dropped_hinges_trade_index_beyond_the_largest_trade_is_refused_by_key_and_line() {
+    let text = TRANSPORT.replacen(
+        "kind = \"dropped-hinge\"\n",
+        "kind = \"dropped-hinge\"\ntrade_index = 8\n",
+        1,
+    );
+    assert_ne!(text, TRANSPORT, "the transport scene has a dropped hinge");
+    let error = Scene::from_toml(&text, &NoFiles)
+        .expect_err("the trade has at most 8 candidates, 0 to 7")
+        .to_string();
+    assert!(error.contains("mechanism.trade_index"), "{error}");
+    let line = text.lines().position(|l| l.starts_with("trade_index")).unwrap() + 1;
+    assert!(error.contains(&format!("{line}:")), "line {line}: {error}");
+    assert!(error.contains('7'), "the allowed range: {error}");
+}
+
 /// The four-bar's screw jack weighed (the default `[design]`) against the shallowest clear
 /// placement (weight 0 and no cap): on the transport's inboard four-bars the shallowest
 /// takes hold of the crank near its pivot and carries 1.1-2.0 times the flap's air load;

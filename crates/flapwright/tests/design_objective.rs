@@ -88,20 +88,22 @@ fn a_trade_index_beyond_the_largest_trade_is_refused_by_key_and_line() {
 }
 
 #[test]
-fn a_dropped_hinges_trade_index_beyond_the_largest_trade_is_refused_by_key_and_line() {
-    let text = TRANSPORT.replacen(
-        "kind = \"dropped-hinge\"\n",
-        "kind = \"dropped-hinge\"\ntrade_index = 8\n",
-        1,
-    );
-    assert_ne!(text, TRANSPORT, "the transport scene has a dropped hinge");
-    let error = Scene::from_toml(&text, &NoFiles)
-        .expect_err("the trade has at most 8 candidates, 0 to 7")
-        .to_string();
-    assert!(error.contains("mechanism.trade_index"), "{error}");
-    let line = text.lines().position(|l| l.starts_with("trade_index")).unwrap() + 1;
-    assert!(error.contains(&format!("{line}:")), "line {line}: {error}");
-    assert!(error.contains('7'), "the allowed range: {error}");
+fn a_screw_jack_kinds_trade_index_beyond_the_largest_trade_is_refused_by_key_and_line() {
+    for kind in ["dropped-hinge", "four-bar"] {
+        let text = TRANSPORT.replacen(
+            &format!("kind = \"{kind}\"\n"),
+            &format!("kind = \"{kind}\"\ntrade_index = 8\n"),
+            1,
+        );
+        assert_ne!(text, TRANSPORT, "the transport scene has a {kind}");
+        let error = Scene::from_toml(&text, &NoFiles)
+            .expect_err("the trade has at most 8 candidates, 0 to 7")
+            .to_string();
+        assert!(error.contains("mechanism.trade_index"), "{kind}: {error}");
+        let line = text.lines().position(|l| l.starts_with("trade_index")).unwrap() + 1;
+        assert!(error.contains(&format!("{line}:")), "{kind}: line {line}: {error}");
+        assert!(error.contains('7'), "{kind}: the allowed range: {error}");
+    }
 }
 
 /// The four-bar's screw jack weighed (the default `[design]`) against the shallowest clear

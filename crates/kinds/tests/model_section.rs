@@ -132,6 +132,7 @@ pub fn four_bar_spec() -> FourBarSpec {
         design_loads: Vec::new(),
         load_weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
         load_cap: flapwright_kinds::four_bar::DEFAULT_JACK_LOAD_CAP,
+        trade_index: None,
     }
 }
 

@@ -350,3 +350,44 @@ fn a_dropped_hinge_takes_the_jack_trade_candidate_it_is_given_by_index() {
         other => panic!("{:?}", other.map(|_| "a mechanism")),
     }
 }
+
+/// The four-bar's `trade_index` takes that candidate of its jack placement's trade: the
+/// synthesised screw takes hold and is mounted where its own trade lists that candidate,
+/// marked chosen there; an index no linkage's trade has is refused, naming the count.
+#[test]
+fn a_four_bar_takes_the_jack_trade_candidate_it_is_given_by_index() {
+    use crate::synthesised::model_section::four_bar_spec;
+    use flapwright_kinds::four_bar::{FourBar, FourBarSpec};
+    let spec = FourBarSpec {
+        design_loads: vec![flight_load()],
+        ..four_bar_spec()
+    };
+    let weighed = FourBar::synthesise(spec.clone()).unwrap();
+    let trade = weighed.synthesis().jack_trade.clone();
+    assert!(trade.len() >= 2, "a trade to pick from: {trade:?}");
+    assert_eq!(trade.iter().filter(|c| c.chosen).count(), 1);
+    for index in 0..trade.len() {
+        let picked = FourBar::synthesise(FourBarSpec {
+            trade_index: Some(index),
+            ..spec.clone()
+        })
+        .unwrap();
+        let s = picked.synthesis();
+        let listed = s.jack_trade.get(index).expect("the index in its own trade");
+        assert!(listed.chosen, "candidate {index}");
+        assert_eq!(s.jack_trade.iter().filter(|c| c.chosen).count(), 1);
+        assert_eq!(
+            (s.actuator_attachment_m, s.actuator_mount_m),
+            (listed.attachment_m, listed.mount_m)
+        );
+    }
+    match FourBar::synthesise(FourBarSpec {
+        trade_index: Some(flapwright_mechanism::shared::placement::JACK_TRADE_CANDIDATES),
+        ..spec
+    }) {
+        Err(flapwright_mechanism::Error::NoSuchTradeCandidate { index, .. }) => {
+            assert_eq!(index, flapwright_mechanism::shared::placement::JACK_TRADE_CANDIDATES);
+        }
+        other => panic!("{:?}", other.map(|_| "a mechanism")),
+    }
+}

@@ -8,7 +8,10 @@ use flapwright_mechanism::FlapMechanism;
 use nalgebra::Point2;
 use serde::Deserialize;
 
-use super::{check_synthesised, ActuatorChoice, KindScene, RotaryDriveScene, ScrewDriveScene, SynthesisContext};
+use super::{
+    check_synthesised, check_trade_index, ActuatorChoice, KindScene, RotaryDriveScene, ScrewDriveScene,
+    SynthesisContext,
+};
 use crate::scene::KeyChecker;
 
 /// `[station.mechanism]` with `kind = "dropped-hinge"` (station frame, m).
@@ -95,10 +98,12 @@ impl KindScene for DroppedHingeScene {
                 format!("= [{forward}, {aft}]: the aft attachment must lie at least 5 % of the flap chord behind the forward one"),
             );
         }
-        if let Some(index) = self.trade_index {
-            let most = flapwright_mechanism::shared::placement::JACK_TRADE_CANDIDATES - 1;
-            checker.in_range(&format!("{path}.trade_index"), index as f64, 0.0, most as f64, false);
-        }
+        check_trade_index(
+            checker,
+            path,
+            self.trade_index,
+            flapwright_mechanism::shared::placement::JACK_TRADE_CANDIDATES,
+        );
         if let Some(fraction) = self.actuator_attachment_fraction {
             checker.in_range(
                 &format!("{path}.actuator_attachment_fraction"),

@@ -11,7 +11,7 @@ use nalgebra::Point2;
 use serde::Deserialize;
 
 use super::dropped_hinge::default_transmission;
-use super::{check_synthesised, KindScene, ScrewDriveScene, SynthesisContext};
+use super::{check_synthesised, check_trade_index, KindScene, ScrewDriveScene, SynthesisContext};
 use crate::scene::KeyChecker;
 
 /// `[station.mechanism]` with `kind = "four-bar"` (station frame, m).
@@ -38,6 +38,10 @@ pub struct FourBarScene {
     /// The screw jack's thread and the shared drive.
     #[serde(default)]
     pub screw: ScrewDriveScene,
+    /// Take this candidate of the screw jack placement's trade (the report's
+    /// `details.synthesis.jack_trade`, from 0) instead of the one the weights choose, for
+    /// every linkage the search builds; absent: theirs.
+    pub trade_index: Option<usize>,
 }
 
 fn point(p: [f64; 2]) -> Point2<f64> {
@@ -57,6 +61,12 @@ impl KindScene for FourBarScene {
             self.flap_centre_of_mass_m.as_ref(),
             self.min_transmission_angle_deg,
             Some(&self.screw),
+        );
+        check_trade_index(
+            checker,
+            path,
+            self.trade_index,
+            flapwright_mechanism::shared::placement::JACK_TRADE_CANDIDATES,
         );
         for (key, pivot) in [
             ("forward_pivot_m", &self.forward_pivot_m),
@@ -115,6 +125,7 @@ impl KindScene for FourBarScene {
             design_loads: context.design_loads.clone(),
             load_weight: context.actuator_load_weight,
             load_cap: context.four_bar_actuator_load_cap,
+            trade_index: self.trade_index,
         };
         // Follow the flap's first station (where the scene fixes neither moving pivot): the
         // same points of the flap section and the nearest motion at every station move the
@@ -160,6 +171,6 @@ impl KindScene for FourBarScene {
     }
 
     fn geometry_keys(&self) -> &'static str {
-        "the flap settings, forward_pivot_m, aft_pivot_m, actuator_attachment_fraction and actuator_mount_m"
+        "the flap settings, forward_pivot_m, aft_pivot_m, actuator_attachment_fraction, actuator_mount_m and trade_index"
     }
 }

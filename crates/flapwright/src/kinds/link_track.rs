@@ -10,7 +10,7 @@ use nalgebra::Point2;
 use serde::Deserialize;
 
 use super::dropped_hinge::default_transmission;
-use super::{check_synthesised, KindScene, RotaryDriveScene, SynthesisContext};
+use super::{check_synthesised, check_trade_index, KindScene, RotaryDriveScene, SynthesisContext};
 use crate::scene::KeyChecker;
 
 /// `[station.mechanism]` with `kind = "link-track"` (station frame, m).
@@ -57,10 +57,12 @@ impl KindScene for LinkTrackScene {
             let (lo, hi) = TRACK_SLOPE_DEG;
             checker.in_range(&format!("{path}.track_slope_deg"), slope, lo, hi, false);
         }
-        if let Some(index) = self.trade_index {
-            let most = flapwright_kinds::link_track::TRADE_CANDIDATES - 1;
-            checker.in_range(&format!("{path}.trade_index"), index as f64, 0.0, most as f64, false);
-        }
+        check_trade_index(
+            checker,
+            path,
+            self.trade_index,
+            flapwright_kinds::link_track::TRADE_CANDIDATES,
+        );
         self.rotary.check(checker, path);
     }
 

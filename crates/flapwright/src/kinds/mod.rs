@@ -314,6 +314,14 @@ impl RotaryDriveScene {
     }
 }
 
+/// `trade_index`, where given, names one of a trade of at most `candidates` (from 0).
+fn check_trade_index(checker: &mut dyn KeyChecker, path: &str, index: Option<usize>, candidates: usize) {
+    if let Some(index) = index {
+        let most = candidates.saturating_sub(1);
+        checker.in_range(&format!("{path}.trade_index"), index as f64, 0.0, most as f64, false);
+    }
+}
+
 /// The keys every kind synthesised from the settings has: flap mass and centre of mass,
 /// minimum transmission angle, and the screw drive of a kind that has one.
 fn check_synthesised(

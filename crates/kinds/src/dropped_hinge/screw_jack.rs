@@ -67,26 +67,14 @@ pub(super) fn screw_jack_layout(
         &flap_at,
         weighing.as_ref(),
     );
-    let (attachment, mount, actuator_clear, trade) = match trade_index {
-        None => (placed.attachment, placed.mount, placed.clear, placed.trade),
-        Some(index) => {
-            let picked = placed.trade.get(index).ok_or(Error::NoSuchTradeCandidate {
-                kind: super::KIND,
-                index,
-                count: placed.trade.len(),
-            })?;
-            let trade = placed
-                .trade
-                .iter()
-                .enumerate()
-                .map(|(k, c)| JackTradeCandidate {
-                    chosen: k == index,
-                    ..*c
-                })
-                .collect();
-            (picked.attachment_m, picked.mount_m, true, trade)
-        }
-    };
+    let placed = placed
+        .picked(trade_index)
+        .map_err(|count| Error::NoSuchTradeCandidate {
+            kind: super::KIND,
+            index: trade_index.unwrap_or_default(),
+            count,
+        })?;
+    let (attachment, mount, actuator_clear, trade) = (placed.attachment, placed.mount, placed.clear, placed.trade);
     let drive = RockerDrive::try_new(hinge, mount, attachment).map_err(|_| {
         failure(
             SynthesisDefect::Toggle,

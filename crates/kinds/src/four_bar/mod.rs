@@ -95,6 +95,10 @@ pub struct FourBarSpec {
     /// The screw's load (reference loads) above which the placement trades steeply.
     #[serde(skip)]
     pub load_cap: f64,
+    /// Take this candidate of the jack placement's trade (the report's `jack_trade`, from
+    /// 0) instead of the one the weights choose, for every linkage the search builds (of
+    /// those whose trade has it, the usual choice); `None`: theirs.
+    pub trade_index: Option<usize>,
 }
 
 impl FourBarSpec {

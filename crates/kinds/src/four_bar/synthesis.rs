@@ -226,6 +226,14 @@ impl FourBar {
             &flap_at,
             spec.weighing().as_ref(),
         );
+        let trade_index = spec.trade_index;
+        let placed = placed
+            .picked(trade_index)
+            .map_err(|count| Error::NoSuchTradeCandidate {
+                kind: super::KIND,
+                index: trade_index.unwrap_or_default(),
+                count,
+            })?;
         let (attachment, mount, actuator_clear) = (placed.attachment, placed.mount, placed.clear);
         let mut placement_clear = true;
         let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)

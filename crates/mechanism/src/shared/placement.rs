@@ -41,6 +41,33 @@ pub struct JackTradeCandidate {
 /// Trade candidates kept for the report, at most.
 pub const JACK_TRADE_CANDIDATES: usize = 8;
 
+impl PlacedJack {
+    /// The jack at candidate `index` of its trade instead of the search's choice (marked
+    /// chosen there); itself for `None`. Errors with the trade's length where it has no such
+    /// candidate.
+    pub fn picked(self, index: Option<usize>) -> std::result::Result<Self, usize> {
+        let Some(index) = index else {
+            return Ok(self);
+        };
+        let picked = *self.trade.get(index).ok_or(self.trade.len())?;
+        let trade = self
+            .trade
+            .iter()
+            .enumerate()
+            .map(|(k, c)| JackTradeCandidate {
+                chosen: k == index,
+                ..*c
+            })
+            .collect();
+        Ok(Self {
+            attachment: picked.attachment_m,
+            mount: picked.mount_m,
+            clear: true,
+            trade,
+        })
+    }
+}
+
 /// A placed screw jack.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlacedJack {

@@ -10,7 +10,7 @@ use flapwright_mechanism::shared::geometry::turn_about;
 use flapwright_mechanism::shared::placement::{place_screw_jack, JackSize, JackTradeCandidate, ScrewJackChoice};
 use flapwright_mechanism::shared::rocker_drive::{JackInstallation, RockerDrive};
 use flapwright_mechanism::shared::screw_jack::{ScrewDrive, ScrewJack};
-use flapwright_mechanism::{Error, Result, SynthesisDefect};
+use flapwright_mechanism::{Result, SynthesisDefect};
 
 /// The screw jack of a dropped hinge, as synthesis laid it out.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -67,13 +67,7 @@ pub(super) fn screw_jack_layout(
         &flap_at,
         weighing.as_ref(),
     );
-    let placed = placed
-        .picked(trade_index)
-        .map_err(|count| Error::NoSuchTradeCandidate {
-            kind: super::KIND,
-            index: trade_index.unwrap_or_default(),
-            count,
-        })?;
+    let placed = placed.picked(super::KIND, trade_index)?;
     let (attachment, mount, actuator_clear, trade) = (placed.attachment, placed.mount, placed.clear, placed.trade);
     let drive = RockerDrive::try_new(hinge, mount, attachment).map_err(|_| {
         failure(

@@ -227,13 +227,7 @@ impl FourBar {
             spec.weighing().as_ref(),
         );
         let trade_index = spec.trade_index;
-        let placed = placed
-            .picked(trade_index)
-            .map_err(|count| Error::NoSuchTradeCandidate {
-                kind: super::KIND,
-                index: trade_index.unwrap_or_default(),
-                count,
-            })?;
+        let placed = placed.picked(super::KIND, trade_index)?;
         let (attachment, mount, actuator_clear) = (placed.attachment, placed.mount, placed.clear);
         let mut placement_clear = true;
         let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)
@@ -429,14 +423,7 @@ impl FourBar {
             }
         }
         best.map(|(miss, mut four_bar)| {
-            four_bar.synthesis.followed =
-                follow
-                    .motion
-                    .as_ref()
-                    .map(|motion| flapwright_mechanism::shared::follow::FollowedStation {
-                        station: motion.station.clone(),
-                        miss_m: miss,
-                    });
+            four_bar.synthesis.followed = follow.motion.as_ref().map(|motion| motion.followed(miss));
             four_bar
         })
     }

@@ -498,13 +498,7 @@ impl HookedTrack {
             truss,
             topology: HookedTrackTopology::of(d, rail_ends[0], rail.f, rail.g, found.mount),
             search: counts,
-            followed: spec
-                .follow
-                .as_ref()
-                .map(|f| flapwright_mechanism::shared::follow::FollowedStation {
-                    station: f.station.clone(),
-                    miss_m: found.follow_miss,
-                }),
+            followed: spec.follow.as_ref().map(|f| f.followed(found.follow_miss)),
         };
         let (bodies, joints) = bodies::bodies_and_joints(&spec, &synthesis, &rail, certified);
         Ok(Self {

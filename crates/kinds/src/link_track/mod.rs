@@ -27,10 +27,12 @@ mod bodies;
 mod linkage;
 mod members;
 mod search;
+mod struts;
 
 pub use search::TRADE_CANDIDATES;
 
 use linkage::{Loop, LoopPose};
+use struts::StrutPlacement;
 
 use flapwright_mechanism::seam::{
     Actuator, Body, DrawingNotes, FlapMechanism, InputQuantity, InputRange, Joint, Kinetostatics, MechanismPose,
@@ -314,55 +316,6 @@ fn failure(defect: SynthesisDefect, detail: String) -> Error {
     }
 }
 
-/// Where a link-track's two struts meet the wing's lower skin: from the link's fixed pivot
-/// and from the track's forward end, each kept clear of the structure and of the flap at
-/// the sampled poses (`shared::placement::strut_top`); `None` where no top clears.
-struct StrutPlacement {
-    tops: [Option<Point2<f64>>; 2],
-    /// The track's forward and aft ends, a nut's radius beyond the carriage's travel.
-    track_ends: [Point2<f64>; 2],
-}
-
-impl StrutPlacement {
-    fn of(spec: &LinkTrackSpec, found: &search::Found) -> Self {
-        let loop_ = &found.loop_;
-        let travel = found.turns[1];
-        let samples = flapwright_mechanism::shared::placement::PLACEMENT_SAMPLES;
-        let flap_poses: Vec<Isometry2<f64>> = (0..=samples)
-            .filter_map(|k| loop_.at(travel * k as f64 / samples as f64).map(|p| p.flap))
-            .collect();
-        let landing_c = loop_.c + loop_.d.into_inner() * loop_.at(travel).map_or(0.0, |p| p.travel);
-        let extra = spec.hardware.nut_radius_m;
-        let track_ends = [
-            loop_.c - loop_.d.into_inner() * extra,
-            landing_c + loop_.d.into_inner() * extra,
-        ];
-        let ahead = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
-        let margin = spec.hardware.link_radius_m;
-        let strut = |from: Point2<f64>, avoid| {
-            flapwright_mechanism::shared::placement::strut_top(
-                &spec.outline,
-                from,
-                &ahead,
-                margin,
-                margin,
-                &flap_poses,
-                avoid,
-            )
-        };
-        let first = strut(loop_.o, None);
-        let second = strut(track_ends[0], first);
-        Self {
-            tops: [first, second],
-            track_ends,
-        }
-    }
-
-    fn clear(&self) -> bool {
-        self.tops.iter().all(Option::is_some)
-    }
-}
-
 impl LinkTrack {
     /// Synthesises the link and the track through the three precision positions. Errors
     /// ([`Error::Synthesis`]): no feasible pair, with the dominant defect and the counts;
@@ -510,13 +463,7 @@ impl LinkTrack {
             actuator: spec.rotary.actuator_for(travel),
             search: counts,
             trade,
-            followed: spec
-                .follow
-                .as_ref()
-                .map(|f| flapwright_mechanism::shared::follow::FollowedStation {
-                    station: f.station.clone(),
-                    miss_m: found.follow_miss,
-                }),
+            followed: spec.follow.as_ref().map(|f| f.followed(found.follow_miss)),
         };
         // The flap's rate: certified on RATE_INTERVALS pieces of the deployment, or from the
         // transmission angle alone.

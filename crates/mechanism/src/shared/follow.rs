@@ -69,6 +69,14 @@ pub struct FollowedStation {
 }
 
 impl FollowedMotion {
+    /// What a follower whose largest miss from this motion is `miss_m` reports.
+    pub fn followed(&self, miss_m: f64) -> FollowedStation {
+        FollowedStation {
+            station: self.station.clone(),
+            miss_m,
+        }
+    }
+
     /// The drive fraction of sample `k`.
     pub fn fraction(&self, k: usize) -> f64 {
         k as f64 / (self.flap_poses.len().max(2) - 1) as f64

@@ -43,13 +43,17 @@ pub const JACK_TRADE_CANDIDATES: usize = 8;
 
 impl PlacedJack {
     /// The jack at candidate `index` of its trade instead of the search's choice (marked
-    /// chosen there); itself for `None`. Errors with the trade's length where it has no such
-    /// candidate.
-    pub fn picked(self, index: Option<usize>) -> std::result::Result<Self, usize> {
+    /// chosen there); itself for `None`. Errors: [`crate::Error::NoSuchTradeCandidate`] of
+    /// `kind` where the trade has no such candidate.
+    pub fn picked(self, kind: &'static str, index: Option<usize>) -> crate::Result<Self> {
         let Some(index) = index else {
             return Ok(self);
         };
-        let picked = *self.trade.get(index).ok_or(self.trade.len())?;
+        let picked = *self.trade.get(index).ok_or(crate::Error::NoSuchTradeCandidate {
+            kind,
+            index,
+            count: self.trade.len(),
+        })?;
         let trade = self
             .trade
             .iter()

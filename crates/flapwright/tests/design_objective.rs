@@ -62,7 +62,11 @@ fn weighed_by_its_load_the_link_turns_further_than_the_shallowest_link() {
 
 #[test]
 fn a_load_weight_out_of_range_is_refused_by_key_and_line() {
-    for key in ["actuator_load_weight", "rotary_actuator_load_weight"] {
+    for key in [
+        "actuator_load_weight",
+        "rotary_actuator_load_weight",
+        "mechanism_mass_weight",
+    ] {
         let text = link_track_at_ob_inner(&format!("[design]\n{key} = 11.0\n"));
         let error = Scene::from_toml(&text, &NoFiles)
             .expect_err("11 is out of range")

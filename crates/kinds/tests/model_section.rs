@@ -97,6 +97,7 @@ pub fn dropped_hinge_spec() -> DroppedHingeSpec {
         outline,
         design_loads: Vec::new(),
         load_weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
+        mass_weighing: None,
     }
 }
 
@@ -132,6 +133,7 @@ pub fn four_bar_spec() -> FourBarSpec {
         design_loads: Vec::new(),
         load_weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
         load_cap: flapwright_kinds::four_bar::DEFAULT_JACK_LOAD_CAP,
+        mass_weighing: None,
         trade_index: None,
     }
 }

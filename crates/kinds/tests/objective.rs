@@ -24,6 +24,7 @@ fn the_objectives_load_by_virtual_work_equals_each_kinds_statics() {
             flap_mass: mechanism.flap_mass().unwrap(),
             weight: DEFAULT_LOAD_WEIGHT,
             load_cap: None,
+            mass: None,
         };
         // Inputs measured from stowed, as the objective's body rotations are.
         let travel = range.travel();
@@ -389,5 +390,56 @@ fn a_four_bar_takes_the_jack_trade_candidate_it_is_given_by_index() {
             assert_eq!(index, flapwright_mechanism::shared::placement::JACK_TRADE_CANDIDATES);
         }
         other => panic!("{:?}", other.map(|_| "a mechanism")),
+    }
+}
+
+/// The searches' mass estimate (`shared::objective::MassWeighing`) is the sizing stage's:
+/// a screw sized for strength and Euler buckling and an arm sized for its bending moment by
+/// `flapwright_sizing::size_rod` weigh what the estimate says, to rounding, over loads and
+/// lengths where strength and where buckling governs the screw.
+#[test]
+fn the_searches_mass_estimate_is_the_sizing_stages() {
+    use flapwright_mechanism::shared::objective::{MassWeighing, MemberMaterial};
+    use flapwright_sizing::{size_rod, BendingLoad, Material, RodInput};
+    let member = |m: &Material| MemberMaterial {
+        density_kg_m3: m.density_kg_m3,
+        allowable_pa: m.allowable_tensile_pa,
+        youngs_modulus_pa: m.youngs_modulus_pa,
+    };
+    let (steel, aluminium) = (Material::steel_4340(), Material::aluminium_7075_t6());
+    let weighing = MassWeighing {
+        weight: 1.0,
+        link: member(&aluminium),
+        screw: member(&steel),
+        safety_factor: 1.5,
+        screw_end_fixity_factor: 0.7,
+    };
+    let mut governing = std::collections::BTreeSet::new();
+    for (length, force) in [(0.05, 400e3), (0.4, 60e3), (0.9, 20e3), (1.5, 150e3)] {
+        let mut screw = RodInput::new("s", "screw", length, 0.0, force * 1.5);
+        screw.end_fixity_factor = 0.7;
+        let sized = size_rod(&screw, &steel).unwrap();
+        governing.insert(format!("{:?}", sized.governing));
+        let estimate = weighing.screw_mass_kg(length, force);
+        assert!(
+            (estimate - sized.mass_kg).abs() <= 1e-9 * sized.mass_kg,
+            "screw {length} m, {force} N: {estimate} kg against {} kg",
+            sized.mass_kg
+        );
+    }
+    assert_eq!(governing.len(), 2, "strength and buckling both tried: {governing:?}");
+    for (length, moment) in [(0.2, 5e3), (0.6, 30e3)] {
+        let mut arm = RodInput::new("s", "horn", length, 0.0, 0.0);
+        arm.bending = vec![BendingLoad {
+            axial_n: 0.0,
+            bending_moment_nm: moment * 1.5,
+        }];
+        let sized = size_rod(&arm, &aluminium).unwrap();
+        let estimate = weighing.arm_mass_kg(length, moment);
+        assert!(
+            (estimate - sized.mass_kg).abs() <= 1e-9 * sized.mass_kg,
+            "arm {length} m, {moment} N m: {estimate} kg against {} kg",
+            sized.mass_kg
+        );
     }
 }

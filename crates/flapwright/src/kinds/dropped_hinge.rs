@@ -179,6 +179,7 @@ impl KindScene for DroppedHingeScene {
             outline: flap.outline.clone(),
             design_loads: context.design_loads.clone(),
             load_weight: context.actuator_load_weight,
+            mass_weighing: context.mass_weighing,
         };
         DroppedHinge::synthesise(spec)
             .map(|m| Arc::new(m) as Arc<dyn FlapMechanism>)

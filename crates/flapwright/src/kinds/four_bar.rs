@@ -125,6 +125,7 @@ impl KindScene for FourBarScene {
             design_loads: context.design_loads.clone(),
             load_weight: context.actuator_load_weight,
             load_cap: context.four_bar_actuator_load_cap,
+            mass_weighing: context.mass_weighing,
             trade_index: self.trade_index,
         };
         // Follow the flap's first station (where the scene fixes neither moving pivot): the

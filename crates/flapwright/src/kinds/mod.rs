@@ -64,6 +64,9 @@ pub struct SynthesisContext {
     /// `[design] four_bar_actuator_load_cap`: the four-bar's screw load, in reference
     /// loads, above which its placement trades steeply.
     pub four_bar_actuator_load_cap: f64,
+    /// `[design] mechanism_mass_weight` with the scene's materials and safety factor: how
+    /// the screw jacks' placements weigh the mass they add; `None` where the weight is 0.
+    pub mass_weighing: Option<flapwright_mechanism::shared::objective::MassWeighing>,
     /// The radii the sizing loop found the drawn solids must reach at this station
     /// (`pipeline::sizing_loop`); none on the first synthesis.
     pub sized: SizedHardware,

@@ -265,6 +265,7 @@ pub fn synthesis_context(
             actuator_load_weight: flapwright_mechanism::shared::objective::DEFAULT_LOAD_WEIGHT,
             rotary_actuator_load_weight: flapwright_mechanism::shared::objective::DEFAULT_ROTARY_LOAD_WEIGHT,
             four_bar_actuator_load_cap: flapwright_kinds::four_bar::DEFAULT_JACK_LOAD_CAP,
+            mass_weighing: None,
             sized: Default::default(),
         },
         Some(measure),

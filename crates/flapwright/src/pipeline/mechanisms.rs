@@ -45,6 +45,7 @@ pub fn synthesise_all(
         }
         _ => vec![None; scene.station.len()],
     };
+    let mass_weighing = mass_weighing(scene)?;
     // The synthesis inputs of every station first: the stations of one flap share its
     // rigid poses at the settings.
     let mut placed = placed.into_iter();
@@ -86,6 +87,7 @@ pub fn synthesise_all(
         context.actuator_load_weight = scene.design.actuator_load_weight;
         context.rotary_actuator_load_weight = scene.design.rotary_actuator_load_weight;
         context.four_bar_actuator_load_cap = scene.design.four_bar_actuator_load_cap;
+        context.mass_weighing = mass_weighing;
         context.sized = sized.get(i).copied().unwrap_or_default();
         inputs.push((placed, context, flap_behind_wing, Vec::new()));
     }
@@ -271,6 +273,34 @@ fn synthesise_flap(
         }
     }
     results
+}
+
+/// How the screw jacks' placements weigh the mass they add: `[design]
+/// mechanism_mass_weight` with the `[sizing]` link and screw materials and the safety factor
+/// the sizing stage applies; `None` where the weight is 0.
+fn mass_weighing(scene: &Scene) -> Result<Option<flapwright_mechanism::shared::objective::MassWeighing>> {
+    use flapwright_mechanism::shared::objective::{MassWeighing, MemberMaterial};
+    if scene.design.mechanism_mass_weight <= 0.0 {
+        return Ok(None);
+    }
+    let member = |name: &str| -> Result<MemberMaterial> {
+        let m = crate::pipeline::sizing::material(scene, name)?;
+        Ok(MemberMaterial {
+            density_kg_m3: m.density_kg_m3,
+            allowable_pa: m.allowable_tensile_pa,
+            youngs_modulus_pa: m.youngs_modulus_pa,
+        })
+    };
+    Ok(Some(MassWeighing {
+        weight: scene.design.mechanism_mass_weight,
+        link: member(&scene.sizing.link_material)?,
+        screw: member(&scene.sizing.screw_material)?,
+        safety_factor: scene
+            .loads
+            .safety_factor
+            .unwrap_or(flapwright_sizing::CS25_SAFETY_FACTOR),
+        screw_end_fixity_factor: scene.sizing.screw_end_fixity_factor,
+    }))
 }
 
 /// A kind given by its dimensions (the five-bar: its range is known once it is assembled)

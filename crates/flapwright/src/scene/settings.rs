@@ -190,6 +190,17 @@ pub struct DesignScene {
     /// air and inertia load on the flap.
     #[serde(default = "default_four_bar_actuator_load_cap")]
     pub four_bar_actuator_load_cap: f64,
+    /// Weight of the mass a screw jack's placement adds (the screw and a horn beyond the
+    /// body's pivot, sized from the `[sizing]` materials under the load cases times the
+    /// safety factor), in the station's flap shares, against the fairing's depth in flap
+    /// chords; 0: not weighed. Default 0.5: a kilogram worth about 5 mm of fairing depth on
+    /// `transport-flap`, whose 1.6-1.8 m flaps' stations carry 150-180 kg each.
+    #[serde(default = "default_mechanism_mass_weight")]
+    pub mechanism_mass_weight: f64,
+}
+
+fn default_mechanism_mass_weight() -> f64 {
+    flapwright_mechanism::shared::objective::DEFAULT_MASS_WEIGHT
 }
 
 fn default_four_bar_actuator_load_cap() -> f64 {
@@ -210,6 +221,7 @@ impl Default for DesignScene {
             actuator_load_weight: default_actuator_load_weight(),
             rotary_actuator_load_weight: default_rotary_actuator_load_weight(),
             four_bar_actuator_load_cap: default_four_bar_actuator_load_cap(),
+            mechanism_mass_weight: default_mechanism_mass_weight(),
         }
     }
 }

@@ -79,6 +79,10 @@ pub struct DroppedHingeSpec {
     /// Weight of the actuator's peak load against the fairing's depth.
     #[serde(skip)]
     pub load_weight: f64,
+    /// How the jack's placement weighs the mass it adds (the screw and a horn below the
+    /// hinge); `None`: not at all.
+    #[serde(skip)]
+    pub mass_weighing: Option<flapwright_mechanism::shared::objective::MassWeighing>,
 }
 
 impl DroppedHingeSpec {
@@ -90,6 +94,7 @@ impl DroppedHingeSpec {
             flap_mass: self.flap_mass,
             weight: self.load_weight,
             load_cap: None,
+            mass: self.mass_weighing,
         })
     }
 }

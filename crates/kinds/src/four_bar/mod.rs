@@ -95,6 +95,10 @@ pub struct FourBarSpec {
     /// The screw's load (reference loads) above which the placement trades steeply.
     #[serde(skip)]
     pub load_cap: f64,
+    /// How the jack's placement weighs the mass it adds (the screw and a horn beyond O1);
+    /// `None`: not at all.
+    #[serde(skip)]
+    pub mass_weighing: Option<flapwright_mechanism::shared::objective::MassWeighing>,
     /// Take this candidate of the jack placement's trade (the report's `jack_trade`, from
     /// 0) instead of the one the weights choose, for every linkage the search builds (of
     /// those whose trade has it, the usual choice); `None`: theirs.
@@ -113,6 +117,7 @@ impl FourBarSpec {
             flap_mass: self.flap_mass,
             weight: self.load_weight,
             load_cap: Some(self.load_cap),
+            mass: self.mass_weighing,
         })
     }
 }

@@ -722,6 +722,7 @@ impl LinkTrackSpec {
             flap_mass: self.flap_mass,
             weight: self.load_weight,
             load_cap: None,
+            mass: None,
         })
     }
 }

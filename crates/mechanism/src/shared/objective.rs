@@ -17,6 +17,20 @@
 //! actuator (a judgement: a deeper fairing costs drag in cruise, a heavier actuator and
 //! structure cost weight; both of the order of each other on a transport flap).
 //!
+//! With a [`MassWeighing`] the cost also counts the mass the actuator's placement adds:
+//!
+//! ```text
+//! cost += w_m · (m_screw + m_horn) / m_flap
+//! ```
+//!
+//! the screw and the horn (the arm beyond the body's pivot that a screw takes hold of)
+//! sized as the sizing stage sizes them (solid round rods of the scene's materials under
+//! the design loads times the safety factor: the screw for strength and Euler buckling, the
+//! horn for its bending moment at the pivot, which is the body's torque), against the
+//! flap share the station carries, m_flap. Weighed by load alone, a placement took a horn
+//! half again as long for a screw a fifth less loaded and the crank that carried it grew
+//! from 56 to 89 kg between neighbouring landing deflections (`transport-flap`'s four-bar).
+//!
 //! The load a body needs is found by virtual work from the flap's poses alone, whatever
 //! the kind: the torque about the body's pivot is minus the power of the flap's wrench
 //! ([`FlapWrench`]) per unit body rotation, the flap's velocity by central differences of
@@ -59,6 +73,66 @@ pub struct LoadWeighing {
     /// [`CAP_EXCESS_WEIGHT`] more: a search then takes the shallowest candidate whose
     /// actuator carries at most this, and trades steeply beyond it. `None`: no cap.
     pub load_cap: Option<f64>,
+    /// How the mass a placement adds is weighed; `None`: not at all.
+    pub mass: Option<MassWeighing>,
+}
+
+/// Default weight of the mass a placement adds, in the station's flap shares, against the
+/// depth in flap chords: a kilogram is worth about 5 mm of fairing depth on
+/// `transport-flap`'s 1.6-1.8 m flaps, whose stations carry 150-180 kg each. The order of it:
+/// a fairing 0.1 m deeper adds of the order of 0.1-0.2 drag counts on a single-aisle
+/// transport, and a count is worth about 200 kg of weight at a lift-to-drag ratio of 17
+/// (q S 1e-4 L/D / g with q = 10 kPa in cruise and S = 122 m^2); so 1 kg is worth 2.5-5 mm.
+pub const DEFAULT_MASS_WEIGHT: f64 = 0.5;
+
+/// A structural material as the searches' mass estimate needs it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MemberMaterial {
+    /// Density (kg/m^3).
+    pub density_kg_m3: f64,
+    /// Allowable normal stress (Pa).
+    pub allowable_pa: f64,
+    /// Young's modulus (Pa).
+    pub youngs_modulus_pa: f64,
+}
+
+/// How a search weighs the mass a placement adds ([`LoadWeighing::mass`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MassWeighing {
+    /// Weight of the mass in the station's flap shares against the depth in flap chords.
+    pub weight: f64,
+    /// The links' and arms' material.
+    pub link: MemberMaterial,
+    /// The screw's material.
+    pub screw: MemberMaterial,
+    /// The factor on the load cases' loads the sizing applies.
+    pub safety_factor: f64,
+    /// Euler's effective-length factor of the screw.
+    pub screw_end_fixity_factor: f64,
+}
+
+impl MassWeighing {
+    /// Mass of a solid round rod of `length_m` carrying `force_n` along it (kg): the larger
+    /// of the strength radius, sqrt(F / (pi sigma)), and Euler's, (4 F (K L)^2 / (pi^3 E))^(1/4),
+    /// with the force times the safety factor (the sizing stage's rods, `flapwright_sizing::rod`).
+    pub fn screw_mass_kg(&self, length_m: f64, force_n: f64) -> f64 {
+        use std::f64::consts::PI;
+        let (m, f) = (&self.screw, force_n.abs() * self.safety_factor);
+        let strength = (f / (PI * m.allowable_pa)).sqrt();
+        let effective = self.screw_end_fixity_factor * length_m;
+        let buckling = (4.0 * f * effective * effective / (PI.powi(3) * m.youngs_modulus_pa)).powf(0.25);
+        let r = strength.max(buckling);
+        m.density_kg_m3 * PI * r * r * length_m
+    }
+
+    /// Mass of a solid round arm of `length_m` whose bending moment reaches `moment_nm`
+    /// (kg): radius (4 M / (pi sigma))^(1/3) with the moment times the safety factor.
+    pub fn arm_mass_kg(&self, length_m: f64, moment_nm: f64) -> f64 {
+        use std::f64::consts::PI;
+        let m = &self.link;
+        let r = (4.0 * moment_nm.abs() * self.safety_factor / (PI * m.allowable_pa)).cbrt();
+        m.density_kg_m3 * PI * r * r * length_m
+    }
 }
 
 /// The cost of each reference load above [`LoadWeighing::load_cap`], against the depth in
@@ -147,6 +221,17 @@ impl LoadWeighing {
             .map_or(0.0, |cap| CAP_EXCESS_WEIGHT * (load - cap).max(0.0));
         depth_m / flap_chord_m.max(1e-9) + self.weight * load + excess
     }
+
+    /// What `mass_kg` of mechanism costs: [`MassWeighing::weight`] times it in the station's
+    /// flap shares; 0 without a mass weighing or a flap mass.
+    pub fn mass_cost(&self, mass_kg: f64) -> f64 {
+        match self.mass {
+            Some(mass) if self.flap_mass.mass_kg > 0.0 && mass_kg.is_finite() => {
+                mass.weight * mass_kg / self.flap_mass.mass_kg
+            }
+            _ => 0.0,
+        }
+    }
 }
 
 #[cfg(test)]
@@ -165,6 +250,7 @@ mod tests {
             },
             weight: DEFAULT_LOAD_WEIGHT,
             load_cap: None,
+            mass: None,
         }
     }
 

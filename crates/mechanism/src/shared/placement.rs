@@ -32,7 +32,8 @@ pub struct JackTradeCandidate {
     pub depth_below_pivot_m: f64,
     /// The screw's peak force under the load cases (N).
     pub peak_load_n: f64,
-    /// The search's cost ([`LoadWeighing::cost`] plus the short-stroke term).
+    /// The search's cost ([`LoadWeighing::cost`] plus the short-stroke term and
+    /// [`LoadWeighing::mass_cost`] of the screw and the horn).
     pub cost: f64,
     /// The search's choice.
     pub chosen: bool,
@@ -107,7 +108,8 @@ pub struct JackSize {
 /// jack body keep `margin` clear of `outline` with the flap at `flap_at(ψ)` for sampled
 /// body rotations ψ, the one of least cost: the depth its lowest point reaches in flap
 /// chords, plus, with `weighing`, its peak screw force under the load cases in reference
-/// forces ([`LoadWeighing::cost`]); without, the shallowest. With `weighing`, the grid's best
+/// forces ([`LoadWeighing::cost`]) and the mass of the screw and of a horn beyond the pivot
+/// ([`LoadWeighing::mass_cost`]); without, the shallowest. With `weighing`, the grid's best
 /// is then refined (a compass search): the attachment's fraction (within the fractions' range), the
 /// standoff (within the standoffs') and the mount's turn moved while the cost falls, so
 /// that the placement follows its inputs smoothly instead of stepping from one grid point
@@ -135,7 +137,8 @@ pub fn screw_jack_placement(
     let flap_chord = outline.flap_chord().map_or(1.0, |(_, _, chord)| chord);
     let loading = weighing.map(|w| {
         let torques = w.body_torques(&rotations, rotation_rad, flap_at);
-        (w, torques, w.reference_force_n(&flap_poses))
+        let peak_torque = torques.iter().flatten().copied().fold(0.0, f64::max);
+        (w, torques, w.reference_force_n(&flap_poses), peak_torque)
     });
     let on_arm = |fraction: f64| arm.0 + (arm.1 - arm.0) * fraction;
     // One candidate: None where the drive cannot be built or transmits too little, else
@@ -182,7 +185,7 @@ pub fn screw_jack_placement(
             .fold(mount.y - size.body_radius_m - 0.5 * size.body_length_m, f64::min);
         let depth = pivot.y - lowest;
         let (cost, peak) = match &loading {
-            Some((w, torques, reference)) => {
+            Some((w, torques, reference, peak_torque)) => {
                 // The screw's force: the body's torque times dψ/ds.
                 let peak = rotations
                     .iter()
@@ -195,8 +198,12 @@ pub fn screw_jack_placement(
                     })
                     .fold(0.0, f64::max);
                 let stroke = (drive.stroke_at(rotation_rad) - drive.stroke_at(0.0)).abs();
+                let added_mass = w.mass.map_or(0.0, |mass| {
+                    let horn = horn_length(pivot, arm, attachment);
+                    mass.screw_mass_kg(length, peak) + mass.arm_mass_kg(horn, *peak_torque)
+                });
                 (
-                    w.cost(depth, flap_chord, peak, *reference) + short_stroke_cost(stroke),
+                    w.cost(depth, flap_chord, peak, *reference) + short_stroke_cost(stroke) + w.mass_cost(added_mass),
                     peak,
                 )
             }
@@ -271,6 +278,23 @@ pub fn screw_jack_placement(
         ..candidate_of(pair, figures)
     };
     Ok((pair, jack_trade(chosen, clear_candidates)))
+}
+
+/// Length of the horn a screw attached at `attachment` needs (m): its distance from the
+/// body's `pivot` where it lies beyond the pivot on the arm's line, away from the arm's
+/// other end; 0 on the arm itself.
+fn horn_length(pivot: Point2<f64>, arm: (Point2<f64>, Point2<f64>), attachment: Point2<f64>) -> f64 {
+    let far = if (arm.0 - pivot).norm() >= (arm.1 - pivot).norm() {
+        arm.0
+    } else {
+        arm.1
+    };
+    let out = attachment - pivot;
+    if out.dot(&(far - pivot)) < 0.0 {
+        out.norm()
+    } else {
+        0.0
+    }
 }
 
 /// What a placement costs and measures.

@@ -88,6 +88,14 @@ impl Checker<'_> {
             10.0,
             false,
         );
+        // A weight of 10 makes a flap share of mechanism worth ten flap chords of depth.
+        self.in_range(
+            "design.mechanism_mass_weight",
+            scene.design.mechanism_mass_weight,
+            0.0,
+            10.0,
+            false,
+        );
         self.in_range(
             "design.four_bar_actuator_load_cap",
             scene.design.four_bar_actuator_load_cap,

@@ -16,6 +16,7 @@ mod stage_failures;
 mod stations;
 mod stl_reader;
 mod study;
+mod sweep;
 mod synthesised_kinds;
 mod trust;
 mod two_element;

@@ -6,6 +6,7 @@ use std::process::ExitCode;
 
 use anyhow::Context;
 mod authoring;
+mod sweep;
 
 use clap::{Parser, Subcommand};
 use flapwright::pipeline::{self, Inputs, Mode};
@@ -150,6 +151,30 @@ enum Command {
         #[arg(long, value_delimiter = ',')]
         station: Vec<String>,
     },
+    /// Design many variants of a scene in parallel into one table (`OUT/sweep.csv`).
+    ///
+    /// Each variant is the scene with keys set to other values, the keys named as the
+    /// scene's problems name them (`flap[0].settings.landing_deg`, `[*]` for every element,
+    /// `[name]` for the one of that name). A row per variant: its values, its scene's
+    /// SHA-256, the verdict and the whole wing's figures, or the error that stopped it. Rows
+    /// already in the table are kept (run again to resume).
+    Sweep {
+        /// Scene file (TOML). Without it, the embedded default scene.
+        scene: Option<PathBuf>,
+        /// Output folder; the table is `sweep.csv` in it.
+        #[arg(long, default_value = "flapwright-sweep")]
+        out: PathBuf,
+        /// KEY=START:STOP:STEP or KEY=A,B,C; several give their product, the first varied
+        /// slowest.
+        #[arg(long)]
+        vary: Vec<String>,
+        /// A CSV table of variants: its header names the keys, each row a variant.
+        #[arg(long)]
+        variants: Option<PathBuf>,
+        /// I/N: design only every N-th variant, from the I-th (a job array's part).
+        #[arg(long)]
+        shard: Option<String>,
+    },
     /// Print the scene's JSON Schema, for editors with a TOML language server.
     ///
     /// Print the scene's JSON Schema (for editors: a TOML language server completes and
@@ -276,6 +301,24 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         }
         Some(Command::Kinds) => return authoring::kinds(cli),
         Some(Command::Schema) => return authoring::schema(),
+        Some(Command::Sweep {
+            scene,
+            out,
+            vary,
+            variants,
+            shard,
+        }) => {
+            return sweep::sweep(
+                cli,
+                &sweep::SweepArgs {
+                    scene: scene.as_deref(),
+                    out,
+                    vary,
+                    variants: variants.as_deref(),
+                    shard: shard.as_deref(),
+                },
+            )
+        }
         _ => {}
     }
     if let Some(Command::Study {
@@ -292,7 +335,9 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         Some(Command::Design { scene, out }) => (scene.clone(), out.clone(), Mode::Design, None),
         Some(Command::Check { scene, out, junit, .. }) => (scene.clone(), out.clone(), Mode::Check, junit.clone()),
         Some(Command::Export { scene, out, .. }) => (scene.clone(), out.clone(), Mode::Export, None),
-        Some(Command::Study { .. } | Command::Init { .. } | Command::Kinds | Command::Schema) => {
+        Some(
+            Command::Study { .. } | Command::Init { .. } | Command::Kinds | Command::Schema | Command::Sweep { .. },
+        ) => {
             unreachable!("handled above")
         }
     };

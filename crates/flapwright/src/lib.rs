@@ -14,6 +14,7 @@
 //! - [`report`]: the `report.json` schema (documented in `docs/report.md`).
 //! - [`junit`]: JUnit XML of the interference check, for CI.
 //! - [`study`]: the trade study of mechanism kinds at the scene's stations.
+//! - [`sweep`]: many variants of a scene designed in parallel, one table out.
 //! - [`error`]: the crate's one error type ([`Error`], [`Result`]): each variant names what
 //!   failed and wraps the lower crate's error, so the command line prints the chain.
 //!
@@ -28,6 +29,7 @@ pub mod report;
 pub mod scene;
 pub mod sink;
 pub mod study;
+pub mod sweep;
 
 pub use error::{Error, Result};
 pub use sink::{MemorySink, Sink};

@@ -535,7 +535,7 @@ fn design_kind(
 }
 
 /// One station's figures from its kind's report.
-fn station_figures(report: &Report, station: &StationReport) -> Result<StationFigures, MissingSection> {
+pub(crate) fn station_figures(report: &Report, station: &StationReport) -> Result<StationFigures, MissingSection> {
     let missing = |section| MissingSection {
         station: station.name.clone(),
         section,

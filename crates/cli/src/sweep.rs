@@ -6,7 +6,7 @@ use std::path::Path;
 use std::time::Instant;
 
 use flapwright::scene::Scene;
-use flapwright::sweep::{csv_bytes, csv_header, rows_done, Shard, Sweep, Variants, Vary, Verdict};
+use flapwright::sweep::{csv_bytes, csv_header, rows_done, Shard, Sweep, Variants, Verdict};
 
 use crate::{bad_input, read_scene_text, Cli, Failure, EXIT_FAILED};
 
@@ -31,30 +31,16 @@ pub(crate) fn sweep(cli: &Cli, args: &SweepArgs<'_>) -> Result<(), Failure> {
     // The user's own scene first: its problems located in its own file.
     Scene::from_file_text(&text, &label, files.as_ref())
         .map_err(|e| bad_input(anyhow::Error::new(e).context(format!("invalid scene {label}"))))?;
-    let variants = match (args.vary.is_empty(), args.variants) {
-        (false, None) => {
-            let varies = args
-                .vary
-                .iter()
-                .map(|v| v.parse::<Vary>())
-                .collect::<Result<Vec<_>, _>>()
-                .map_err(bad)?;
-            Variants::product(&varies).map_err(bad)?
-        }
-        (true, Some(path)) => {
-            let table = std::fs::read_to_string(path).map_err(|e| {
-                bad_input(anyhow::Error::new(e).context(format!("reading variants table {}", path.display())))
-            })?;
-            Variants::from_csv(&table)
-                .map_err(|e| bad_input(anyhow::Error::new(e).context(format!("variants table {}", path.display()))))?
-        }
-        (false, Some(_)) => return Err(bad_input(anyhow::anyhow!("give --vary or --variants, not both"))),
-        (true, None) => {
-            return Err(bad_input(anyhow::anyhow!(
-                "nothing to sweep: give --vary KEY=START:STOP:STEP (or KEY=A,B,C), or --variants FILE.csv"
-            )))
-        }
+    let table = match args.variants {
+        Some(path) => Some(std::fs::read_to_string(path).map_err(|e| {
+            bad_input(anyhow::Error::new(e).context(format!("reading variants table {}", path.display())))
+        })?),
+        None => None,
     };
+    let variants = Variants::from_arguments(args.vary, table.as_deref()).map_err(|e| match args.variants {
+        Some(path) => bad_input(anyhow::Error::new(e).context(format!("variants table {}", path.display()))),
+        None => bad(e),
+    })?;
     let shard = match args.shard {
         Some(given) => given.parse::<Shard>().map_err(bad)?,
         None => Shard::ALL,

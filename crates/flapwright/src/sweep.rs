@@ -71,6 +71,9 @@ pub enum SweepError {
         /// What is wrong with it.
         why: String,
     },
+    /// Neither ranges nor a table of variants, or both.
+    #[error("{0}")]
+    Variants(&'static str),
     /// The user's scene text is not TOML (its own problems are located by `Scene`).
     #[error("the scene is not a TOML table: {0}")]
     NotToml(String),
@@ -353,6 +356,24 @@ pub struct Variants {
 }
 
 impl Variants {
+    /// The variants of `vary` (each `KEY=START:STOP:STEP` or `KEY=A,B,C`: their product)
+    /// or of `table` (CSV text), one of the two.
+    pub fn from_arguments(vary: &[String], table: Option<&str>) -> Result<Self, SweepError> {
+        match (vary.is_empty(), table) {
+            (false, None) => {
+                let varies = vary.iter().map(|v| v.parse::<Vary>()).collect::<Result<Vec<_>, _>>()?;
+                Self::product(&varies)
+            }
+            (true, Some(table)) => Self::from_csv(table),
+            (false, Some(_)) => Err(SweepError::Variants(
+                "give ranges (--vary) or a table of variants, not both",
+            )),
+            (true, None) => Err(SweepError::Variants(
+                "nothing to sweep: give --vary KEY=START:STOP:STEP (or KEY=A,B,C), or a table of variants (--variants FILE.csv)",
+            )),
+        }
+    }
+
     /// The product of the ranges, the first varied slowest.
     pub fn product(varies: &[Vary]) -> Result<Self, SweepError> {
         let mut rows: Vec<Vec<(String, toml::Value)>> = vec![Vec::new()];
@@ -527,8 +548,8 @@ pub struct SweepRow {
     pub error: Option<String>,
 }
 
-/// The figure columns after the keys.
-const FIGURE_COLUMNS: [&str; 12] = [
+/// The table's columns after the keys.
+pub const FIGURE_COLUMNS: [&str; 12] = [
     "scene_sha256",
     "verdict",
     "fairing_depth_percent_flap_chord",

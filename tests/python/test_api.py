@@ -1,0 +1,85 @@
+"""The Python package's API (issue 39): design, check and study of shipped scenes, typed
+errors with the command line's located problems, and a sweep equal to the CLI's table.
+
+Run by CI after `pip install .` (see .ci/run); `FLAPWRIGHT_BIN` names the binary the
+sweep is compared with (default: target/release/flapwright).
+"""
+
+import os
+import subprocess
+import tempfile
+
+import pytest
+
+import flapwright
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+SMALL = os.path.join(ROOT, "data", "scenes", "small-aircraft.toml")
+LIGHT = os.path.join(ROOT, "data", "scenes", "light-aircraft.toml")
+
+
+def test_a_shipped_scene_designs_and_its_report_reads_by_attribute():
+    d = flapwright.design(SMALL)
+    assert d.interference.passes is True
+    assert d["interference"]["passes"] is True
+    assert d.scene.name == "small-aircraft"
+    assert [s.name for s in d.stations] == ["inner", "outer"]
+
+
+def test_the_same_scene_as_text_and_as_a_path_gives_the_same_figures():
+    text = open(SMALL, encoding="utf-8").read()
+    by_path = flapwright.check(SMALL)
+    by_text = flapwright.check(text)
+    assert by_path.interference.passes == by_text.interference.passes
+    clearances = lambda r: [p["min_clearance_m"] for p in r.interference.pairs]
+    assert clearances(by_path) == clearances(by_text)
+
+
+def test_a_scene_problem_raises_scene_error_with_its_line_and_key():
+    text = open(LIGHT, encoding="utf-8").read().replace("landing_gap_percent = 2.0", "landing_gap_percent = 200.0")
+    with pytest.raises(flapwright.SceneError) as raised:
+        flapwright.design(text)
+    problems = raised.value.problems
+    assert problems, "at least one problem"
+    file, line, col, key, message = problems[0]
+    assert key.endswith("landing_gap_percent")
+    expected = text.splitlines().index("landing_gap_percent = 200.0") + 1
+    assert line == expected
+    assert isinstance(raised.value, flapwright.DesignError)
+
+
+def test_a_scene_given_as_a_dict_is_the_same_scene():
+    tomllib = pytest.importorskip("tomllib")
+
+    with open(LIGHT, "rb") as f:
+        tables = tomllib.load(f)
+    by_dict = flapwright.check(tables)
+    by_path = flapwright.check(LIGHT)
+    assert by_dict.interference.passes == by_path.interference.passes
+
+
+def test_a_sweep_equals_the_command_lines_table():
+    pandas = pytest.importorskip("pandas")
+    vary = "flap[*].settings.landing_gap_percent=1.6:2.4:0.4"
+    frame = flapwright.sweep(LIGHT, vary=vary)
+    assert list(frame["verdict"]) == ["pass", "pass", "pass"]
+    binary = os.environ.get("FLAPWRIGHT_BIN", os.path.join(ROOT, "target", "release", "flapwright"))
+    with tempfile.TemporaryDirectory() as out:
+        subprocess.run([binary, "sweep", LIGHT, "--vary", vary, "--out", out, "--quiet"], check=True)
+        table = open(os.path.join(out, "sweep.csv"), encoding="utf-8").read()
+    cli = pandas.read_csv(__import__("io").StringIO(table), dtype=str, keep_default_na=False)
+    # The scene hash differs only by the label: same text, same hash.
+    assert list(cli.columns) == list(frame.columns)
+    for column in cli.columns:
+        ours = [("" if isinstance(v, float) and v != v else str(v)) for v in frame[column]]
+        if column in ("variant", "warnings"):
+            assert [int(v) for v in cli[column]] == [int(v) for v in frame[column]]
+        elif column in flapwright._FIGURES:
+            assert [float(v) for v in cli[column]] == [float(v) for v in frame[column]], column
+        else:
+            assert list(cli[column]) == ours, column
+
+
+def test_a_sweep_of_a_key_the_scene_lacks_raises_naming_it():
+    with pytest.raises(flapwright.DesignError, match="no element named spoiler"):
+        flapwright.sweep(LIGHT, vary="flap[spoiler].settings.landing_deg=30,35")

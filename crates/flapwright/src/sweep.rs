@@ -153,8 +153,8 @@ impl std::str::FromStr for KeyPath {
 impl KeyPath {
     /// Sets the key to `value` in `table` (every element where the path says `[*]`).
     /// Errors: [`SweepError::NoSuchKey`] naming where the path leaves the scene. The last
-    /// key may be new (a key the scene leaves at its default); every table and array before
-    /// it must be in the scene.
+    /// key may be new (a key the scene leaves at its default), and so may the tables before
+    /// it (a table the scene leaves out); every array of tables must be in the scene.
     pub fn set(&self, table: &mut toml::Table, value: &toml::Value) -> Result<(), SweepError> {
         let mut root = toml::Value::Table(std::mem::take(table));
         let result = self.set_in(&mut root, &self.steps, value, String::new());
@@ -207,6 +207,11 @@ impl KeyPath {
                     };
                     table.insert(key.clone(), value);
                     return Ok(());
+                }
+                // A table the scene leaves out (`[design]`, all defaults) is made; an array
+                // of tables is not (which element would it be?).
+                if !table.contains_key(key) && matches!(rest.first(), Some(Step::Key(_))) {
+                    table.insert(key.clone(), toml::Value::Table(toml::Table::new()));
                 }
                 let next = table
                     .get_mut(key)
@@ -830,18 +835,16 @@ mod tests {
             .unwrap()
             .iter()
             .all(|f| f["y"].as_float() == Some(2.0)));
-        // A key the scene leaves at its default may be set; a table it lacks may not.
-        "design.actuator_load_weight"
-            .parse::<KeyPath>()
-            .unwrap()
-            .set(&mut scene, &two)
+        // A key the scene leaves at its default may be set, in a table it leaves out too;
+        // an array of tables it lacks may not be made.
+        let key = |text: &str| text.parse::<KeyPath>().unwrap();
+        key("design.actuator_load_weight").set(&mut scene, &two).unwrap();
+        key("outputs.svg")
+            .set(&mut scene, &toml::Value::Boolean(false))
             .unwrap();
-        let missing = "wing.span_m"
-            .parse::<KeyPath>()
-            .unwrap()
-            .set(&mut scene, &two)
-            .unwrap_err();
-        assert_eq!(missing.to_string(), "key `wing.span_m`: the scene has no `wing`");
+        assert_eq!(scene["outputs"]["svg"].as_bool(), Some(false));
+        let missing = key("station[0].name").set(&mut scene, &two).unwrap_err();
+        assert_eq!(missing.to_string(), "key `station[0].name`: the scene has no `station`");
         let beyond = "flap[2].x"
             .parse::<KeyPath>()
             .unwrap()

@@ -84,11 +84,18 @@ pub enum SweepError {
 enum Step {
     /// A table's key.
     Key(String),
-    /// An array's element by index.
+    /// Elements of an array.
+    Element(Selector),
+}
+
+/// Which elements of an array a step takes.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Selector {
+    /// By index.
     Index(usize),
-    /// The array's element whose `name` is this.
+    /// The element whose `name` is this.
     Named(String),
-    /// Every element of the array.
+    /// Every element.
     Every,
 }
 
@@ -132,14 +139,14 @@ impl std::str::FromStr for KeyPath {
                     return Err(bad("an unclosed or stray `[`"));
                 };
                 let inside = &rest[1..end];
-                steps.push(match inside {
+                steps.push(Step::Element(match inside {
                     "" => return Err(bad("`[]` selects nothing: give an index, a name or `*`")),
-                    "*" => Step::Every,
+                    "*" => Selector::Every,
                     _ => match inside.parse::<usize>() {
-                        Ok(index) => Step::Index(index),
-                        Err(_) => Step::Named(inside.to_string()),
+                        Ok(index) => Selector::Index(index),
+                        Err(_) => Selector::Named(inside.to_string()),
                     },
-                });
+                }));
                 rest = &rest[end + 1..];
             }
         }
@@ -218,16 +225,16 @@ impl KeyPath {
                     .ok_or_else(|| missing(format!("{here} has no `{key}`")))?;
                 self.set_in(next, rest, value, path)
             }
-            index_step => {
+            Step::Element(selector) => {
                 let toml::Value::Array(items) = at else {
                     return Err(missing(format!("{here} is not an array")));
                 };
                 let count = items.len();
-                let chosen: Vec<usize> = match index_step {
-                    Step::Index(i) if *i < count => vec![*i],
-                    Step::Index(i) => return Err(missing(format!("{here} has {count} elements, no [{i}]"))),
-                    Step::Every => (0..count).collect(),
-                    Step::Named(name) => {
+                let chosen: Vec<usize> = match selector {
+                    Selector::Index(i) if *i < count => vec![*i],
+                    Selector::Index(i) => return Err(missing(format!("{here} has {count} elements, no [{i}]"))),
+                    Selector::Every => (0..count).collect(),
+                    Selector::Named(name) => {
                         let found: Vec<usize> = (0..count)
                             .filter(|&i| items[i].get("name").and_then(|n| n.as_str()) == Some(name.as_str()))
                             .collect();
@@ -240,7 +247,6 @@ impl KeyPath {
                         }
                         found
                     }
-                    Step::Key(_) => unreachable!("matched above"),
                 };
                 for i in chosen {
                     self.set_in(&mut items[i], rest, value, format!("{place}[{i}]"))?;

@@ -1,5 +1,5 @@
 //! One pose (position, velocity, acceleration, forces) of the thesis screw-jack track, and a
-//! 1000-sample deployment sweep; and a 1000-sample sweep of the `001_...` five-bar double
+//! 1000-sample deployment sweep, full and lean; and a 1000-sample sweep of the `001_...` five-bar double
 //! flap's positions and rates (issue 16: <= 0.2 ms).
 // criterion_group! generates undocumented public functions.
 #![allow(missing_docs)]
@@ -23,6 +23,11 @@ fn pose_and_sweep(c: &mut Criterion) {
     });
     c.bench_function("sweep_1000", |b| {
         b.iter(|| track.sweep(black_box(1000), &landing).expect("sweeps"))
+    });
+    // The same deployment's 21 columns of `../shared/bench/thesis_sweep_numpy.py` (issue 39):
+    // positions, rates, accelerations, F_input and the screw torques.
+    c.bench_function("lean_sweep_1000", |b| {
+        b.iter(|| track.lean_sweep(black_box(1000), &landing).expect("sweeps"))
     });
 }
 

@@ -14,6 +14,8 @@
 //!   torques T_R, T_L.
 //! - [`CircularArcTrack::sweep`] (`sweep`) samples the deployment under a
 //!   [`LoadCase`](flapwright_mechanism::LoadCase), in the thesis's own columns ([`SweepSample`]).
+//! - [`CircularArcTrack::lean_sweep`] (`lean`) samples the same deployment for a trade study:
+//!   positions, rates and the actuator's load only, a column per quantity ([`LeanSweep`]).
 //! - `seam` presents all of it behind [`FlapMechanism`](flapwright_mechanism::FlapMechanism): bodies
 //!   flap, screw, nut and two tracks ([`TrackHardware`] sizes their solids), joints, poses
 //!   and loads keyed by joint name.
@@ -24,6 +26,7 @@
 //! functions and the load case live in [`flapwright_mechanism::shared`].
 
 mod kinetostatics;
+mod lean;
 mod pose;
 mod seam;
 mod spec;
@@ -31,6 +34,7 @@ mod sweep;
 mod synthesis;
 
 pub use kinetostatics::Forces;
+pub use lean::{LeanColumn, LeanSweep};
 pub use pose::{PointKinematics, Pose, PoseDiagnostics};
 pub use seam::{screw_outer_radius_m, TrackHardware};
 pub use spec::CircularArcTrackSpec;

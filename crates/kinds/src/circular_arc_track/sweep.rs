@@ -80,22 +80,25 @@ impl CircularArcTrack {
     /// Errors: [`Error::TooFewSamples`] for fewer than 2 samples. A pose or force failure
     /// does not error: the sweep stops there and says why in [`Sweep::stopped`].
     pub fn sweep(&self, samples: usize, load: &LoadCase) -> Result<Sweep> {
+        let inputs = self.evenly_spaced_inputs(samples)?;
+        Ok(self.sweep_at(inputs, load))
+    }
+
+    /// `samples` evenly spaced nut positions from s34,i to s34,f, the last exactly s34,f.
+    pub(crate) fn evenly_spaced_inputs(&self, samples: usize) -> Result<impl ExactSizeIterator<Item = f64> + '_> {
         if samples < 2 {
             return Err(Error::TooFewSamples { samples });
         }
         let (start, stroke) = (self.synthesis.stroke_start_m, self.synthesis.stroke_m);
         let last = (samples - 1) as f64;
         let end = self.synthesis.stroke_end_m;
-        Ok(self.sweep_at(
-            (0..samples).map(|i| {
-                if i + 1 == samples {
-                    end
-                } else {
-                    start + stroke * i as f64 / last
-                }
-            }),
-            load,
-        ))
+        Ok((0..samples).map(move |i| {
+            if i + 1 == samples {
+                end
+            } else {
+                start + stroke * i as f64 / last
+            }
+        }))
     }
 
     /// Sweep at the given nut positions (m), e.g. the spreadsheet's 10 mm rows.

@@ -1,6 +1,7 @@
 """Type stubs of the `flapwright` package (see its module docstring)."""
 
 import os
+from collections.abc import Iterator, Mapping
 from typing import Any, Iterable, Optional, Sequence, Union
 
 __version__: str
@@ -17,12 +18,28 @@ class SceneError(DesignError):
     """Each problem as (file, line, col, key, message); file, line and col are None where
     the problem has no place in a file."""
 
-class Record(dict[str, Any]):
-    """A dict whose keys are also attributes, nested."""
+class Record(Mapping[str, Any]):
+    """A read-only mapping whose keys are also attributes, nested; values converted when
+    first read (lists to numpy arrays or Tables)."""
 
+    def __init__(self, raw: Optional[dict[str, Any]] = ..., **values: Any) -> None: ...
+    def __getitem__(self, key: str) -> Any: ...
+    def __iter__(self) -> Iterator[str]: ...
+    def __len__(self) -> int: ...
     def __getattr__(self, name: str) -> Any: ...
+    def to_dict(self) -> dict[str, Any]:
+        """The values as the report has them (plain dicts, lists and numbers)."""
     @staticmethod
     def wrap(value: Any) -> Any: ...
+
+class Table(Record):
+    """Rows of one shape as columns: each key a numpy array (or a Table) with a value a row."""
+
+    def __init__(self, rows: list[dict[str, Any]]) -> None: ...
+    @property
+    def rows(self) -> int: ...
+    def row(self, i: int) -> Record: ...
+    def to_frame(self) -> Any: ...
 
 def design(scene: Scene) -> Record:
     """Designs the scene in memory: the report (docs/report.md)."""

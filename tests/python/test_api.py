@@ -31,8 +31,7 @@ def test_the_same_scene_as_text_and_as_a_path_gives_the_same_figures():
     by_path = flapwright.check(SMALL)
     by_text = flapwright.check(text)
     assert by_path.interference.passes == by_text.interference.passes
-    clearances = lambda r: [p["min_clearance_m"] for p in r.interference.pairs]
-    assert clearances(by_path) == clearances(by_text)
+    assert list(by_path.interference.pairs.min_clearance_m) == list(by_text.interference.pairs.min_clearance_m)
 
 
 def test_a_scene_problem_raises_scene_error_with_its_line_and_key():
@@ -83,3 +82,26 @@ def test_a_sweep_equals_the_command_lines_table():
 def test_a_sweep_of_a_key_the_scene_lacks_raises_naming_it():
     with pytest.raises(flapwright.DesignError, match="no element named spoiler"):
         flapwright.sweep(LIGHT, vary="flap[spoiler].settings.landing_deg=30,35")
+
+
+def test_the_reports_figures_are_numpy_arrays_and_tables():
+    numpy = pytest.importorskip("numpy")
+    d = flapwright.design(SMALL)
+    station = d.stations[0]
+    origin = station.plane.frame.origin_m
+    assert isinstance(origin, numpy.ndarray) and origin.shape == (3,)
+    samples = station.mechanism.load_cases[0].samples
+    assert isinstance(samples, flapwright.Table)
+    assert samples.actuator_load.dtype == float and samples.actuator_load.shape == (samples.rows,)
+    # A row reads back as the report has it; nested rows are tables of their own.
+    first = samples.row(0)
+    assert first["actuator_load"] == samples.actuator_load[0]
+    assert isinstance(samples.reactions_n, flapwright.Table)
+    assert first["reactions_n"]["A"] == samples.reactions_n.A[0]
+    pairs = d.interference.pairs
+    assert pairs.point_a_ac.shape == (pairs.rows, 3)
+    assert pairs.min_clearance_m.min() == min(pairs.row(i)["min_clearance_m"] for i in range(pairs.rows))
+    assert pairs.evaluations.dtype == numpy.int64
+    assert list(pairs.part_a[:1]) == ["flap"]
+    with pytest.raises(IndexError):
+        pairs.row(pairs.rows)

@@ -512,13 +512,15 @@ fn the_sizing_loop_draws_members_as_thick_as_they_are_sized() {
         !warnings.iter().any(|w| w["kind"] == "rod_exceeds_envelope"),
         "{warnings:?}"
     );
-    // Every sized rod fits its drawn solid: members in the links' radius, the screw in
-    // its mean radius.
+    // Every sized rod fits its drawn solid: members in the links' radius (the four-bar's
+    // struts in theirs), the screw in its mean radius.
     let mut checked = 0;
     for station in report["stations"].as_array().unwrap() {
         let name = station["name"].as_str().unwrap();
         let details = &station["mechanism"]["details"];
         let link_radius = details["hardware"]["link_radius_m"].as_f64().unwrap();
+        let strut_radius = details["hardware"]["strut_radius_m"].as_f64();
+        let four_bar = station["mechanism"]["kind"] == "four-bar";
         let screw_radius = details["synthesis"]["screw"]["mean_radius_m"].as_f64().unwrap();
         for rod in report["sizing"]["rods"]
             .as_array()
@@ -526,8 +528,11 @@ fn the_sizing_loop_draws_members_as_thick_as_they_are_sized() {
             .iter()
             .filter(|r| r["station"] == name)
         {
-            let drawn = if rod["name"] == "screw" {
+            let name_of = rod["name"].as_str().unwrap();
+            let drawn = if name_of == "screw" {
                 screw_radius
+            } else if four_bar && name_of.starts_with("strut-") {
+                strut_radius.unwrap()
             } else {
                 link_radius
             };

@@ -4,6 +4,7 @@ mod adding_a_kind;
 mod common;
 mod finite_differences;
 mod five_bar;
+mod four_bar_members;
 mod hooked_track;
 mod landing_gear;
 mod objective;

@@ -30,7 +30,7 @@ use serde::Serialize;
 
 use crate::error::Result;
 use crate::shared::load_case::LoadCase;
-pub use crate::shared::members::{Member, MemberLoad, MemberLoading};
+pub use crate::shared::members::{DrawnRadius, Member, MemberLoad, MemberLoading};
 use crate::shared::screw_jack::{ScrewJack, ScrewTorques};
 
 /// What the actuator moves.

@@ -79,6 +79,8 @@ pub struct SynthesisContext {
 pub struct SizedHardware {
     /// The links', arms' and struts' radius.
     pub link_radius_m: Option<f64>,
+    /// The four-bar's struts' radius.
+    pub strut_radius_m: Option<f64>,
     /// The screw's mean radius.
     pub screw_mean_radius_m: Option<f64>,
 }
@@ -154,6 +156,9 @@ impl SynthesisContext {
         let mut hardware = flapwright_mechanism::LinkHardware::for_flap_chord(flap_chord_m);
         if let Some(radius) = self.sized.link_radius_m {
             hardware.link_radius_m = hardware.link_radius_m.max(radius);
+        }
+        if let Some(radius) = self.sized.strut_radius_m {
+            hardware.strut_radius_m = hardware.strut_radius_m.max(radius);
         }
         if let Some(radius) = self.sized.screw_mean_radius_m {
             hardware.nut_radius_m = hardware.nut_radius_m.max(NUT_TO_SCREW_RADIUS * radius);

@@ -22,6 +22,7 @@ use crate::pipeline::mechanisms::{sweep_station, synthesise_all};
 use crate::pipeline::record::{PlacedStation, StationRecord};
 use crate::scene::Scene;
 use flapwright_geom::parts::WingModel;
+use flapwright_mechanism::seam::DrawnRadius;
 
 /// Most syntheses the loop runs (the first one included).
 pub const MAX_ITERATIONS: usize = 4;
@@ -104,6 +105,13 @@ pub fn synthesise_sized(
                     current.link_radius_m = Some(radius);
                 }
             }
+            if let Some(radius) = need.strut_radius_m.map(stock) {
+                let drawn = current.strut_radius_m.unwrap_or(0.0);
+                if radius > drawn {
+                    change = change.max(relative_growth(need.drawn_strut_radius_m, radius));
+                    current.strut_radius_m = Some(radius);
+                }
+            }
             if let Some(radius) = need.screw_mean_radius_m.map(stock) {
                 change = change.max(relative_growth(need.drawn_screw_radius_m, radius));
                 current.screw_mean_radius_m = Some(radius);
@@ -160,6 +168,8 @@ fn relative_growth(drawn: f64, sized: f64) -> f64 {
 struct Need {
     link_radius_m: Option<f64>,
     drawn_link_radius_m: f64,
+    strut_radius_m: Option<f64>,
+    drawn_strut_radius_m: f64,
     screw_mean_radius_m: Option<f64>,
     drawn_screw_radius_m: f64,
 }
@@ -189,6 +199,8 @@ fn needed_radii(
         let mut need = Need {
             link_radius_m: None,
             drawn_link_radius_m: f64::INFINITY,
+            strut_radius_m: None,
+            drawn_strut_radius_m: f64::INFINITY,
             screw_mean_radius_m: None,
             drawn_screw_radius_m: 0.0,
         };
@@ -202,12 +214,16 @@ fn needed_radii(
                 }
             } else if let Some(member) = members.iter().find(|m| m.name == rod.name) {
                 if rod.radius_m > member.radius_m * (1.0 + GROWTH_TOLERANCE) {
-                    need.link_radius_m = Some(need.link_radius_m.unwrap_or(0.0).max(rod.radius_m));
-                    need.drawn_link_radius_m = need.drawn_link_radius_m.min(member.radius_m);
+                    let (needed, drawn) = match member.drawn {
+                        DrawnRadius::Link => (&mut need.link_radius_m, &mut need.drawn_link_radius_m),
+                        DrawnRadius::Strut => (&mut need.strut_radius_m, &mut need.drawn_strut_radius_m),
+                    };
+                    *needed = Some(needed.unwrap_or(0.0).max(rod.radius_m));
+                    *drawn = drawn.min(member.radius_m);
                 }
             }
         }
-        if need.link_radius_m.is_some() || need.screw_mean_radius_m.is_some() {
+        if need.link_radius_m.is_some() || need.strut_radius_m.is_some() || need.screw_mean_radius_m.is_some() {
             needs.push((record.index, need));
         }
     }

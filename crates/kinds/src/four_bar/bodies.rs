@@ -86,8 +86,8 @@ pub(super) fn bodies_and_joints(
         name: "support".into(),
         role: BodyRole::Support,
         solids: vec![
-            capsule("strut-O1", o1, synthesis.strut_tops_m[0]),
-            capsule("strut-O2", o2, synthesis.strut_tops_m[1]),
+            BodySolid::capsule(super::STRUTS[0], o1, synthesis.strut_tops_m[0], hw.strut_radius_m),
+            BodySolid::capsule(super::STRUTS[1], o2, synthesis.strut_tops_m[1], hw.strut_radius_m),
         ],
         speed_bound: SpeedBound::FIXED,
     });

@@ -31,6 +31,7 @@ use serde::Serialize;
 
 mod bodies;
 mod linkage;
+mod members;
 mod search;
 mod synthesis;
 
@@ -328,6 +329,8 @@ pub(super) const RATE_INTERVALS: usize = 256;
 const FINALISTS: usize = 24;
 /// See [`FINALISTS`].
 const CLEAR_FINALISTS: usize = 4;
+/// The solids (and members) holding O1 and O2 to the wing.
+const STRUTS: [&str; 2] = ["strut-O1", "strut-O2"];
 pub(super) fn failure(defect: SynthesisDefect, detail: String) -> Error {
     Error::Synthesis {
         kind: KIND,
@@ -489,7 +492,13 @@ impl FlapMechanism for FourBar {
                 ),
                 // The rocker's axial force, tension positive (f pushes the flap away from O2).
                 ("rocker".into(), MemberLoad::axial(-rocker_force)),
-            ],
+                // The flap's bracket: the crank's pin force at A1, the rocker's at A2.
+                members::bracket_load(pose.a1, pin_a1, pose.a2, e2 * rocker_force),
+            ]
+            .into_iter()
+            // What the crank and the rocker put on their struts at O1 and O2.
+            .chain(self.support_loads(-crank_ground, -e2 * rocker_force))
+            .collect(),
         })
     }
 
@@ -535,19 +544,25 @@ impl FlapMechanism for FourBar {
         }
     }
 
-    /// The rocker, a two-force member, and the crank, which the screw turns from between
-    /// its pins (or from a horn beyond O1): three forces, so it bends.
+    /// The rocker, a two-force member; the crank, which the screw turns from between its
+    /// pins (or from a horn beyond O1): three forces, so it bends; the flap's bracket
+    /// between A1 and A2 and the struts holding O1 and O2, which bend too (`members`).
     fn members(&self) -> Vec<Member> {
-        let radius_m = self.spec.hardware.link_radius_m;
-        let crank_start = bodies::crank_start(self.loop_.o1, self.loop_.a1, self.synthesis.actuator_attachment_m);
+        let hw = &self.spec.hardware;
+        let l = &self.loop_;
+        let crank_start = bodies::crank_start(l.o1, l.a1, self.synthesis.actuator_attachment_m);
+        let [top1, top2] = self.synthesis.strut_tops_m;
         vec![
             Member::new(
                 "crank",
-                (self.loop_.a1 - crank_start).norm(),
-                radius_m,
+                (l.a1 - crank_start).norm(),
+                hw.link_radius_m,
                 MemberLoading::Bending,
             ),
-            Member::new("rocker", self.loop_.rocker, radius_m, MemberLoading::TwoForce),
+            Member::new("rocker", l.rocker, hw.link_radius_m, MemberLoading::TwoForce),
+            Member::new("bracket", l.coupler, hw.link_radius_m, MemberLoading::Bending),
+            Member::strut(STRUTS[0], (top1 - l.o1).norm(), hw.strut_radius_m),
+            Member::strut(STRUTS[1], (top2 - l.o2).norm(), hw.strut_radius_m),
         ]
     }
 

@@ -234,8 +234,17 @@ impl FourBar {
             .filter_map(|k| loop_.at(travel * k as f64 / PLACEMENT_SAMPLES as f64).map(|p| p.flap))
             .collect();
         let ahead = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
-        let strut =
-            |from: Point2<f64>| strut_top(&spec.outline, from, &ahead, hw.link_radius_m, margin, &flap_poses, None);
+        let strut = |from: Point2<f64>| {
+            strut_top(
+                &spec.outline,
+                from,
+                &ahead,
+                hw.strut_radius_m,
+                margin,
+                &flap_poses,
+                None,
+            )
+        };
         // A pivot whose strut to the skin would cross the flap's path is held by a beam to
         // the other pivot instead (one support beam carrying both), if that beam is clear.
         let beam_clear = |from: Point2<f64>, to: Point2<f64>| {
@@ -243,7 +252,7 @@ impl FourBar {
                 let back = pose.inverse();
                 spec.outline
                     .flap
-                    .segment_clear_by(back * from, back * to, hw.link_radius_m + margin)
+                    .segment_clear_by(back * from, back * to, hw.strut_radius_m + margin)
             }) && !spec.outline.wing.segment_meets(from, to)
         };
         let (first, second) = (strut(loop_.o1), strut(loop_.o2));
@@ -259,7 +268,7 @@ impl FourBar {
                 let straight_up = |o: Point2<f64>| {
                     spec.outline
                         .wing_lower_point(o.x)
-                        .unwrap_or(Point2::new(o.x, o.y + hw.link_radius_m))
+                        .unwrap_or(Point2::new(o.x, o.y + hw.strut_radius_m))
                 };
                 [
                     a.unwrap_or_else(|| straight_up(loop_.o1)),

@@ -85,6 +85,10 @@ impl FlapWrench {
 pub struct LinkHardware {
     /// Radius of links, arms and struts.
     pub link_radius_m: f64,
+    /// Radius of the struts that hold a four-bar's fixed pivots to the wing (the other
+    /// kinds' struts take `link_radius_m`): the sizing loop thickens it alone where they
+    /// need more, so that a strut does not thicken the links and move the loop.
+    pub strut_radius_m: f64,
     /// Radius of the nut and of pin bosses.
     pub nut_radius_m: f64,
     /// Length of the jack body centred on the screw's mount.
@@ -100,6 +104,7 @@ impl LinkHardware {
     pub fn for_flap_chord(flap_chord_m: f64) -> Self {
         Self {
             link_radius_m: 0.03 * flap_chord_m,
+            strut_radius_m: 0.03 * flap_chord_m,
             nut_radius_m: 0.035 * flap_chord_m,
             jack_body_length_m: 0.10 * flap_chord_m,
             jack_body_radius_m: 0.035 * flap_chord_m,

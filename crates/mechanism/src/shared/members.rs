@@ -30,6 +30,18 @@ pub enum MemberLoading {
     Bending,
 }
 
+/// Which of a kind's drawn radii a member's solid takes ([`crate::LinkHardware`]): the
+/// sizing loop thickens that one where the member needs more.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum DrawnRadius {
+    /// The links' and arms' radius (`link_radius_m`).
+    Link,
+    /// The struts' radius (`strut_radius_m`): a strut holding a fixed pivot to the wing,
+    /// which no link shares.
+    Strut,
+}
+
 /// A member to size: a link, an arm, a strut.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Member {
@@ -45,6 +57,8 @@ pub struct Member {
     /// Euler's effective-length factor K for its buckling: 1 pinned at both ends (or held
     /// square to itself at both), 2 a cantilever whose tip is free to sway.
     pub end_fixity_factor: f64,
+    /// The drawn radius its solid takes.
+    pub drawn: DrawnRadius,
 }
 
 impl Member {
@@ -58,6 +72,7 @@ impl Member {
             radius_m,
             loading,
             end_fixity_factor: 1.0,
+            drawn: DrawnRadius::Link,
         }
     }
 
@@ -67,6 +82,15 @@ impl Member {
         Self {
             end_fixity_factor: 2.0,
             ..Self::new(name, length_m, radius_m, MemberLoading::Bending)
+        }
+    }
+
+    /// A strut from the skin holding a fixed pivot, drawn at the struts' radius: a
+    /// [`Member::cantilever`] whose tip the pivot's links do not steady.
+    pub fn strut(name: &str, length_m: f64, radius_m: f64) -> Self {
+        Self {
+            drawn: DrawnRadius::Strut,
+            ..Self::cantilever(name, length_m, radius_m)
         }
     }
 }

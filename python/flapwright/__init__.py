@@ -28,7 +28,18 @@ import numpy
 from . import _native
 from ._native import DesignError, SceneError
 
-__all__ = ["design", "check", "study", "sweep", "Record", "Table", "DesignError", "SceneError", "__version__"]
+__all__ = [
+    "design",
+    "check",
+    "study",
+    "sweep",
+    "thesis_sweep",
+    "Record",
+    "Table",
+    "DesignError",
+    "SceneError",
+    "__version__",
+]
 __version__ = _native.__version__
 
 Scene = Union[str, "os.PathLike[str]", dict]
@@ -254,6 +265,20 @@ def sweep(
     text_columns.update({"scene_sha256": str, "verdict": str, "error": str})
     frame = pandas.read_csv(io.StringIO(csv_text), dtype=text_columns, keep_default_na=False, na_values={c: [""] for c in _FIGURES})
     return frame
+
+
+def thesis_sweep(samples: int = 1000, load: str = "landing") -> Record:
+    """The thesis track's deployment (`000_...` Table 2, the published case) at ``samples``
+    evenly spaced nut positions under its ``cruise`` or ``landing`` case, lean: the nut
+    position and 21 figures (angles, rates, accelerations, points A and D with velocities
+    and accelerations, the actuator force and the screw torques, SI units) as numpy
+    columns, computed in Rust in one pass (``CircularArcTrack::lean_sweep``). ``stopped``
+    says why the columns end early, or is None."""
+    names, values, rows, stopped = _native.thesis_sweep(samples, load)
+    columns = numpy.frombuffer(values, dtype="<f8").reshape(len(names), rows) if rows else numpy.empty((len(names), 0))
+    record = Record({name: columns[i] for i, name in enumerate(names)})
+    record._raw["stopped"] = stopped
+    return record
 
 
 # The table's numeric figures: its columns after the keys but the hash, the verdict, the

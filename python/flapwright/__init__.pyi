@@ -57,3 +57,6 @@ def sweep(
     shard: Optional[str] = ...,
 ) -> Any:
     """Every variant designed in parallel: a pandas DataFrame (CSV text without pandas)."""
+
+def thesis_sweep(samples: int = ..., load: str = ...) -> Record:
+    """The thesis track's lean deployment sweep: numpy columns by name, and ``stopped``."""

@@ -105,3 +105,29 @@ def test_the_reports_figures_are_numpy_arrays_and_tables():
     assert list(pairs.part_a[:1]) == ["flap"]
     with pytest.raises(IndexError):
         pairs.row(pairs.rows)
+
+
+def test_the_thesis_tracks_lean_sweep_gives_numpy_columns():
+    numpy = pytest.importorskip("numpy")
+    lean = flapwright.thesis_sweep(1000, "landing")
+    assert lean.stopped is None
+    assert lean.input_m.shape == (1000,) and lean.actuator_force_n.dtype == numpy.float64
+    # The nut positions run evenly; the flap turns monotonically; T_R = k F with one k.
+    assert numpy.allclose(numpy.diff(lean.input_m), lean.input_m[1] - lean.input_m[0])
+    assert numpy.all(numpy.diff(lean.crank_angle_rad) > 0) or numpy.all(numpy.diff(lean.crank_angle_rad) < 0)
+    ratio = lean.raise_torque_nm / lean.actuator_force_n
+    assert numpy.allclose(ratio, ratio[0])
+    # A's speed is the crank's rate times its radius.
+    radius = numpy.hypot(lean.nut_pivot_a_x_m, lean.nut_pivot_a_y_m)
+    speed = numpy.hypot(lean.nut_pivot_a_vx_mps, lean.nut_pivot_a_vy_mps)
+    assert numpy.allclose(speed, numpy.abs(lean.crank_rate_radps) * radius)
+    # The shipped thesis scene's report samples the same deployment under the same cases:
+    # the same inputs and actuator forces, from the full path.
+    report = flapwright.design(os.path.join(ROOT, "data", "scenes", "thesis-case-study.toml"))
+    for case in report.stations[0].mechanism.load_cases:
+        samples = case.samples
+        same = flapwright.thesis_sweep(samples.rows, case.load_case)
+        assert numpy.allclose(same.input_m, samples.input, rtol=0, atol=1e-12)
+        assert numpy.allclose(same.actuator_force_n, samples.actuator_load, rtol=1e-12, atol=0)
+    with pytest.raises(flapwright.DesignError, match="cruise"):
+        flapwright.thesis_sweep(10, "take-off")

@@ -197,6 +197,67 @@ fn sweep_csv(
     String::from_utf8(csv_bytes(&header, &cells)).map_err(|e| DesignError::new_err(e.to_string()))
 }
 
+/// The lean sweep handed to Python: column names, the columns' bytes, rows, why it stopped.
+type LeanColumns<'py> = (
+    Vec<&'static str>,
+    Bound<'py, pyo3::types::PyBytes>,
+    usize,
+    Option<String>,
+);
+
+/// The thesis track's lean deployment sweep (`CircularArcTrack::lean_sweep`, the published
+/// case, `000_...` Table 2) at `samples` nut positions under the thesis's `load` case
+/// (`cruise` or `landing`): the column names, the columns as one buffer of little-endian
+/// `f64` (column after column, each `samples` long, fewer when the sweep stopped), the
+/// samples computed and why it stopped, if it did.
+#[pyfunction]
+fn thesis_sweep<'py>(py: Python<'py>, samples: usize, load: &str) -> PyResult<LeanColumns<'py>> {
+    use flapwright_kinds::{CircularArcTrack, CircularArcTrackSpec, LeanColumn};
+    use flapwright_mechanism::LoadCase;
+    let load = match load {
+        "cruise" => LoadCase::thesis_cruise(),
+        "landing" => LoadCase::thesis_landing(),
+        other => {
+            return Err(DesignError::new_err(format!(
+                "load `{other}`: the thesis's cases are `cruise` and `landing`"
+            )))
+        }
+    };
+    // The published case synthesised once (its solids and joints cost three times a
+    // 1000-sample sweep), then shared by every call.
+    static TRACK: std::sync::OnceLock<flapwright_mechanism::Result<CircularArcTrack>> = std::sync::OnceLock::new();
+    // Each thread's columns reuse one buffer (`lean_sweep_into`): fresh pages for them cost
+    // a third of the call.
+    thread_local! {
+        static COLUMNS: std::cell::RefCell<flapwright_kinds::LeanSweep> = std::cell::RefCell::default();
+    }
+    let (rows, stopped) = py
+        .detach(|| {
+            let track = TRACK.get_or_init(|| CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study()));
+            let track = track.as_ref().map_err(Clone::clone)?;
+            COLUMNS.with_borrow_mut(|sweep| {
+                track.lean_sweep_into(samples, &load, sweep)?;
+                Ok::<_, flapwright_mechanism::Error>((
+                    sweep.len(),
+                    sweep.stopped.as_ref().map(|s| s.reason.to_string()),
+                ))
+            })
+        })
+        .map_err(|e| DesignError::new_err(e.to_string()))?;
+    // Written straight into the Python object: no buffer between (`detach` ran on this
+    // thread, so its columns are this thread's).
+    let bytes = COLUMNS.with_borrow(|sweep| {
+        let values = sweep.values();
+        pyo3::types::PyBytes::new_with(py, 8 * values.len(), |buffer| {
+            for (chunk, value) in buffer.chunks_exact_mut(8).zip(values) {
+                chunk.copy_from_slice(&value.to_le_bytes());
+            }
+            Ok(())
+        })
+    })?;
+    Ok((LeanColumn::ALL.iter().map(|c| c.name()).collect(), bytes, rows, stopped))
+}
+
 /// The native half of the `flapwright` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -207,6 +268,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(design_seconds, m)?)?;
     m.add_function(wrap_pyfunction!(study_json, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_csv, m)?)?;
+    m.add_function(wrap_pyfunction!(thesis_sweep, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("FIGURE_COLUMNS", flapwright::sweep::FIGURE_COLUMNS.to_vec())?;
     Ok(())

@@ -198,21 +198,34 @@ impl CircularArcTrack {
 
     /// The lean sweep at the given nut positions (m).
     pub fn lean_sweep_at(&self, inputs: impl IntoIterator<Item = f64>, load: &LoadCase) -> LeanSweep {
-        let inputs = inputs.into_iter();
-        let mut values = Vec::with_capacity(LeanColumn::ALL.len() * inputs.size_hint().0);
+        let mut sweep = LeanSweep::default();
+        self.lean_sweep_at_into(inputs, load, &mut sweep);
+        sweep
+    }
+
+    /// [`CircularArcTrack::lean_sweep`] into `sweep`, whose buffer is reused: a trade study
+    /// sweeping many mechanisms (or a caller from another language) allocates once, where a
+    /// buffer above the C library's threshold for mapping fresh pages costs page faults on
+    /// every call (a third of a 1000-sample sweep called from Python on this machine).
+    pub fn lean_sweep_into(&self, samples: usize, load: &LoadCase, sweep: &mut LeanSweep) -> Result<()> {
+        let inputs = self.evenly_spaced_inputs(samples)?;
+        self.lean_sweep_at_into(inputs, load, sweep);
+        Ok(())
+    }
+
+    /// [`CircularArcTrack::lean_sweep_at`] into `sweep`, whose buffer is reused.
+    pub fn lean_sweep_at_into(&self, inputs: impl IntoIterator<Item = f64>, load: &LoadCase, sweep: &mut LeanSweep) {
+        let values = &mut sweep.values;
+        values.clear();
         values.extend(inputs);
         let samples = values.len();
         values.resize(LeanColumn::ALL.len() * samples, 0.0);
-        let mut sweep = LeanSweep {
-            samples,
-            values,
-            stopped: None,
-        };
-        if let Some(stop) = LeanConstants::of(self, load).fill_columns(self, &mut sweep) {
+        sweep.samples = samples;
+        sweep.stopped = None;
+        if let Some(stop) = LeanConstants::of(self, load).fill_columns(self, sweep) {
             sweep.truncate(stop.sample_index);
             sweep.stopped = Some(stop);
         }
-        sweep
     }
 
     /// Red cell 1 (s34 within the slots) and the triangle A0 B0 A's 4 × area (m²), as
@@ -527,6 +540,12 @@ mod tests {
             track.lean_sweep(1, &landing),
             Err(Error::TooFewSamples { samples: 1 })
         ));
+        // A reused buffer gives what a fresh one does, a stop and its truncation included.
+        let mut reused = track.lean_sweep(101, &landing).expect("sweeps");
+        track.lean_sweep_at_into(inputs, &landing, &mut reused);
+        assert_eq!(reused, lean);
+        track.lean_sweep_into(11, &landing, &mut reused).expect("sweeps");
+        assert_eq!(reused, track.lean_sweep(11, &landing).expect("sweeps"));
     }
 
     #[test]

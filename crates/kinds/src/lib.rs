@@ -30,9 +30,9 @@ pub mod hooked_track;
 pub mod link_track;
 
 pub use circular_arc_track::{
-    screw_outer_radius_m, CircularArcTrack, CircularArcTrackSpec, Forces, JointReactions, LeanColumn, LeanSweep,
-    PointKinematics, Pose, PoseDiagnostics, Sweep, SweepSample, SweepStop, SynthesisWarning, TrackHardware,
-    TrackSynthesis,
+    screw_outer_radius_m, thesis_lean_sweep_into, CircularArcTrack, CircularArcTrackSpec, Forces, JointReactions,
+    LeanColumn, LeanSweep, PointKinematics, Pose, PoseDiagnostics, Sweep, SweepSample, SweepStop, SynthesisWarning,
+    TrackHardware, TrackSynthesis,
 };
 pub use dropped_hinge::{DroppedHinge, DroppedHingeActuator, DroppedHingeSpec};
 pub use five_bar::{DoubleFlapLoads, FiveBarDimensions, FiveBarDoubleFlap, FiveBarKind, FiveBarPose, LoadedFiveBar};

@@ -205,14 +205,14 @@ type LeanColumns<'py> = (
     Option<String>,
 );
 
-/// The thesis track's lean deployment sweep (`CircularArcTrack::lean_sweep`, the published
+/// The thesis track's lean deployment sweep (`thesis_lean_sweep_into`, the published
 /// case, `000_...` Table 2) at `samples` nut positions under the thesis's `load` case
 /// (`cruise` or `landing`): the column names, the columns as one buffer of little-endian
 /// `f64` (column after column, each `samples` long, fewer when the sweep stopped), the
 /// samples computed and why it stopped, if it did.
 #[pyfunction]
 fn thesis_sweep<'py>(py: Python<'py>, samples: usize, load: &str) -> PyResult<LeanColumns<'py>> {
-    use flapwright_kinds::{CircularArcTrack, CircularArcTrackSpec, LeanColumn};
+    use flapwright_kinds::{thesis_lean_sweep_into, LeanColumn};
     use flapwright_mechanism::LoadCase;
     let load = match load {
         "cruise" => LoadCase::thesis_cruise(),
@@ -223,9 +223,6 @@ fn thesis_sweep<'py>(py: Python<'py>, samples: usize, load: &str) -> PyResult<Le
             )))
         }
     };
-    // The published case synthesised once (its solids and joints cost three times a
-    // 1000-sample sweep), then shared by every call.
-    static TRACK: std::sync::OnceLock<flapwright_mechanism::Result<CircularArcTrack>> = std::sync::OnceLock::new();
     // Each thread's columns reuse one buffer (`lean_sweep_into`): fresh pages for them cost
     // a third of the call.
     thread_local! {
@@ -233,10 +230,8 @@ fn thesis_sweep<'py>(py: Python<'py>, samples: usize, load: &str) -> PyResult<Le
     }
     let (rows, stopped) = py
         .detach(|| {
-            let track = TRACK.get_or_init(|| CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study()));
-            let track = track.as_ref().map_err(Clone::clone)?;
             COLUMNS.with_borrow_mut(|sweep| {
-                track.lean_sweep_into(samples, &load, sweep)?;
+                thesis_lean_sweep_into(samples, &load, sweep)?;
                 Ok::<_, flapwright_mechanism::Error>((
                     sweep.len(),
                     sweep.stopped.as_ref().map(|s| s.reason.to_string()),

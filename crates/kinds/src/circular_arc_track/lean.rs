@@ -21,6 +21,7 @@
 
 use super::sweep::SweepStop;
 use super::synthesis::CircularArcTrack;
+use super::CircularArcTrackSpec;
 use flapwright_mechanism::shared::angle::four_times_triangle_area;
 use flapwright_mechanism::shared::load_case::{ExternalMoment, LoadCase};
 use flapwright_mechanism::{Error, Result};
@@ -250,6 +251,18 @@ impl CircularArcTrack {
             }
         })
     }
+}
+
+/// The published case's lean sweep (`000_...` Table 2, [`CircularArcTrackSpec::thesis_case_study`])
+/// into `sweep`: the track synthesised once and shared, the buffer reused (a caller from
+/// another language asks for the deployment, not for a mechanism of its own).
+pub fn thesis_lean_sweep_into(samples: usize, load: &LoadCase, sweep: &mut LeanSweep) -> Result<()> {
+    static TRACK: std::sync::OnceLock<Result<CircularArcTrack>> = std::sync::OnceLock::new();
+    let track = TRACK.get_or_init(|| CircularArcTrack::synthesise(CircularArcTrackSpec::thesis_case_study()));
+    track
+        .as_ref()
+        .map_err(Clone::clone)?
+        .lean_sweep_into(samples, load, sweep)
 }
 
 /// A point's six columns (x, y, vx, vy, ax, ay) cut to one length.

@@ -34,7 +34,7 @@ mod sweep;
 mod synthesis;
 
 pub use kinetostatics::Forces;
-pub use lean::{LeanColumn, LeanSweep};
+pub use lean::{thesis_lean_sweep_into, LeanColumn, LeanSweep};
 pub use pose::{PointKinematics, Pose, PoseDiagnostics};
 pub use seam::{screw_outer_radius_m, TrackHardware};
 pub use spec::CircularArcTrackSpec;

@@ -48,7 +48,9 @@ Scene = Union[str, "os.PathLike[str]", dict]
 class Record(Mapping):
     """A read-only mapping whose keys are also attributes, nested
     (``report.interference.passes``). Its values are converted when first read (a list to
-    an array or a Table), so a report costs only what is looked at."""
+    an array or a Table), so a report costs only what is looked at. ``to_dict()`` gives
+    the plain values (for ``json.dumps``); records compare by them. A key that is also a
+    mapping method (``values``, ``items``, ``keys``, ``get``) reads as ``record["values"]``."""
 
     __slots__ = ("_raw", "_done")
 
@@ -79,6 +81,16 @@ class Record(Mapping):
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}({dict(self.items())!r})"
+
+    def __eq__(self, other: object) -> bool:
+        # By the report's values (numpy arrays have no single truth value to compare by).
+        if isinstance(other, Record):
+            return self.to_dict() == other.to_dict()
+        if isinstance(other, dict):
+            return self.to_dict() == _plain(other)
+        return NotImplemented
+
+    __hash__ = None  # type: ignore[assignment]
 
     def to_dict(self) -> dict:
         """The values as the report has them (plain dicts, lists and numbers, as JSON)."""
@@ -122,7 +134,7 @@ class Table(Record):
             return value
 
     def row(self, i: int) -> Record:
-        """Row ``i`` as a Record, its values as the report has them."""
+        """Row ``i`` as a Record of the report's values (converted as they are read)."""
         if not -self.rows <= i < self.rows:
             raise IndexError(f"row {i} of {self.rows}")
         return Record(self._rows[i])
@@ -165,7 +177,12 @@ def _array(values: list) -> Any:
     int64 array, numbers (None as NaN) a float array, equal-length lists of numbers a 2-d array, rows (dicts of flat
     values) a Table; anything else a list of wrapped values."""
     if values and all(isinstance(v, int) and not isinstance(v, bool) for v in values):
-        return numpy.array(values, dtype=numpy.int64)
+        try:
+            return numpy.array(values, dtype=numpy.int64)
+        except OverflowError:  # beyond 64 bits: kept whole, as Python ints
+            objects = numpy.empty(len(values), dtype=object)
+            objects[:] = values
+            return objects
     if values and all(_is_number(v) or v is None for v in values) and any(_is_number(v) for v in values):
         return numpy.array([numpy.nan if v is None else v for v in values], dtype=float)
     if values and all(isinstance(v, list) for v in values):

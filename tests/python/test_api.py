@@ -131,3 +131,14 @@ def test_the_thesis_tracks_lean_sweep_gives_numpy_columns():
         assert numpy.allclose(same.actuator_force_n, samples.actuator_load, rtol=1e-12, atol=0)
     with pytest.raises(flapwright.DesignError, match="cruise"):
         flapwright.thesis_sweep(10, "take-off")
+
+
+def test_records_compare_by_their_values_and_keep_numbers_whole():
+    first = flapwright.design(SMALL)
+    second = flapwright.check(SMALL)
+    # Arrays inside: equality is by the report's values, not an ambiguous array truth.
+    assert first.stations[0].plane == second.stations[0].plane
+    assert first.stations[0].plane != first.stations[1].plane
+    assert first.stations[0].plane == first.stations[0].plane.to_dict()
+    big = flapwright.Record.wrap([2**70, 1])
+    assert list(big) == [2**70, 1]

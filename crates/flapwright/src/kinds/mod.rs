@@ -77,7 +77,7 @@ pub struct SynthesisContext {
 /// its drawn solid and the check sees what will be built.
 #[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
 pub struct SizedHardware {
-    /// The links', arms' and struts' radius.
+    /// The links' and arms' radius (and the struts' of every kind but the four-bar).
     pub link_radius_m: Option<f64>,
     /// The four-bar's struts' radius.
     pub strut_radius_m: Option<f64>,

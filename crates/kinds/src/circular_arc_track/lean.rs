@@ -443,13 +443,24 @@ impl LeanConstants {
             raise_out[i] = self.raise_per_newton_m * force;
             lower_out[i] = self.lower_per_newton_m * force;
         }
-        let finite = (0..posed).position(|i| {
-            !(force_out[i].is_finite() && crank_accel_out[i].is_finite() && slider_accel_out[i].is_finite())
+        // The first sample with a figure that is not finite, named as the full sweep names
+        // it (the slider-crank's state before the forces).
+        let first_not_finite = (0..posed).find_map(|i| {
+            [
+                ("crank_rate_radps", crank_rate_out[i]),
+                ("slider_rate_radps", slider_rate_out[i]),
+                ("crank_accel_radps2", crank_accel_out[i]),
+                ("slider_accel_radps2", slider_accel_out[i]),
+                ("actuator_force_n", force_out[i]),
+            ]
+            .into_iter()
+            .find(|(_, value)| !value.is_finite())
+            .map(|(quantity, _)| (i, quantity))
         });
-        match finite {
-            Some(i) => {
+        match first_not_finite {
+            Some((i, quantity)) => {
                 let reason = Error::NonFinite {
-                    quantity: "actuator_force_n",
+                    quantity,
                     input_m: input_m[i],
                 };
                 Some(stop_at(i, input_m[i], reason))

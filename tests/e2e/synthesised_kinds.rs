@@ -495,7 +495,9 @@ fn the_sizing_loop_draws_members_as_thick_as_they_are_sized() {
     let sizing_loop = &report["sizing_loop"];
     assert_eq!(sizing_loop["settled"], true, "{sizing_loop}");
     let iterations = sizing_loop["iterations"].as_u64().unwrap();
-    assert!((2..=4).contains(&iterations), "{sizing_loop}");
+    // Five since the four-bar's support is a truss: at `ib-outer` the rods drawn thick
+    // enough stop clearing and the struts turn back into cantilevers, thicker again.
+    assert!((2..=6).contains(&iterations), "{sizing_loop}");
     let thickened: Vec<&str> = sizing_loop["stations"]
         .as_array()
         .unwrap()
@@ -513,7 +515,7 @@ fn the_sizing_loop_draws_members_as_thick_as_they_are_sized() {
         "{warnings:?}"
     );
     // Every sized rod fits its drawn solid: members in the links' radius (the four-bar's
-    // struts in theirs), the screw in its mean radius.
+    // struts, brace and tie in theirs), the screw in its mean radius.
     let mut checked = 0;
     for station in report["stations"].as_array().unwrap() {
         let name = station["name"].as_str().unwrap();
@@ -531,7 +533,7 @@ fn the_sizing_loop_draws_members_as_thick_as_they_are_sized() {
             let name_of = rod["name"].as_str().unwrap();
             let drawn = if name_of == "screw" {
                 screw_radius
-            } else if four_bar && name_of.starts_with("strut-") {
+            } else if four_bar && (name_of.starts_with("strut-") || ["brace", "tie"].contains(&name_of)) {
                 strut_radius.unwrap()
             } else {
                 link_radius

@@ -24,8 +24,11 @@ use crate::scene::Scene;
 use flapwright_geom::parts::WingModel;
 use flapwright_mechanism::seam::DrawnRadius;
 
-/// Most syntheses the loop runs (the first one included).
-pub const MAX_ITERATIONS: usize = 4;
+/// Most syntheses the loop runs (the first one included). Six, not four: a four-bar whose
+/// truss's rods grow too thick to clear falls back to struts clamped to the skin, which
+/// need thicker solids again (with a link material of 20 MPa allowable on the transport
+/// scene: five syntheses, four before the truss).
+pub const MAX_ITERATIONS: usize = 6;
 
 /// A sized radius counts as larger than the drawn one beyond this relative margin (the
 /// sizing's own rounding is far below it).

@@ -1,6 +1,7 @@
 //! The four-bar's bodies and joints: the flap's bracket between its pivots, the crank
 //! (from a horn beyond O1 when the screw sits there), the rocker, the screw jack on the
-//! crank ([`ScrewJackParts`]) and the struts that hold O1 and O2, with speed bounds per
+//! crank ([`ScrewJackParts`]) and the struts that hold O1 and O2 (with a truss's brace and
+//! tie), with speed bounds per
 //! metre of stroke from the loop's velocity analysis.
 
 use nalgebra::Point2;
@@ -85,12 +86,33 @@ pub(super) fn bodies_and_joints(
     bodies.push(Body {
         name: "support".into(),
         role: BodyRole::Support,
-        solids: vec![
+        solids: [
             BodySolid::capsule(super::STRUTS[0], o1, synthesis.strut_tops_m[0], hw.strut_radius_m),
             BodySolid::capsule(super::STRUTS[1], o2, synthesis.strut_tops_m[1], hw.strut_radius_m),
-        ],
+        ]
+        .into_iter()
+        .chain(synthesis.truss.iter().flat_map(|truss| {
+            let brace = truss.rods[2];
+            [
+                BodySolid::capsule(super::TRUSS_RODS[2], brace.foot_m, brace.top_m, hw.strut_radius_m),
+                BodySolid::capsule(super::TIE, o2, o1, hw.strut_radius_m),
+            ]
+        }))
+        .collect(),
         speed_bound: SpeedBound::FIXED,
     });
+    // What meets a link at its fixed pivot: its strut and, with a truss, the tie and the
+    // brace where it stands on that pivot.
+    let touching_at = |pivot, strut: &'static str, link: &'static str| -> Vec<(&'static str, &'static str)> {
+        let mut touching = vec![(strut, link)];
+        if let Some(truss) = &synthesis.truss {
+            touching.push((super::TIE, link));
+            if truss.rods[2].foot_m == pivot {
+                touching.push((super::TRUSS_RODS[2], link));
+            }
+        }
+        touching
+    };
     let revolute = |name: &str, description: &str, at, ends, touching: &[(&str, &str)]| {
         Joint::new(name, description, JointGeometry::Revolute { at }, ends, touching)
     };
@@ -100,14 +122,14 @@ pub(super) fn bodies_and_joints(
             "crank on its support",
             o1,
             [JointEnd::Body(SUPPORT), JointEnd::Body(CRANK)],
-            &[("strut-O1", "crank")],
+            &touching_at(o1, "strut-O1", "crank"),
         ),
         revolute(
             "O2",
             "rocker on its support",
             o2,
             [JointEnd::Body(SUPPORT), JointEnd::Body(ROCKER)],
-            &[("strut-O2", "rocker")],
+            &touching_at(o2, "strut-O2", "rocker"),
         ),
         revolute(
             "A1",

@@ -1,7 +1,10 @@
 //! The four-bar's members that hold it to the wing and to the flap, and their loads at a
 //! pose (the crank and the rocker are loaded in the kinetostatics beside the actuator).
 //!
-//! - Each strut is clamped where it meets the wing's lower skin and carries its pivot's
+//! - With a support truss (the `support` module), the struts, the brace and the tie are
+//!   rods pinned at both ends: their tensions hold the support
+//!   ([`flapwright_mechanism::shared::support_truss`]), each an axial force alone.
+//! - Without one, each strut is clamped where it meets the wing's lower skin and carries its pivot's
 //!   load at its tip: a cantilever ([`MemberLoad::of_cantilever_line`]). Where a strut ends
 //!   at the other pivot (a beam carrying both, `strut_tops_m`), it is clamped there, and
 //!   the other pivot's strut carries its load as well: the force and its moment about that
@@ -17,7 +20,7 @@
 
 use nalgebra::{Point2, Vector2};
 
-use super::{FourBar, STRUTS};
+use super::{FourBar, STRUTS, TIE, TRUSS_RODS};
 use flapwright_mechanism::seam::MemberLoad;
 use flapwright_mechanism::shared::geometry::cross;
 
@@ -29,6 +32,16 @@ impl FourBar {
     /// the support at their pivots (N).
     pub(super) fn support_loads(&self, at_o1: Vector2<f64>, at_o2: Vector2<f64>) -> Vec<(String, MemberLoad)> {
         let pivots = [self.loop_.o1, self.loop_.o2];
+        if let Some(truss) = &self.synthesis.truss {
+            let tensions = truss.tensions(&[(pivots[0], at_o1), (pivots[1], at_o2)]);
+            let tie = truss.tie_tension(at_o2, &tensions);
+            return TRUSS_RODS
+                .iter()
+                .zip(tensions)
+                .chain([(&TIE, tie)])
+                .map(|(name, tension)| (name.to_string(), MemberLoad::axial(tension)))
+                .collect();
+        }
         let at = [at_o1, at_o2];
         let tops = self.synthesis.strut_tops_m;
         (0..2)

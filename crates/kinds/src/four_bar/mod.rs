@@ -33,6 +33,7 @@ mod bodies;
 mod linkage;
 mod members;
 mod search;
+mod support;
 mod synthesis;
 
 use flapwright_mechanism::shared::geometry::turn_angle;
@@ -45,10 +46,12 @@ use flapwright_mechanism::seam::{
 use flapwright_mechanism::shared::flap_load::{FlapMass, FlapWrench, LinkHardware};
 use flapwright_mechanism::shared::geometry::{cross, turn_about};
 use flapwright_mechanism::shared::load_case::LoadCase;
+use flapwright_mechanism::shared::members::DrawnRadius;
 use flapwright_mechanism::shared::outline::StationOutline;
 use flapwright_mechanism::shared::precision::PrecisionPosition;
 use flapwright_mechanism::shared::rocker_drive::RockerDrive;
 use flapwright_mechanism::shared::screw_jack::{ScrewDrive, ScrewJack};
+use flapwright_mechanism::shared::support_truss::SupportTruss;
 use flapwright_mechanism::{Error, Result, SynthesisDefect};
 
 const KIND: &str = "four-bar";
@@ -217,6 +220,10 @@ pub struct FourBarSynthesis {
     /// Where the struts from O1 and O2 end (m): on the wing's lower skin, or at the other
     /// pivot (a beam carrying both).
     pub strut_tops_m: [Point2<f64>; 2],
+    /// The support's truss where its rods and tie clear (the `support` module): the struts
+    /// pinned at both ends, a brace and the tie O2-O1, every one a rod; `None`: the struts
+    /// clamped to the skin, in bending.
+    pub truss: Option<SupportTruss>,
     /// False when no default place of the screw jack kept clear of the wing, the structure
     /// and the flap at the sampled poses (the interference check says where).
     pub actuator_clear: bool,
@@ -331,6 +338,11 @@ const FINALISTS: usize = 24;
 const CLEAR_FINALISTS: usize = 4;
 /// The solids (and members) holding O1 and O2 to the wing.
 const STRUTS: [&str; 2] = ["strut-O1", "strut-O2"];
+/// The support truss's rods, in [`SupportTruss::rods`]'s order: the struts from O1 and O2
+/// and the brace.
+const TRUSS_RODS: [&str; 3] = ["strut-O1", "strut-O2", "brace"];
+/// The truss's tie between O2 and O1 (the loop's ground link).
+const TIE: &str = "tie";
 pub(super) fn failure(defect: SynthesisDefect, detail: String) -> Error {
     Error::Synthesis {
         kind: KIND,
@@ -341,6 +353,61 @@ pub(super) fn failure(defect: SynthesisDefect, detail: String) -> Error {
 
 pub(super) fn mm(p: Point2<f64>) -> String {
     format!("({:.1}, {:.1}) mm", p.x * 1e3, p.y * 1e3)
+}
+
+/// The loop's statics at a pose: the rocker a two-force member (force f along O2 -> A2 on
+/// the flap), moments of the flap about A1 give f, the flap's balance the pin force R1 at
+/// A1, the crank's moments about O1 the screw force F.
+struct LoopStatics {
+    /// Unit vector O2 -> A2.
+    e2: Vector2<f64>,
+    /// f (N): the rocker's push on the flap along `e2`.
+    rocker_force: f64,
+    /// R1, the crank's force on the flap at A1 (N).
+    pin_a1: Vector2<f64>,
+    /// The screw's direction, mount -> attachment.
+    u: Vector2<f64>,
+    /// F, the screw's force (N, along `u` on the crank).
+    force: f64,
+    /// The support's force on the crank at O1 (N).
+    crank_ground: Vector2<f64>,
+}
+
+impl FourBar {
+    fn statics(
+        &self,
+        state: &flapwright_mechanism::shared::rocker_drive::RockerState,
+        pose: &linkage::LoopPose,
+        wrench: &FlapWrench,
+    ) -> LoopStatics {
+        let l = &self.loop_;
+        let e2 = (pose.a2 - l.o2) / l.rocker;
+        let rocker_force = -wrench.moment_about(pose.a1) / cross(pose.a2 - pose.a1, e2);
+        let pin_a1: Vector2<f64> = -(e2 * rocker_force + wrench.force_n());
+        // Crank: the flap pushes it with -R1 at A1, the screw with F u at C; moments about O1.
+        let c = state.attachment;
+        let u = (c - self.synthesis.actuator_mount_m).normalize();
+        let force = cross(pose.a1 - l.o1, pin_a1) / cross(c - l.o1, u);
+        let crank_ground: Vector2<f64> = pin_a1 - u * force;
+        LoopStatics {
+            e2,
+            rocker_force,
+            pin_a1,
+            u,
+            force,
+            crank_ground,
+        }
+    }
+
+    /// What the crank and the rocker put on the support at O1 and O2 at `input` under
+    /// `load` (N).
+    pub(super) fn support_forces(&self, input: f64, load: &LoadCase) -> Result<[Vector2<f64>; 2]> {
+        let (state, pose) = self.loop_pose(input)?;
+        let fraction = self.input_range().fraction(input).clamp(0.0, 1.0);
+        let wrench = FlapWrench::new(&self.spec.flap_mass, &pose.flap, load, fraction);
+        let statics = self.statics(&state, &pose, &wrench);
+        Ok([-statics.crank_ground, -statics.e2 * statics.rocker_force])
+    }
 }
 
 impl FlapMechanism for FourBar {
@@ -436,15 +503,15 @@ impl FlapMechanism for FourBar {
         let l = &self.loop_;
         let fraction = self.input_range().fraction(input).clamp(0.0, 1.0);
         let wrench = FlapWrench::new(&self.spec.flap_mass, &pose.flap, load, fraction);
-        // Rocker force on the flap f e2 (two-force member), moments about A1.
-        let e2 = (pose.a2 - l.o2) / l.rocker;
-        let rocker_force = -wrench.moment_about(pose.a1) / cross(pose.a2 - pose.a1, e2);
-        let pin_a1: Vector2<f64> = -(e2 * rocker_force + wrench.force_n());
-        // Crank: the flap pushes it with -R1 at A1, the screw with F u at C; moments about O1.
+        let LoopStatics {
+            e2,
+            rocker_force,
+            pin_a1,
+            u,
+            force,
+            crank_ground,
+        } = self.statics(&state, &pose, &wrench);
         let c = state.attachment;
-        let u = (c - self.synthesis.actuator_mount_m).normalize();
-        let force = cross(pose.a1 - l.o1, pin_a1) / cross(c - l.o1, u);
-        let crank_ground: Vector2<f64> = pin_a1 - u * force;
         // Virtual work with the loop's velocities per metre of stroke.
         let crank_rate = state.rotation_per_stroke;
         let (_, flap_per_crank) = l.rates(&pose);
@@ -552,7 +619,7 @@ impl FlapMechanism for FourBar {
         let l = &self.loop_;
         let crank_start = bodies::crank_start(l.o1, l.a1, self.synthesis.actuator_attachment_m);
         let [top1, top2] = self.synthesis.strut_tops_m;
-        vec![
+        let mut members = vec![
             Member::new(
                 "crank",
                 (l.a1 - crank_start).norm(),
@@ -561,9 +628,24 @@ impl FlapMechanism for FourBar {
             ),
             Member::new("rocker", l.rocker, hw.link_radius_m, MemberLoading::TwoForce),
             Member::new("bracket", l.coupler, hw.link_radius_m, MemberLoading::Bending),
-            Member::strut(STRUTS[0], (top1 - l.o1).norm(), hw.strut_radius_m),
-            Member::strut(STRUTS[1], (top2 - l.o2).norm(), hw.strut_radius_m),
-        ]
+        ];
+        match &self.synthesis.truss {
+            // Pinned rods of the support's truss, drawn at the struts' radius.
+            Some(truss) => {
+                let rod = |name: &str, length_m: f64| Member {
+                    drawn: DrawnRadius::Strut,
+                    ..Member::new(name, length_m, hw.strut_radius_m, MemberLoading::TwoForce)
+                };
+                let lengths = truss.lengths_m();
+                members.extend(TRUSS_RODS.iter().zip(lengths).map(|(name, length)| rod(name, length)));
+                members.push(rod(TIE, (l.o1 - l.o2).norm()));
+            }
+            None => members.extend([
+                Member::strut(STRUTS[0], (top1 - l.o1).norm(), hw.strut_radius_m),
+                Member::strut(STRUTS[1], (top2 - l.o2).norm(), hw.strut_radius_m),
+            ]),
+        }
+        members
     }
 
     fn flap_mass(&self) -> Option<FlapMass> {

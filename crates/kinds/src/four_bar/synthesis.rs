@@ -13,7 +13,7 @@ use super::{
 use flapwright_mechanism::seam::FlapMechanism;
 use flapwright_mechanism::shared::geometry::turn_angle;
 use flapwright_mechanism::shared::placement::{
-    place_screw_jack, strut_top, JackSize, ScrewJackChoice, PLACEMENT_SAMPLES,
+    place_screw_jack, strut_top, JackSize, ScrewJackChoice, PLACEMENT_SAMPLES, STRUT_TOPS_AHEAD,
 };
 use flapwright_mechanism::shared::rocker_drive::RockerDrive;
 use flapwright_mechanism::{Error, Result, SynthesisDefect};
@@ -233,12 +233,11 @@ impl FourBar {
         let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)
             .filter_map(|k| loop_.at(travel * k as f64 / PLACEMENT_SAMPLES as f64).map(|p| p.flap))
             .collect();
-        let ahead = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
         let strut = |from: Point2<f64>| {
             strut_top(
                 &spec.outline,
                 from,
-                &ahead,
+                &STRUT_TOPS_AHEAD,
                 hw.strut_radius_m,
                 margin,
                 &flap_poses,
@@ -323,6 +322,7 @@ impl FourBar {
             // Long enough to carry the nut at the longest stroke: a free end would sweep.
             screw_length_m: stroke_m[0].max(stroke_m[1]) + hw.nut_radius_m,
             strut_tops_m: strut_tops,
+            truss: None,
             actuator_clear,
             placement_clear,
             nominal_speed_mps,
@@ -330,15 +330,29 @@ impl FourBar {
             topology: FourBarTopology::of(loop_.o1, loop_.a1, loop_.a2, attachment, mount),
             followed: None,
         };
-        let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &loop_, &drive, link_rates);
         let mut four_bar = Self {
             spec,
             synthesis,
             loop_,
             drive,
-            bodies,
-            joints,
+            bodies: Vec::new(),
+            joints: Vec::new(),
         };
+        // The support as a truss of rods where one clears (the `support` module).
+        if placement_clear {
+            if let Some(truss) = four_bar.lay_out_truss(&flap_poses, margin) {
+                four_bar.synthesis.strut_tops_m = [truss.rods[0].top_m, truss.rods[1].top_m];
+                four_bar.synthesis.truss = Some(truss);
+            }
+        }
+        let (bodies, joints) = bodies_and_joints(
+            &four_bar.spec,
+            &four_bar.synthesis,
+            &four_bar.loop_,
+            &four_bar.drive,
+            link_rates,
+        );
+        (four_bar.bodies, four_bar.joints) = (bodies, joints);
         four_bar.synthesis.depth_below_section_m = four_bar.whole_depth()?;
         Ok(four_bar)
     }

@@ -163,7 +163,7 @@ pub(super) fn bodies_and_joints(
     let spacing = 3.0 * r_max;
     let brace_at_rail_start = synthesis
         .truss
-        .is_some_and(|truss| truss.rods[2].foot_m == truss.rail_start());
+        .is_some_and(|truss| truss.rods[2].foot_m == truss.foot_a());
     for solid in bodies.iter_mut().flat_map(|body| body.solids.iter_mut()) {
         solid.offset_m = spacing
             * match solid.name.as_str() {

@@ -130,10 +130,6 @@ impl Clearance {
     }
 }
 
-/// Lower-skin points the struts may go up to, flap chords ahead of the cove's lower lip
-/// (`placement::strut_top`'s candidates, nearest first).
-pub(super) const STRUT_TOPS_AHEAD: [f64; 11] = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
-
 /// Where the two struts stand: from the rail's forward end to `rail_top`, and from the
 /// hook's centre line at vertex `hook_foot` to `hook_top` (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -166,7 +162,7 @@ pub(super) fn place_struts(
         flapwright_mechanism::shared::placement::strut_top(
             &spec.outline,
             from,
-            &STRUT_TOPS_AHEAD,
+            &flapwright_mechanism::shared::placement::STRUT_TOPS_AHEAD,
             radius,
             margin,
             &clearance.poses,

@@ -38,7 +38,7 @@ mod rail;
 mod search;
 mod truss;
 
-pub use truss::{SupportRod, SupportTruss};
+pub use flapwright_mechanism::shared::support_truss::{SupportRod, SupportTruss};
 
 use rail::{Rail, RailPose};
 

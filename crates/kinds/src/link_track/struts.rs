@@ -30,13 +30,12 @@ impl StrutPlacement {
             loop_.c - loop_.d.into_inner() * extra,
             landing_c + loop_.d.into_inner() * extra,
         ];
-        let ahead = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
         let margin = spec.hardware.link_radius_m;
         let strut = |from: Point2<f64>, avoid| {
             flapwright_mechanism::shared::placement::strut_top(
                 &spec.outline,
                 from,
-                &ahead,
+                &flapwright_mechanism::shared::placement::STRUT_TOPS_AHEAD,
                 margin,
                 margin,
                 &flap_poses,

@@ -18,6 +18,7 @@
 //! | [`outline`] | the station's section outlines and their distance queries | the synthesised kinds |
 //! | `members` | members to size and their loads | the seam ([`Member`](crate::seam::Member)), the kinds |
 //! | [`objective`] | what the searches weigh besides depth: the actuator's load under the load cases, by virtual work | the synthesised kinds, [`placement`] |
+//! | [`support_truss`] | a fixed support held to the wing by three pinned rods and a tie | hooked-track, four-bar |
 //! | [`follow`] | the motion a station follows where another station of its flap was synthesised first | link-track |
 //!
 //! Every module is public: the kinds live in their own crate (`flapwright-kinds`) and
@@ -39,3 +40,4 @@ pub mod rocker_drive;
 pub mod rotary_actuator;
 pub mod screw_jack;
 pub mod slider_crank;
+pub mod support_truss;

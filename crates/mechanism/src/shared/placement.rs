@@ -520,6 +520,10 @@ pub fn place_screw_jack(
     }
 }
 
+/// Lower-skin points a strut may go up to, flap chords ahead of the cove's lower lip
+/// ([`strut_top`]'s candidates, nearest first), for every kind's struts.
+pub const STRUT_TOPS_AHEAD: [f64; 11] = [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5];
+
 /// A strut from the fixed point `from` up to the wing's lower skin: the first top of the
 /// candidates (lower-skin points `ahead` flap chords ahead of the cove, in order) whose
 /// strut keeps `margin` clear of the structure and of the flap at every pose of

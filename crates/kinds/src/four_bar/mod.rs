@@ -228,7 +228,8 @@ pub struct FourBarSynthesis {
     /// and the flap at the sampled poses (the interference check says where).
     pub actuator_clear: bool,
     /// False when no default place of a strut kept clear of the structure and the flap
-    /// at the sampled poses (the interference check says where).
+    /// at the sampled poses, or the crank or the rocker came within a quarter of its radius
+    /// of the flap (the interference check says where).
     pub placement_clear: bool,
     /// What the search rejected (all zero when both moving pivots were given).
     pub search: FourBarSearch,
@@ -658,7 +659,7 @@ impl FlapMechanism for FourBar {
             warnings.push("no default place of the screw jack kept clear of the wing, the structure and the flap at the sampled poses; give actuator_mount_m".into());
         }
         if !self.synthesis.placement_clear {
-            warnings.push("no default place of a strut from a fixed pivot to the wing's lower skin, or of a beam between the pivots, kept clear of the structure and the flap at the sampled poses".into());
+            warnings.push("no default place of a strut from a fixed pivot to the wing's lower skin, or of a beam between the pivots, kept clear of the structure and the flap at the sampled poses, or the crank or the rocker came within a quarter of its radius of the flap".into());
         }
         warnings
     }

@@ -3,7 +3,7 @@
 
 use nalgebra::{Isometry2, Point2};
 
-use super::bodies::bodies_and_joints;
+use super::bodies::{bodies_and_joints, crank_start};
 use super::linkage::{Loop, LoopPose};
 use super::search::{candidate, candidates, check_pair, search_failure, Candidate};
 use super::{
@@ -11,7 +11,7 @@ use super::{
     CLEAR_FINALISTS, FINALISTS, LOOP_SAMPLES, RATE_INTERVALS,
 };
 use flapwright_mechanism::seam::FlapMechanism;
-use flapwright_mechanism::shared::geometry::turn_angle;
+use flapwright_mechanism::shared::geometry::{turn_about, turn_angle};
 use flapwright_mechanism::shared::placement::{
     place_screw_jack, strut_top, JackSize, ScrewJackChoice, PLACEMENT_SAMPLES, STRUT_TOPS_AHEAD,
 };
@@ -229,7 +229,7 @@ impl FourBar {
         let trade_index = spec.trade_index;
         let placed = placed.picked(super::KIND, trade_index)?;
         let (attachment, mount, actuator_clear) = (placed.attachment, placed.mount, placed.clear);
-        let mut placement_clear = true;
+        let mut placement_clear = links_clear_of_flap(&spec, &loop_, attachment, travel, margin);
         let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)
             .filter_map(|k| loop_.at(travel * k as f64 / PLACEMENT_SAMPLES as f64).map(|p| p.flap))
             .collect();
@@ -479,6 +479,44 @@ impl FourBar {
         })?;
         Ok((state, pose))
     }
+}
+
+/// Part of its radius a link keeps from the flap beyond its radius, in the station plane.
+const LINK_FLAP_MARGIN: f64 = 0.25;
+
+/// True when the crank (from its horn where the screw sits there) and the rocker keep their
+/// radius and [`LINK_FLAP_MARGIN`] of it from the flap section at [`PLACEMENT_SAMPLES`]
+/// poses, short of their eyes at A1 and A2 (within `eye` of the pin, the flap's fitting
+/// surrounds them). The loop's search keeps the links out of the wing, not off the flap
+/// they hang from: on `transport-flap` at a landing gap of 1.60 %c the inboard rocker passed
+/// 5 mm from the flap at landing, which the 3D check could not certify.
+fn links_clear_of_flap(spec: &FourBarSpec, loop_: &Loop, attachment: Point2<f64>, travel: f64, eye: f64) -> bool {
+    let radius = spec.hardware.link_radius_m;
+    let reach = radius * (1.0 + LINK_FLAP_MARGIN);
+    let start = crank_start(loop_.o1, loop_.a1, attachment);
+    let short_of = |from: Point2<f64>, pin: Point2<f64>| {
+        let length = (pin - from).norm();
+        if length <= eye {
+            from
+        } else {
+            pin + (from - pin) * (eye / length)
+        }
+    };
+    (0..=PLACEMENT_SAMPLES).all(|k| {
+        let phi = travel * k as f64 / PLACEMENT_SAMPLES as f64;
+        let Some(pose) = loop_.at(phi) else {
+            return false;
+        };
+        let back = pose.flap.inverse();
+        let crank = turn_about(loop_.o1, phi);
+        [(crank * start, pose.a1), (loop_.o2, pose.a2)]
+            .iter()
+            .all(|&(from, pin)| {
+                spec.outline
+                    .flap
+                    .segment_clear_by(back * from, back * short_of(from, pin), reach)
+            })
+    })
 }
 
 /// True when two links would (nearly) coincide: moving pivots closer than a tenth of the

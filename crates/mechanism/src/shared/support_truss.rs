@@ -80,7 +80,8 @@ pub fn resultant(loads: &[(Point2<f64>, Vector2<f64>)], about: Point2<f64>) -> V
 
 impl SupportTruss {
     /// The truss of `rods` with the tie from `b` to `a`, or None where the rods' lines
-    /// nearly meet in one point (see [`MIN_DETERMINANT`]; `length` scales the moments).
+    /// nearly meet in one point (|det| of the unit-force equilibrium, moments over `length`,
+    /// below 1e-3).
     pub fn new(rods: [SupportRod; 3], a: Point2<f64>, b: Point2<f64>, length: f64) -> Option<Self> {
         let column = |rod: &SupportRod| {
             let u = rod.pull();

@@ -318,6 +318,9 @@ pub struct FourBar {
     synthesis: FourBarSynthesis,
     loop_: Loop,
     drive: RockerDrive,
+    /// The rocker's and the flap's certified rate bounds per unit crank rate (the bodies'
+    /// speed bounds).
+    link_rates: (f64, f64),
     bodies: Vec<Body>,
     joints: Vec<Joint>,
 }

@@ -15,15 +15,50 @@
 //! the moving flap with the struts' radius and a link radius of margin) aft of the rear
 //! spar's web, as the hooked-track's; where the tie does not clear, a pivot has no clear
 //! top or no triple holds the support, the struts stay clamped cantilevers.
+//!
+//! Only the chosen mechanism's support is laid out ([`FourBar::with_support_truss`]): the
+//! search's finalists and followers are ranked by their depth and clearance, which the
+//! truss does not change (its rods run up from the pivots to the skin, its tie between
+//! them), and laying one out for each of the 24-40 built per station made `design` of
+//! `transport-flap` 30 % slower.
 
 use nalgebra::{Isometry2, Vector3};
 
+use super::bodies::bodies_and_joints;
 use super::FourBar;
 use flapwright_mechanism::seam::FlapMechanism;
 use flapwright_mechanism::shared::placement::{strut_tops, PLACEMENT_SAMPLES, STRUT_TOPS_AHEAD};
 use flapwright_mechanism::shared::support_truss::{resultant, SupportTruss};
+use flapwright_mechanism::Result;
 
 impl FourBar {
+    /// The mechanism with its support laid out as a truss where one clears, its solids and
+    /// its depth redrawn; itself where none does or a strut was not placed clear.
+    pub(super) fn with_support_truss(mut self) -> Result<Self> {
+        if !self.synthesis.placement_clear {
+            return Ok(self);
+        }
+        let travel = self.synthesis.crank_rotation_rad[1];
+        let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)
+            .filter_map(|k| {
+                self.loop_
+                    .at(travel * k as f64 / PLACEMENT_SAMPLES as f64)
+                    .map(|p| p.flap)
+            })
+            .collect();
+        // The in-plane margin the struts' placement keeps (`synthesis`): a link radius.
+        let margin = self.spec.hardware.link_radius_m;
+        let Some(truss) = self.lay_out_truss(&flap_poses, margin) else {
+            return Ok(self);
+        };
+        self.synthesis.strut_tops_m = [truss.rods[0].top_m, truss.rods[1].top_m];
+        self.synthesis.truss = Some(truss);
+        (self.bodies, self.joints) =
+            bodies_and_joints(&self.spec, &self.synthesis, &self.loop_, &self.drive, self.link_rates);
+        self.synthesis.depth_below_section_m = self.whole_depth()?;
+        Ok(self)
+    }
+
     /// The support's truss under the station's design loads over the deployment, clear of
     /// the flap at `flap_poses` by `margin` (m) beyond the struts' radius; `None` where none
     /// is (see the module doc) or the station has no load cases.

@@ -53,7 +53,7 @@ impl FourBar {
         let free = spec.forward_pivot.is_none() && spec.aft_pivot.is_none();
         if let (true, Some(follow)) = (free, spec.follow.as_ref()) {
             if let Some(found) = Self::following(&spec, follow, chord, flap_chord) {
-                return Ok(found);
+                return found.with_support_truss();
             }
         }
         let grid = if spec.forward_pivot.is_none() || spec.aft_pivot.is_none() {
@@ -128,6 +128,11 @@ impl FourBar {
             if examined >= CLEAR_FINALISTS && best.as_ref().is_some_and(|((blocked, _), _)| !blocked) {
                 break;
             }
+            // A loop whose links come near the flap cannot be placed clear: not built once
+            // another mechanism is in hand (building it costs a jack placement).
+            if best.is_some() && !links_may_clear_flap(&spec, &loop_) {
+                continue;
+            }
             match Self::build(spec.clone(), loop_, search) {
                 Ok(four_bar) => {
                     let s = &four_bar.synthesis;
@@ -145,7 +150,7 @@ impl FourBar {
             }
         }
         match (best, first_error) {
-            (Some((_, four_bar)), _) => Ok(four_bar),
+            (Some((_, four_bar)), _) => four_bar.with_support_truss(),
             (None, Some(error)) => Err(error),
             (None, None) => Err(search_failure(&search)),
         }
@@ -330,29 +335,16 @@ impl FourBar {
             topology: FourBarTopology::of(loop_.o1, loop_.a1, loop_.a2, attachment, mount),
             followed: None,
         };
+        let (bodies, joints) = bodies_and_joints(&spec, &synthesis, &loop_, &drive, link_rates);
         let mut four_bar = Self {
             spec,
             synthesis,
             loop_,
             drive,
-            bodies: Vec::new(),
-            joints: Vec::new(),
-        };
-        // The support as a truss of rods where one clears (the `support` module).
-        if placement_clear {
-            if let Some(truss) = four_bar.lay_out_truss(&flap_poses, margin) {
-                four_bar.synthesis.strut_tops_m = [truss.rods[0].top_m, truss.rods[1].top_m];
-                four_bar.synthesis.truss = Some(truss);
-            }
-        }
-        let (bodies, joints) = bodies_and_joints(
-            &four_bar.spec,
-            &four_bar.synthesis,
-            &four_bar.loop_,
-            &four_bar.drive,
             link_rates,
-        );
-        (four_bar.bodies, four_bar.joints) = (bodies, joints);
+            bodies,
+            joints,
+        };
         four_bar.synthesis.depth_below_section_m = four_bar.whole_depth()?;
         Ok(four_bar)
     }
@@ -433,6 +425,9 @@ impl FourBar {
                 continue;
             };
             search.feasible += 1;
+            if !links_may_clear_flap(spec, &loop_) {
+                continue;
+            }
             let Ok(four_bar) = Self::build(spec.clone(), loop_, search) else {
                 continue;
             };
@@ -517,6 +512,16 @@ fn links_clear_of_flap(spec: &FourBarSpec, loop_: &Loop, attachment: Point2<f64>
                     .segment_clear_by(back * from, back * short_of(from, pin), reach)
             })
     })
+}
+
+/// [`links_clear_of_flap`] for the loop's crank from O1 to A1 and its rocker, before the
+/// jack is placed: false only where the whole mechanism's links cannot clear the flap (a
+/// horn beyond O1 adds to the crank), so a search skips the loop's build (the finalists'
+/// and the followers' builds were 30 % of `design` of `transport-flap` once the check
+/// rejected more of them).
+fn links_may_clear_flap(spec: &FourBarSpec, loop_: &Loop) -> bool {
+    let travel = turn_angle(loop_.o1, loop_.a1, spec.landing.flap * loop_.a1);
+    links_clear_of_flap(spec, loop_, loop_.o1, travel, spec.hardware.link_radius_m)
 }
 
 /// True when two links would (nearly) coincide: moving pivots closer than a tenth of the

@@ -68,9 +68,9 @@ pub struct FourBarSpec {
     /// Aft moving pivot A2 on the flap (stowed); `None`: searched.
     pub aft_pivot: Option<Point2<f64>>,
     /// Another station of the same rigid flap to move it alike, when both moving pivots
-    /// are searched: the search first tries a small grid about its pivots and keeps the
-    /// mechanism whose deflection schedule is nearest its; only when none builds clear
-    /// does it search the whole region.
+    /// are searched: the search first tries a small grid about its pivots and keeps, of
+    /// the mechanisms whose motion (or deflection schedule) is near its, the least costly;
+    /// only when none builds clear does it search the whole region.
     pub follow: Option<FollowStation>,
     /// Smallest transmission angle over the deployment, of the loop and of the drive (rad).
     pub min_transmission_angle_rad: f64,

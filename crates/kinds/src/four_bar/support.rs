@@ -25,6 +25,7 @@
 use nalgebra::{Isometry2, Vector3};
 
 use super::bodies::bodies_and_joints;
+use super::synthesis::sampled_flap_poses;
 use super::FourBar;
 use flapwright_mechanism::seam::FlapMechanism;
 use flapwright_mechanism::shared::placement::{strut_tops, PLACEMENT_SAMPLES, STRUT_TOPS_AHEAD};
@@ -38,14 +39,7 @@ impl FourBar {
         if !self.synthesis.placement_clear {
             return Ok(self);
         }
-        let travel = self.synthesis.crank_rotation_rad[1];
-        let flap_poses: Vec<Isometry2<f64>> = (0..=PLACEMENT_SAMPLES)
-            .filter_map(|k| {
-                self.loop_
-                    .at(travel * k as f64 / PLACEMENT_SAMPLES as f64)
-                    .map(|p| p.flap)
-            })
-            .collect();
+        let flap_poses = sampled_flap_poses(&self.loop_, self.synthesis.crank_rotation_rad[1]);
         // The in-plane margin the struts' placement keeps (`synthesis`): a link radius.
         let margin = self.spec.hardware.link_radius_m;
         let Some(truss) = self.lay_out_truss(&flap_poses, margin) else {
